@@ -1,0 +1,2 @@
+#include "meshdiff/io.h"
+int main() { return 0; }

@@ -1,0 +1,4 @@
+//! \file closest_point.h
+//! \brief (placeholder, being written)
+#pragma once
+#include "meshdiff/mesh.h"

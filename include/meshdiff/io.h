@@ -1,0 +1,64 @@
+//! \file io.h
+//! \brief Reading meshes (PLY ASCII/binary, OBJ, OFF, STL through OpenMesh's
+//! readers) with the input hygiene of METHOD.md section 1, and writing PLY
+//! with per-vertex scalar properties and colours.
+#pragma once
+
+#include "meshdiff/mesh.h"
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace meshdiff {
+
+//! What reading did to the file's contents before anything else.
+struct InputReport
+{
+    std::string path;                        //!< the file as given
+    std::size_t file_vertices = 0;           //!< vertices in the file
+    std::size_t file_faces = 0;              //!< faces (polygons) in the file
+    std::size_t unreferenced_vertices = 0;   //!< dropped: in no face
+    std::size_t polygons_triangulated = 0;   //!< faces with more than 3 corners (fan-triangulated)
+    std::size_t repeated_index_faces = 0;    //!< dropped: a corner repeated (no area, no edges of its own)
+};
+
+struct LoadedMesh
+{
+    Mesh mesh;
+    InputReport input;
+};
+
+//! Reads \p path. The format follows the extension (.ply .obj .off .stl).
+//! Unreferenced vertices are dropped (and counted), polygons fan-triangulated,
+//! faces with a repeated corner dropped (and counted); coordinates are kept in
+//! double precision as the reader delivers them.
+//! \throw IoError if the file is missing, unreadable, of an unknown format,
+//!        empty or truncated.
+//! \throw InvalidMeshError if it has no vertices, no faces, a face index out of
+//!        range or a NaN/Inf coordinate.
+LoadedMesh read_mesh(const std::filesystem::path& path);
+
+//! A named per-vertex scalar written as a PLY `double` vertex property.
+struct VertexScalar
+{
+    std::string name;
+    std::vector<double> values;  //!< one per vertex; NaN is written as NaN
+};
+
+//! Writes a binary little-endian PLY with x y z (double), the given scalar
+//! properties, optional RGB colours (uchar red green blue) and the faces.
+//! \throw IoError if the file cannot be written.
+//! \throw InvalidArgumentError if a property has the wrong size.
+void write_ply(const std::filesystem::path& path, const Mesh& mesh, const std::vector<VertexScalar>& scalars = {},
+               const std::vector<std::array<std::uint8_t, 3>>& colors = {},
+               const std::vector<std::string>& comments = {});
+
+//! Writes a mesh in the format of the extension (.ply binary, .obj, .off, .stl)
+//! through OpenMesh's writers (.ply goes to write_ply).
+//! \throw IoError on failure.
+void write_mesh(const std::filesystem::path& path, const Mesh& mesh);
+
+}  // namespace meshdiff

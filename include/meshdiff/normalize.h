@@ -1,0 +1,4 @@
+//! \file normalize.h
+//! \brief (placeholder, being written)
+#pragma once
+#include "meshdiff/mesh.h"

@@ -1,0 +1,4 @@
+//! \file sampling.h
+//! \brief (placeholder, being written)
+#pragma once
+#include "meshdiff/mesh.h"

@@ -1,0 +1,4 @@
+//! \file shapes.h
+//! \brief (placeholder, being written)
+#pragma once
+#include "meshdiff/mesh.h"

@@ -1,0 +1,4 @@
+//! \file surface_distance.h
+//! \brief (placeholder, being written)
+#pragma once
+#include "meshdiff/mesh.h"

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Install the Debian packages meshdiff needs to build, test and run.
+# Usage: scripts/install-deps.sh            (build + test dependencies)
+#        scripts/install-deps.sh --reference (also MeshLab, gnuplot, OpenMesh tools for reference/)
+set -euo pipefail
+pkgs=(build-essential cmake pkg-config
+      libopenmesh-dev libeigen3-dev libnanoflann-dev libfmt-dev
+      libgtest-dev nlohmann-json3-dev libcli11-dev)
+if [[ "${1:-}" == "--reference" ]]; then
+    pkgs+=(meshlab xvfb xauth gnuplot-nox openmesh-tools hyperfine)
+fi
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+missing=()
+for p in "${pkgs[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+    export DEBIAN_FRONTEND=noninteractive
+    $SUDO apt-get update -qq
+    $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,1 @@
+#include "meshdiff/closest_point.h"

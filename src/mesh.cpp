@@ -1,0 +1,296 @@
+#include "meshdiff/mesh.h"
+
+#include "meshdiff/error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace meshdiff {
+
+namespace {
+
+// Undirected edge key with the smaller index in the high word.
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b)
+{
+    if (a > b) std::swap(a, b);
+    return (std::uint64_t(a) << 32) | b;
+}
+
+struct UnionFind
+{
+    std::vector<std::uint32_t> parent;
+    explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+    std::uint32_t find(std::uint32_t x)
+    {
+        while (parent[x] != x) {
+            parent[x] = parent[parent[x]];
+            x = parent[x];
+        }
+        return x;
+    }
+    bool unite(std::uint32_t a, std::uint32_t b)
+    {
+        a = find(a);
+        b = find(b);
+        if (a == b) return false;
+        if (a < b) std::swap(a, b);
+        parent[a] = b;
+        return true;
+    }
+};
+
+// One record per (face, edge): the undirected key, whether the face walks the
+// edge from the smaller to the larger index, and the face.
+struct HalfEdge
+{
+    std::uint64_t key;
+    std::uint32_t face;
+    bool forward;
+};
+
+std::vector<HalfEdge> sorted_half_edges(const Mesh& mesh)
+{
+    std::vector<HalfEdge> he;
+    he.reserve(3 * mesh.n_faces());
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+        const Face& t = mesh.faces[f];
+        for (int k = 0; k < 3; ++k) {
+            auto a = std::uint32_t(t[k]);
+            auto b = std::uint32_t(t[(k + 1) % 3]);
+            if (a == b) continue;
+            he.push_back({edge_key(a, b), std::uint32_t(f), a < b});
+        }
+    }
+    std::sort(he.begin(), he.end(), [](const HalfEdge& x, const HalfEdge& y) {
+        return x.key != y.key ? x.key < y.key : x.face < y.face;
+    });
+    return he;
+}
+
+}  // namespace
+
+void validate(const Mesh& mesh, const std::string& what)
+{
+    if (mesh.points.empty()) throw InvalidMeshError(fmt::format("{}: mesh has no vertices", what));
+    if (mesh.faces.empty()) throw InvalidMeshError(fmt::format("{}: mesh has no faces", what));
+    const auto n = std::int64_t(mesh.n_vertices());
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+        for (auto v : mesh.faces[f])
+            if (v < 0 || v >= n)
+                throw InvalidMeshError(
+                    fmt::format("{}: face {} refers to vertex {}, but there are {} vertices", what, f, v, n));
+    for (std::size_t i = 0; i < mesh.n_vertices(); ++i)
+        if (!mesh.points[i].allFinite())
+            throw InvalidMeshError(fmt::format("{}: vertex {} has a non-finite coordinate ({}, {}, {})", what, i,
+                                               mesh.points[i].x(), mesh.points[i].y(), mesh.points[i].z()));
+}
+
+BoundingBox bounding_box(const Mesh& mesh)
+{
+    BoundingBox box;
+    if (mesh.points.empty()) return box;
+    box.min = box.max = mesh.points[0];
+    for (const auto& p : mesh.points) {
+        box.min = box.min.cwiseMin(p);
+        box.max = box.max.cwiseMax(p);
+    }
+    return box;
+}
+
+Vec3 face_cross(const Mesh& mesh, std::size_t f)
+{
+    const Face& t = mesh.faces[f];
+    const Vec3& a = mesh.points[std::size_t(t[0])];
+    return (mesh.points[std::size_t(t[1])] - a).cross(mesh.points[std::size_t(t[2])] - a);
+}
+
+double surface_area(const Mesh& mesh)
+{
+    double area = 0.0;
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f) area += 0.5 * face_cross(mesh, f).norm();
+    return area;
+}
+
+namespace {
+Adjacency build_csr(std::size_t n, std::vector<std::uint64_t>& pairs)
+{
+    // pairs: (row << 32 | col), possibly repeated.
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    Adjacency adj;
+    adj.offset.assign(n + 1, 0);
+    adj.index.resize(pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+        adj.offset[(pairs[k] >> 32) + 1]++;
+        adj.index[k] = std::uint32_t(pairs[k] & 0xffffffffu);
+    }
+    for (std::size_t i = 0; i < n; ++i) adj.offset[i + 1] += adj.offset[i];
+    return adj;
+}
+}  // namespace
+
+Adjacency vertex_adjacency(const Mesh& mesh)
+{
+    std::vector<std::uint64_t> pairs;
+    pairs.reserve(6 * mesh.n_faces());
+    for (const Face& t : mesh.faces)
+        for (int k = 0; k < 3; ++k) {
+            auto a = std::uint64_t(std::uint32_t(t[k]));
+            auto b = std::uint64_t(std::uint32_t(t[(k + 1) % 3]));
+            if (a == b) continue;
+            pairs.push_back((a << 32) | b);
+            pairs.push_back((b << 32) | a);
+        }
+    return build_csr(mesh.n_vertices(), pairs);
+}
+
+Adjacency vertex_faces(const Mesh& mesh)
+{
+    std::vector<std::uint64_t> pairs;
+    pairs.reserve(3 * mesh.n_faces());
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+        for (auto v : mesh.faces[f]) pairs.push_back((std::uint64_t(std::uint32_t(v)) << 32) | f);
+    return build_csr(mesh.n_vertices(), pairs);
+}
+
+std::vector<char> degenerate_face_mask(const Mesh& mesh)
+{
+    const double diag = bounding_box(mesh).diagonal();
+    const double eps = 1e-14 * diag * diag;
+    std::vector<char> mask(mesh.n_faces(), 0);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+        const Face& t = mesh.faces[f];
+        mask[f] = (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || !(face_cross(mesh, f).norm() > eps)) ? 1 : 0;
+    }
+    return mask;
+}
+
+std::vector<char> boundary_vertex_mask(const Mesh& mesh)
+{
+    std::vector<char> mask(mesh.n_vertices(), 0);
+    const auto he = sorted_half_edges(mesh);
+    for (std::size_t i = 0; i < he.size();) {
+        std::size_t j = i;
+        while (j < he.size() && he[j].key == he[i].key) ++j;
+        if (j - i != 2) {
+            mask[he[i].key >> 32] = 1;
+            mask[he[i].key & 0xffffffffu] = 1;
+        }
+        i = j;
+    }
+    return mask;
+}
+
+TopologyReport topology_report(const Mesh& mesh)
+{
+    TopologyReport r;
+    const std::size_t n = mesh.n_vertices();
+    r.vertices = n;
+    r.faces = mesh.n_faces();
+
+    const auto he = sorted_half_edges(mesh);
+    UnionFind comp(n);
+    std::vector<std::uint64_t> boundary;
+    for (std::size_t i = 0; i < he.size();) {
+        std::size_t j = i;
+        std::size_t nfwd = 0;
+        while (j < he.size() && he[j].key == he[i].key) {
+            nfwd += he[j].forward ? 1 : 0;
+            ++j;
+        }
+        const std::size_t count = j - i;
+        ++r.edges;
+        const auto a = std::uint32_t(he[i].key >> 32);
+        const auto b = std::uint32_t(he[i].key & 0xffffffffu);
+        comp.unite(a, b);
+        if (count == 1) {
+            ++r.boundary_edges;
+            boundary.push_back(he[i].key);
+        }
+        if (count > 2) ++r.non_manifold_edges;
+        if (count == 2 && nfwd != 1) ++r.orientation_conflicts;
+        i = j;
+    }
+
+    std::vector<char> used(n, 0);
+    for (const Face& t : mesh.faces)
+        for (auto v : t) used[std::size_t(v)] = 1;
+    std::size_t roots = 0;
+    for (std::size_t v = 0; v < n; ++v) {
+        if (!used[v]) {
+            ++r.isolated_vertices;
+            continue;
+        }
+        if (comp.find(std::uint32_t(v)) == v) ++roots;
+    }
+    r.components = roots;
+
+    // Boundary loops: connected components of the boundary-edge graph.
+    {
+        UnionFind bl(n);
+        std::vector<char> on_boundary(n, 0);
+        for (auto k : boundary) {
+            auto a = std::uint32_t(k >> 32), b = std::uint32_t(k & 0xffffffffu);
+            on_boundary[a] = on_boundary[b] = 1;
+            bl.unite(a, b);
+        }
+        for (std::size_t v = 0; v < n; ++v)
+            if (on_boundary[v] && bl.find(std::uint32_t(v)) == v) ++r.boundary_loops;
+    }
+
+    // Duplicate faces: same vertex set.
+    {
+        std::vector<std::array<std::int32_t, 3>> sorted(mesh.faces.begin(), mesh.faces.end());
+        for (auto& t : sorted) std::sort(t.begin(), t.end());
+        std::sort(sorted.begin(), sorted.end());
+        for (std::size_t i = 1; i < sorted.size(); ++i)
+            if (sorted[i] == sorted[i - 1]) ++r.duplicate_faces;
+    }
+
+    const auto degenerate = degenerate_face_mask(mesh);
+    r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
+
+    // Non-manifold vertices: the faces around v, linked through shared edges
+    // (v, w), form more than one fan.
+    {
+        const Adjacency vf = vertex_faces(mesh);
+        std::vector<std::uint32_t> other;    // the two other vertices per incident face
+        std::vector<std::uint32_t> parent;
+        for (std::size_t v = 0; v < n; ++v) {
+            const std::size_t deg = vf.degree(v);
+            if (deg <= 1) continue;
+            other.clear();
+            for (auto it = vf.begin(v); it != vf.end(v); ++it) {
+                const Face& t = mesh.faces[*it];
+                for (auto w : t)
+                    if (std::size_t(w) != v) other.push_back(std::uint32_t(w));
+                if (other.size() % 2) other.push_back(std::uint32_t(v));  // repeated-vertex face
+            }
+            parent.resize(deg);
+            std::iota(parent.begin(), parent.end(), 0u);
+            auto find = [&](std::uint32_t x) {
+                while (parent[x] != x) x = parent[x] = parent[parent[x]];
+                return x;
+            };
+            std::size_t fans = deg;
+            for (std::size_t a = 0; a < deg; ++a)
+                for (std::size_t b = a + 1; b < deg; ++b) {
+                    const bool share = other[2 * a] == other[2 * b] || other[2 * a] == other[2 * b + 1] ||
+                                       other[2 * a + 1] == other[2 * b] || other[2 * a + 1] == other[2 * b + 1];
+                    if (!share) continue;
+                    auto ra = find(std::uint32_t(a)), rb = find(std::uint32_t(b));
+                    if (ra != rb) {
+                        parent[std::max(ra, rb)] = std::min(ra, rb);
+                        --fans;
+                    }
+                }
+            if (fans > 1) ++r.non_manifold_vertices;
+        }
+    }
+    return r;
+}
+
+}  // namespace meshdiff

@@ -1,0 +1,1 @@
+#include "meshdiff/normals.h"

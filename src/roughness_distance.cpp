@@ -1,0 +1,1 @@
+#include "meshdiff/roughness_distance.h"

@@ -1,0 +1,1 @@
+#include "meshdiff/shapes.h"

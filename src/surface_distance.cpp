@@ -1,0 +1,1 @@
+#include "meshdiff/surface_distance.h"
