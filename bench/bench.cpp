@@ -1,2 +1,5 @@
 #include "meshdiff/io.h"
-int main() { return 0; }
+int main()
+{
+    return 0;
+}

@@ -2,12 +2,12 @@
 
 #include "meshdiff/error.h"
 
-#include <OpenMesh/Core/IO/IOManager.hh>
-#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
-#include <OpenMesh/Core/IO/exporter/ExporterT.hh>
-#include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <fmt/format.h>
+#include <OpenMesh/Core/IO/IOManager.hh>
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/IO/exporter/ExporterT.hh>
+#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include <algorithm>
 #include <cstring>
@@ -22,13 +22,13 @@ namespace {
 using OpenMesh::EdgeHandle;
 using OpenMesh::FaceHandle;
 using OpenMesh::HalfedgeHandle;
-using OpenMesh::VertexHandle;
 using OpenMesh::Vec2f;
 using OpenMesh::Vec3d;
 using OpenMesh::Vec3f;
 using OpenMesh::Vec3uc;
 using OpenMesh::Vec4f;
 using OpenMesh::Vec4uc;
+using OpenMesh::VertexHandle;
 
 // Collects the raw vertex and polygon lists from any OpenMesh reader, without
 // building a halfedge structure (which would refuse non-manifold faces).
@@ -177,7 +177,8 @@ LoadedMesh read_mesh(const std::filesystem::path& path)
     const std::string name = path.string();
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw IoError(fmt::format("{}: no such file", name));
-    if (std::filesystem::is_directory(path, ec)) throw IoError(fmt::format("{}: is a directory, not a mesh file", name));
+    if (std::filesystem::is_directory(path, ec))
+        throw IoError(fmt::format("{}: is a directory, not a mesh file", name));
     {
         std::ifstream probe(path, std::ios::binary);
         if (!probe) throw IoError(fmt::format("{}: cannot open for reading", name));
@@ -196,17 +197,18 @@ LoadedMesh read_mesh(const std::filesystem::path& path)
         OpenMesh::IO::Options opt;
         ok = OpenMesh::IO::IOManager().read(name, importer, opt);
     }
-    if (!ok) throw IoError(fmt::format("{}: could not parse the file as {} (corrupt or truncated?)", name, ext.substr(1)));
+    if (!ok)
+        throw IoError(fmt::format("{}: could not parse the file as {} (corrupt or truncated?)", name, ext.substr(1)));
 
     if (ext == ".ply") {
         std::size_t nv = 0, nf = 0;
         bool binary = false;
-        if (!ply_header_counts(path, nv, nf, binary))
-            throw IoError(fmt::format("{}: malformed PLY header", name));
+        if (!ply_header_counts(path, nv, nf, binary)) throw IoError(fmt::format("{}: malformed PLY header", name));
         if (importer.points.size() != nv || importer.polygons.size() != nf)
-            throw IoError(fmt::format("{}: PLY header declares {} vertices and {} faces but {} and {} could be read "
-                                      "(truncated file?)",
-                                      name, nv, nf, importer.points.size(), importer.polygons.size()));
+            throw IoError(
+                fmt::format("{}: PLY header declares {} vertices and {} faces but {} and {} could be read "
+                            "(truncated file?)",
+                            name, nv, nf, importer.points.size(), importer.polygons.size()));
         if (binary) {
             // OpenMesh does not notice a binary file that ends early: check the
             // size against the smallest possible body.
@@ -226,8 +228,7 @@ LoadedMesh read_mesh(const std::filesystem::path& path)
     for (std::size_t i = 0; i < importer.points.size(); ++i)
         if (!importer.points[i].allFinite())
             throw InvalidMeshError(fmt::format("{}: vertex {} has a non-finite coordinate ({}, {}, {})", name, i,
-                                               importer.points[i].x(), importer.points[i].y(),
-                                               importer.points[i].z()));
+                                               importer.points[i].x(), importer.points[i].y(), importer.points[i].z()));
 
     // Triangulate, drop faces with a repeated corner, mark used vertices.
     std::vector<Face> faces;
@@ -235,8 +236,7 @@ LoadedMesh read_mesh(const std::filesystem::path& path)
     std::vector<std::int32_t> remap(importer.points.size(), -1);
     for (std::size_t f = 0; f < importer.polygons.size(); ++f) {
         const auto& poly = importer.polygons[f];
-        if (poly.size() < 3)
-            throw InvalidMeshError(fmt::format("{}: face {} has {} corners", name, f, poly.size()));
+        if (poly.size() < 3) throw InvalidMeshError(fmt::format("{}: face {} has {} corners", name, f, poly.size()));
         for (int v : poly)
             if (v < 0 || v >= nv)
                 throw InvalidMeshError(
@@ -275,7 +275,8 @@ void write_ply(const std::filesystem::path& path, const Mesh& mesh, const std::v
             throw InvalidArgumentError(fmt::format("write_ply: property '{}' has {} values for {} vertices", s.name,
                                                    s.values.size(), mesh.n_vertices()));
     if (!colors.empty() && colors.size() != mesh.n_vertices())
-        throw InvalidArgumentError(fmt::format("write_ply: {} colours for {} vertices", colors.size(), mesh.n_vertices()));
+        throw InvalidArgumentError(
+            fmt::format("write_ply: {} colours for {} vertices", colors.size(), mesh.n_vertices()));
 
     std::ofstream out(path, std::ios::binary);
     if (!out) throw IoError(fmt::format("{}: cannot open for writing", path.string()));
@@ -321,7 +322,8 @@ void write_mesh(const std::filesystem::path& path, const Mesh& mesh)
     const std::string ext = lower_extension(path);
     if (ext == ".ply") return write_ply(path, mesh);
     if (ext != ".obj" && ext != ".off" && ext != ".stl")
-        throw IoError(fmt::format("{}: unknown mesh format '{}' (expected .ply, .obj, .off or .stl)", path.string(), ext));
+        throw IoError(
+            fmt::format("{}: unknown mesh format '{}' (expected .ply, .obj, .off or .stl)", path.string(), ext));
     OpenMesh::TriMesh_ArrayKernelT<OpenMesh::DefaultTraitsDouble> om;
     std::vector<OpenMesh::VertexHandle> vh;
     vh.reserve(mesh.n_vertices());

@@ -64,9 +64,8 @@ std::vector<HalfEdge> sorted_half_edges(const Mesh& mesh)
             he.push_back({edge_key(a, b), std::uint32_t(f), a < b});
         }
     }
-    std::sort(he.begin(), he.end(), [](const HalfEdge& x, const HalfEdge& y) {
-        return x.key != y.key ? x.key < y.key : x.face < y.face;
-    });
+    std::sort(he.begin(), he.end(),
+              [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.face < y.face; });
     return he;
 }
 
@@ -257,7 +256,7 @@ TopologyReport topology_report(const Mesh& mesh)
     // (v, w), form more than one fan.
     {
         const Adjacency vf = vertex_faces(mesh);
-        std::vector<std::uint32_t> other;    // the two other vertices per incident face
+        std::vector<std::uint32_t> other;  // the two other vertices per incident face
         std::vector<std::uint32_t> parent;
         for (std::size_t v = 0; v < n; ++v) {
             const std::size_t deg = vf.degree(v);

@@ -1,5 +1,89 @@
 #include "cli.h"
 
+#include "commands.h"
+#include "meshdiff/error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <exception>
+#include <iostream>
+#include <new>
+
 namespace meshdiff::cli {
-int run(const std::vector<std::string>&) { return kOk; }
+
+namespace {
+
+bool is_subcommand(const std::string& word)
+{
+    static const std::array<const char*, 5> names = {"profile", "compare", "batch", "generate", "smooth"};
+    return std::any_of(names.begin(), names.end(), [&](const char* n) { return word == n; });
+}
+
+}  // namespace
+
+int run(const std::vector<std::string>& raw_args)
+{
+    std::vector<std::string> args = raw_args;
+    if (args.empty()) args.emplace_back("meshdiff");
+    // `meshdiff A B [options]` is `meshdiff compare A B [options]`.
+    if (args.size() > 1 && !is_subcommand(args[1]) && args[1] != "-h" && args[1] != "--help" && args[1] != "--version")
+        args.insert(args.begin() + 1, "compare");
+
+    CLI::App app{
+        "meshdiff: how much a processed triangle mesh differs from its original, and at which scale.\n"
+        "  meshdiff ORIGINAL PROCESSED [options]   (same as: meshdiff compare ...)\n"
+        "Exit codes: 0 ok, 2 usage, 3 unreadable input or unwritable output, 4 invalid mesh,\n"
+        "5 numerical failure, 6 batch finished with failed pairs, 70 internal error.",
+        "meshdiff"};
+    app.set_version_flag("--version", std::string("meshdiff ") + MESHDIFF_VERSION);
+    app.require_subcommand(1);
+    Action action;
+    add_profile_command(app, action);
+    add_compare_command(app, action);
+    add_batch_command(app, action);
+    add_generate_command(app, action);
+    add_smooth_command(app, action);
+
+    std::vector<std::string> reversed(args.rbegin(), args.rend() - 1);
+    try {
+        app.parse(std::move(reversed));
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "meshdiff: " << e.what() << " (see meshdiff --help)\n";
+        return kUsage;
+    } catch (const InvalidArgumentError& e) {
+        std::cerr << "meshdiff: " << e.what() << "\n";
+        return kUsage;
+    }
+    if (!action) return kOk;
+    try {
+        return action();
+    } catch (const InvalidArgumentError& e) {
+        std::cerr << "meshdiff: " << e.what() << "\n";
+        return kUsage;
+    } catch (const IoError& e) {
+        std::cerr << "meshdiff: " << e.what() << "\n";
+        return kIoError;
+    } catch (const InvalidMeshError& e) {
+        std::cerr << "meshdiff: " << e.what() << "\n";
+        return kInvalidMesh;
+    } catch (const SolverError& e) {
+        std::cerr << "meshdiff: " << e.what() << "\n";
+        return kSolverError;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "meshdiff: out of memory\n";
+        return kInternal;
+    } catch (const std::exception& e) {
+        std::cerr << "meshdiff: internal error: " << e.what() << "\n";
+        return kInternal;
+    }
+}
+
 }  // namespace meshdiff::cli

@@ -17,12 +17,12 @@ namespace meshdiff {
 //! What reading did to the file's contents before anything else.
 struct InputReport
 {
-    std::string path;                        //!< the file as given
-    std::size_t file_vertices = 0;           //!< vertices in the file
-    std::size_t file_faces = 0;              //!< faces (polygons) in the file
-    std::size_t unreferenced_vertices = 0;   //!< dropped: in no face
-    std::size_t polygons_triangulated = 0;   //!< faces with more than 3 corners (fan-triangulated)
-    std::size_t repeated_index_faces = 0;    //!< dropped: a corner repeated (no area, no edges of its own)
+    std::string path;                       //!< the file as given
+    std::size_t file_vertices = 0;          //!< vertices in the file
+    std::size_t file_faces = 0;             //!< faces (polygons) in the file
+    std::size_t unreferenced_vertices = 0;  //!< dropped: in no face
+    std::size_t polygons_triangulated = 0;  //!< faces with more than 3 corners (fan-triangulated)
+    std::size_t repeated_index_faces = 0;   //!< dropped: a corner repeated (no area, no edges of its own)
 };
 
 struct LoadedMesh

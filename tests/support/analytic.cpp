@@ -4,7 +4,10 @@
 
 namespace meshdiff::test {
 
-double torus_H(double R, double r, double cos_v) { return (R + 2 * r * cos_v) / (2 * r * (R + r * cos_v)); }
+double torus_H(double R, double r, double cos_v)
+{
+    return (R + 2 * r * cos_v) / (2 * r * (R + r * cos_v));
+}
 
 double ellipsoid_H(double a, double b, double c, const Vec3& p)
 {

@@ -7,7 +7,10 @@
 namespace meshdiff::test {
 
 //! Sphere of radius r: H = 1/r.
-inline double sphere_H(double r) { return 1.0 / r; }
+inline double sphere_H(double r)
+{
+    return 1.0 / r;
+}
 
 //! Torus with centre radius R and tube radius r, v the angle around the tube
 //! (v = 0 on the outer equator): H = (R + 2 r cos v) / (2 r (R + r cos v)).

@@ -1,0 +1,11 @@
+#include "commands.h"
+
+namespace meshdiff::cli {
+
+void add_smooth_command(CLI::App& app, Action& action)
+{
+    auto* sub = app.add_subcommand("smooth", "(not yet implemented)");
+    sub->callback([&action] { action = [] { return 0; }; });
+}
+
+}  // namespace meshdiff::cli
