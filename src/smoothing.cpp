@@ -1,1 +1,312 @@
 #include "meshdiff/smoothing.h"
+
+#include "meshdiff/error.h"
+
+#include <fmt/format.h>
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace meshdiff {
+
+namespace {
+
+void require(bool ok, const char* field, const std::string& what)
+{
+    if (!ok) throw InvalidArgumentError(fmt::format("smooth: {} {}", field, what));
+}
+
+void validate_options(const SmoothingOptions& o)
+{
+    require(o.iterations >= 0, "iterations", fmt::format("must be >= 0 (got {})", o.iterations));
+    switch (o.method) {
+        case SmoothingMethod::Laplacian:
+            require(std::isfinite(o.lambda) && o.lambda > 0 && o.lambda <= 1, "lambda",
+                    fmt::format("must be in (0, 1] (got {})", o.lambda));
+            break;
+        case SmoothingMethod::Taubin:
+            require(std::isfinite(o.lambda) && o.lambda > 0 && o.lambda <= 1, "lambda",
+                    fmt::format("must be in (0, 1] (got {})", o.lambda));
+            require(std::isfinite(o.mu) && o.mu < -o.lambda && o.mu >= -1, "mu",
+                    fmt::format("must be < -lambda = {} and >= -1 (got {})", -o.lambda, o.mu));
+            break;
+        case SmoothingMethod::Bilaplacian:
+            require(std::isfinite(o.damping) && o.damping > 0 && o.damping <= 1, "damping",
+                    fmt::format("must be in (0, 1] (got {})", o.damping));
+            break;
+        case SmoothingMethod::ModifiedMeanCurvatureFlow:
+            require(std::isfinite(o.epsilon) && o.epsilon >= 0 && o.epsilon < 1, "epsilon",
+                    fmt::format("must be in [0, 1) (got {})", o.epsilon));
+            [[fallthrough]];
+        case SmoothingMethod::MeanCurvatureFlow:
+            require(std::isfinite(o.step) && o.step > 0 && o.step <= 10, "step",
+                    fmt::format("must be in (0, 10] (got {})", o.step));
+            break;
+    }
+}
+
+// Umbrella vector of vertex i from the positions p.
+Vec3 umbrella(const Adjacency& adj, const std::vector<Vec3>& p, std::size_t i)
+{
+    const std::size_t n = adj.degree(i);
+    if (n == 0) return Vec3::Zero();
+    Vec3 sum = Vec3::Zero();
+    for (auto j = adj.begin(i); j != adj.end(i); ++j) sum += p[*j];
+    return sum / double(n) - p[i];
+}
+
+// cot of the angle between a and b; 0 for a (near-)degenerate corner.
+double cot(const Vec3& a, const Vec3& b)
+{
+    const double cross = a.cross(b).norm();
+    const double scale = a.norm() * b.norm();
+    if (!(cross > 1e-12 * scale)) return 0.0;
+    return a.dot(b) / cross;
+}
+
+// Mean-curvature normal Hn_i = 1/(4 A_mixed) sum (cot a + cot b)(x_j - x_i),
+// from the faces around i. Zero where the mixed area vanishes.
+Vec3 curvature_normal(const Mesh& mesh, const Adjacency& vf, const std::vector<Vec3>& p, std::size_t i)
+{
+    Vec3 sum = Vec3::Zero();
+    double area = 0.0;
+    for (auto f = vf.begin(i); f != vf.end(i); ++f) {
+        const Face& t = mesh.faces[*f];
+        int k = 0;
+        while (k < 3 && std::size_t(t[std::size_t(k)]) != i) ++k;
+        if (k == 3) continue;
+        const Vec3& xi = p[i];
+        const Vec3& xj = p[std::size_t(t[std::size_t((k + 1) % 3)])];
+        const Vec3& xk = p[std::size_t(t[std::size_t((k + 2) % 3)])];
+        const Vec3 eij = xj - xi, eik = xk - xi, ejk = xk - xj;
+        const double cot_j = cot(-eij, ejk);   // angle at j, opposite edge (i, k)
+        const double cot_k = cot(-eik, -ejk);  // angle at k, opposite edge (i, j)
+        sum += cot_k * eij + cot_j * eik;
+        const double tri = 0.5 * eij.cross(eik).norm();
+        if (!(tri > 0)) continue;
+        // Mixed area (Meyer et al. 2002).
+        const bool obtuse_i = eij.dot(eik) < 0;
+        const bool obtuse_other = (-eij).dot(ejk) < 0 || eik.dot(ejk) < 0;
+        if (obtuse_i)
+            area += tri / 2;
+        else if (obtuse_other)
+            area += tri / 4;
+        else
+            area += (eij.squaredNorm() * cot_k + eik.squaredNorm() * cot_j) / 8;
+    }
+    if (!(area > 0)) return Vec3::Zero();
+    return sum / (4 * area);
+}
+
+// Ohtake et al. (2000) eq. 13: move along the umbrella at MCF normal speed.
+Vec3 modified_flow(const Vec3& hn, const Vec3& u, double epsilon)
+{
+    const double h = hn.norm(), ul = u.norm();
+    if (!(h > 0) || !(ul > 0)) return Vec3::Zero();
+    const Vec3 m = u / ul;
+    const double c = m.dot(hn) / h;
+    if (c > epsilon) return (h / c) * m;
+    if (c < -epsilon) return 2 * hn - (h / c) * m;
+    return Vec3::Zero();
+}
+
+double mean_edge_length(const Adjacency& adj, const std::vector<Vec3>& p)
+{
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < adj.size(); ++i)
+        for (auto j = adj.begin(i); j != adj.end(i); ++j)
+            if (*j > i) {
+                sum += (p[*j] - p[i]).norm();
+                ++n;
+            }
+    return n ? sum / double(n) : 0.0;
+}
+
+class Smoother
+{
+public:
+    Smoother(Mesh& mesh, const SmoothingOptions& o)
+        : mesh_(mesh),
+          o_(o),
+          adj_(vertex_adjacency(mesh)),
+          fixed_(boundary_vertex_mask(mesh)),
+          pre_(o.update == SmoothingUpdate::Pre)
+    {
+        if (o.method == SmoothingMethod::MeanCurvatureFlow || o.method == SmoothingMethod::ModifiedMeanCurvatureFlow) {
+            vf_ = vertex_faces(mesh);
+            const double e = mean_edge_length(adj_, mesh.points);
+            dt_ = o.step * e * e;
+        }
+        if (o.method == SmoothingMethod::Bilaplacian) {
+            inv_nu_.assign(mesh.n_vertices(), 0.0);
+            for (std::size_t i = 0; i < adj_.size(); ++i) {
+                const std::size_t n = adj_.degree(i);
+                if (n == 0) continue;
+                double s = 0;
+                for (auto j = adj_.begin(i); j != adj_.end(i); ++j)
+                    if (adj_.degree(*j) > 0) s += 1.0 / double(adj_.degree(*j));
+                inv_nu_[i] = 1.0 / (1.0 + s / double(n));
+            }
+        }
+        for (std::size_t i = 0; i < fixed_.size(); ++i)
+            if (adj_.degree(i) == 0) fixed_[i] = 1;
+    }
+
+    void iterate()
+    {
+        switch (o_.method) {
+            case SmoothingMethod::Laplacian:
+                sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 {
+                    return o_.lambda * umbrella(adj_, p, i);
+                });
+                break;
+            case SmoothingMethod::Taubin:
+                sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 {
+                    return o_.lambda * umbrella(adj_, p, i);
+                });
+                sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 { return o_.mu * umbrella(adj_, p, i); });
+                break;
+            case SmoothingMethod::Bilaplacian:
+                if (pre_) {
+                    sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 { return bilaplacian_step(p, i); });
+                } else {
+                    // Umbrellas of all vertices once, then U2 from them.
+                    const std::vector<Vec3>& p = mesh_.points;
+                    u_.resize(p.size());
+                    for (std::size_t i = 0; i < p.size(); ++i) u_[i] = umbrella(adj_, p, i);
+                    sweep([&](const std::vector<Vec3>&, std::size_t i) -> Vec3 {
+                        return Vec3(-o_.damping * inv_nu_[i] *
+                                    umbrella2(i, [&](std::size_t j) -> Vec3 { return u_[j]; }));
+                    });
+                }
+                break;
+            case SmoothingMethod::MeanCurvatureFlow:
+                sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 {
+                    return Vec3(dt_ * curvature_normal(mesh_, vf_, p, i));
+                });
+                break;
+            case SmoothingMethod::ModifiedMeanCurvatureFlow:
+                sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 {
+                    return Vec3(dt_ *
+                                modified_flow(curvature_normal(mesh_, vf_, p, i), umbrella(adj_, p, i), o_.epsilon));
+                });
+                break;
+        }
+    }
+
+private:
+    template <class UmbrellaOf>
+    Vec3 umbrella2(std::size_t i, UmbrellaOf&& u) const
+    {
+        const std::size_t n = adj_.degree(i);
+        Vec3 sum = Vec3::Zero();
+        for (auto j = adj_.begin(i); j != adj_.end(i); ++j) sum += u(*j);
+        return sum / double(n) - u(i);
+    }
+
+    Vec3 bilaplacian_step(const std::vector<Vec3>& p, std::size_t i) const
+    {
+        const Vec3 u2 = umbrella2(i, [&](std::size_t j) -> Vec3 { return umbrella(adj_, p, j); });
+        return -o_.damping * inv_nu_[i] * u2;
+    }
+
+    // One pass over all movable vertices with displacement d(p, i): Jacobi
+    // (all displacements from the same positions) or Gauss-Seidel (in place).
+    template <class Displacement>
+    void sweep(Displacement&& d)
+    {
+        std::vector<Vec3>& p = mesh_.points;
+        if (pre_) {
+            for (std::size_t i = 0; i < p.size(); ++i)
+                if (!fixed_[i]) p[i] += d(p, i);
+        } else {
+            delta_.assign(p.size(), Vec3::Zero());
+            for (std::size_t i = 0; i < p.size(); ++i)
+                if (!fixed_[i]) delta_[i] = d(p, i);
+            for (std::size_t i = 0; i < p.size(); ++i) p[i] += delta_[i];
+        }
+    }
+
+    Mesh& mesh_;
+    const SmoothingOptions& o_;
+    Adjacency adj_;
+    Adjacency vf_;
+    std::vector<char> fixed_;
+    std::vector<double> inv_nu_;
+    std::vector<Vec3> u_, delta_;
+    double dt_ = 0.0;
+    bool pre_;
+};
+
+bool all_finite(const std::vector<Vec3>& p)
+{
+    for (const auto& x : p)
+        if (!x.allFinite()) return false;
+    return true;
+}
+
+}  // namespace
+
+void smooth(Mesh& mesh, const SmoothingOptions& options)
+{
+    validate_options(options);
+    validate(mesh, "smooth");
+    if (options.callback) options.callback(0, mesh);
+    if (options.iterations == 0) return;
+    Smoother smoother(mesh, options);
+    std::vector<Vec3> previous;
+    for (int k = 1; k <= options.iterations; ++k) {
+        previous = mesh.points;
+        smoother.iterate();
+        if (!all_finite(mesh.points)) {
+            mesh.points = std::move(previous);
+            throw SolverError(fmt::format(
+                "smooth: {} iteration {} produced a non-finite coordinate (step {} too large for this mesh?)",
+                smoothing_method_name(options.method), k, options.step));
+        }
+        if (options.callback) options.callback(k, mesh);
+    }
+}
+
+std::string smoothing_method_name(SmoothingMethod method)
+{
+    switch (method) {
+        case SmoothingMethod::Laplacian:
+            return "laplacian";
+        case SmoothingMethod::Taubin:
+            return "taubin";
+        case SmoothingMethod::Bilaplacian:
+            return "bilaplacian";
+        case SmoothingMethod::MeanCurvatureFlow:
+            return "mcf";
+        case SmoothingMethod::ModifiedMeanCurvatureFlow:
+            return "modified-mcf";
+    }
+    return "unknown";
+}
+
+SmoothingMethod parse_smoothing_method(const std::string& name)
+{
+    for (auto m : {SmoothingMethod::Laplacian, SmoothingMethod::Taubin, SmoothingMethod::Bilaplacian,
+                   SmoothingMethod::MeanCurvatureFlow, SmoothingMethod::ModifiedMeanCurvatureFlow})
+        if (smoothing_method_name(m) == name) return m;
+    throw InvalidArgumentError(fmt::format(
+        "smooth: method '{}' is unknown (expected laplacian, taubin, bilaplacian, mcf or modified-mcf)", name));
+}
+
+std::string smoothing_update_name(SmoothingUpdate update)
+{
+    return update == SmoothingUpdate::Pre ? "pre" : "post";
+}
+
+SmoothingUpdate parse_smoothing_update(const std::string& name)
+{
+    if (name == "post") return SmoothingUpdate::Post;
+    if (name == "pre") return SmoothingUpdate::Pre;
+    throw InvalidArgumentError(fmt::format("smooth: update '{}' is unknown (expected post or pre)", name));
+}
+
+}  // namespace meshdiff

@@ -1,4 +1,103 @@
 //! \file smoothing.h
-//! \brief (placeholder, being written)
+//! \brief The five mesh smoothing methods compared in the paper (section
+//! 6.2-6.3; METHOD.md section 7), each with post-updating (Jacobi) and
+//! pre-updating (Gauss-Seidel).
+//!
+//! Notation: U(x_i) = (1/n_i) sum_{j in N1(i)} x_j - x_i is the umbrella vector
+//! (uniform weights, n_i the valence). Boundary vertices (meshdiff::
+//! boundary_vertex_mask: on a boundary or non-manifold edge) never move;
+//! isolated vertices never move either. Results are deterministic: the same
+//! mesh and options give bitwise the same positions.
+//! - Laplacian: x_i += lambda U(x_i).
+//! - Taubin (1995): one iteration is a lambda step followed by a mu step of the
+//!   Laplacian (lambda > 0, mu < -lambda).
+//! - Bilaplacian (Kobbelt, Campagna, Vorsatz, Seidel 1998): U2(x_i) = (1/n_i)
+//!   sum_j U(x_j) - U(x_i); x_i -= damping U2(x_i) / nu_i with nu_i = 1 + (1/n_i)
+//!   sum_j 1/n_j (damping = 1 is their exact local relaxation).
+//! - Mean curvature flow (Desbrun, Meyer, Schroeder, Barr 1999), explicit:
+//!   x_i += dt Hn_i with the mean-curvature normal Hn_i = 1/(4 A_i) sum_j (cot
+//!   a_ij + cot b_ij) (x_j - x_i), A_i the mixed Voronoi area of Meyer et al.
+//!   2002 (Voronoi area for non-obtuse triangles, half or a quarter of the
+//!   triangle's area for obtuse ones). |Hn_i| approximates |H|, and Hn points
+//!   to the inside of a convex surface, so a sphere of radius r shrinks by
+//!   about dt / r per step.
+//! - Modified mean curvature flow (Ohtake, Belyaev, Bogaevski 2000, eq. 13):
+//!   move along the umbrella direction m = U/|U| at the normal speed of mean
+//!   curvature flow. With cos t = m . Hn / |Hn|: F = |Hn| m / cos t if cos t >
+//!   epsilon, F = 2 Hn - |Hn| m / cos t if cos t < -epsilon, F = 0 otherwise
+//!   (and where |Hn| or |U| is zero); x_i += dt F. In both moving branches the
+//!   component of F along Hn is |Hn|, the tangential part follows the umbrella,
+//!   which evens out triangle shapes.
+//!
+//! The flows' time step dt = step * e^2, where e is the mean edge length of
+//! the mesh before the first iteration: step is dimensionless, so a given step
+//! acts alike at every scale (on a regular valence-6 grid, MCF with step s moves
+//! like a Laplacian step with lambda about 2 s; explicit steps are stable for
+//! step below about 0.5 on good triangles, less on skinny ones).
+//! Cotangents of (near-)degenerate corners (|cross| <= 1e-12 |a| |b|) count as
+//! 0, and a vertex whose mixed area vanishes does not move, so degenerate faces
+//! never produce NaN.
 #pragma once
+
 #include "meshdiff/mesh.h"
+
+#include <functional>
+#include <string>
+
+namespace meshdiff {
+
+enum class SmoothingMethod
+{
+    Laplacian,
+    Taubin,
+    Bilaplacian,
+    MeanCurvatureFlow,
+    ModifiedMeanCurvatureFlow
+};
+
+//! Post-updating (Jacobi): every new position is computed from the positions
+//! of the previous iteration, then all are applied. Pre-updating
+//! (Gauss-Seidel): vertices are updated in place in index order, each using the
+//! already updated positions of its neighbours.
+enum class SmoothingUpdate
+{
+    Post,
+    Pre
+};
+
+//! Options of smooth(). Only the fields of the chosen method are validated.
+struct SmoothingOptions
+{
+    SmoothingMethod method = SmoothingMethod::Laplacian;
+    SmoothingUpdate update = SmoothingUpdate::Post;
+    int iterations = 10;   //!< >= 0; a Taubin iteration is one lambda and one mu step
+    double lambda = 0.5;   //!< Laplacian and Taubin step, in (0, 1]
+    double mu = -0.53;     //!< Taubin's negative step, mu < -lambda and mu >= -1
+    double step = 0.1;     //!< MCF / modified MCF step, in units of the mean edge length squared; in (0, 10]
+    double damping = 1.0;  //!< bilaplacian relaxation factor, in (0, 1]
+    double epsilon = 0.1;  //!< modified MCF: |cos t| below this does not move the vertex; in [0, 1)
+    //! Called once before the first iteration with 0 and after every iteration
+    //! k = 1..iterations with the current mesh (for profiles during smoothing).
+    std::function<void(int iteration, const Mesh& mesh)> callback;
+};
+
+//! Smooths \p mesh in place (positions only; faces are untouched) with the
+//! method, update scheme and parameters of \p options.
+//! \throw InvalidArgumentError naming the field if an option of the chosen
+//!        method is out of range.
+//! \throw InvalidMeshError if the mesh fails meshdiff::validate().
+//! \throw SolverError if an iteration produces a non-finite coordinate (an
+//!        explicit flow step too large for the mesh); the mesh then holds the
+//!        last finite state.
+void smooth(Mesh& mesh, const SmoothingOptions& options);
+
+//! "laplacian", "taubin", "bilaplacian", "mcf", "modified-mcf".
+std::string smoothing_method_name(SmoothingMethod method);
+//! Inverse of smoothing_method_name(). \throw InvalidArgumentError if unknown.
+SmoothingMethod parse_smoothing_method(const std::string& name);
+//! "post", "pre".
+std::string smoothing_update_name(SmoothingUpdate update);
+//! Inverse of smoothing_update_name(). \throw InvalidArgumentError if unknown.
+SmoothingUpdate parse_smoothing_update(const std::string& name);
+
+}  // namespace meshdiff
