@@ -7,7 +7,7 @@ pkgs=(build-essential cmake pkg-config
       libopenmesh-dev libeigen3-dev libnanoflann-dev libfmt-dev
       libgtest-dev nlohmann-json3-dev libcli11-dev)
 if [[ "${1:-}" == "--reference" ]]; then
-    pkgs+=(meshlab xvfb xauth gnuplot-nox openmesh-tools hyperfine)
+    pkgs+=(meshlab xvfb xauth gnuplot-nox libopenmesh-apps hyperfine)
 fi
 SUDO=""
 if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi

@@ -1,1 +1,278 @@
 #include "meshdiff/curvature.h"
+
+#include "meshdiff/error.h"
+#include "meshdiff/normals.h"
+
+#include <fmt/format.h>
+#include <Eigen/QR>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace meshdiff {
+
+std::string to_string(CurvatureMethod m)
+{
+    switch (m) {
+        case CurvatureMethod::GoldfeatherCubic:
+            return "goldfeather";
+        case CurvatureMethod::Quadric:
+            return "quadric";
+        case CurvatureMethod::MeyerCotangent:
+            return "meyer";
+    }
+    return "?";
+}
+
+std::string to_string(RowWeighting w)
+{
+    return w == RowWeighting::None ? "none" : "inverse-square";
+}
+
+CurvatureMethod parse_curvature_method(const std::string& name)
+{
+    if (name == "goldfeather" || name == "cubic") return CurvatureMethod::GoldfeatherCubic;
+    if (name == "quadric") return CurvatureMethod::Quadric;
+    if (name == "meyer" || name == "cotangent") return CurvatureMethod::MeyerCotangent;
+    throw InvalidArgumentError(fmt::format("curvature method '{}' is not one of goldfeather, quadric, meyer", name));
+}
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+enum class FitResult
+{
+    Cubic,
+    Quadric,
+    Failed
+};
+
+// Scratch space per thread: neighbourhood and least-squares system.
+struct FitScratch
+{
+    std::vector<std::uint32_t> nbrs;
+    std::vector<std::uint32_t> stamp;  // visited marks for the 2-ring
+    std::uint32_t mark = 0;
+    Eigen::Matrix<double, Eigen::Dynamic, 7> M;
+    Eigen::VectorXd rhs;
+    Eigen::Matrix<double, Eigen::Dynamic, 3> Q;
+    Eigen::VectorXd qrhs;
+};
+
+void gather_neighbourhood(std::size_t v, const Adjacency& adj, int min_neighbors, FitScratch& s, bool& widened)
+{
+    s.nbrs.assign(adj.begin(v), adj.end(v));
+    widened = false;
+    if (int(s.nbrs.size()) >= min_neighbors) return;
+    widened = true;
+    if (++s.mark == 0) {
+        std::fill(s.stamp.begin(), s.stamp.end(), 0u);
+        s.mark = 1;
+    }
+    s.stamp[v] = s.mark;
+    for (auto w : s.nbrs) s.stamp[w] = s.mark;
+    const std::size_t ring1 = s.nbrs.size();
+    for (std::size_t k = 0; k < ring1; ++k)
+        for (auto it = adj.begin(s.nbrs[k]); it != adj.end(s.nbrs[k]); ++it)
+            if (s.stamp[*it] != s.mark) {
+                s.stamp[*it] = s.mark;
+                s.nbrs.push_back(*it);
+            }
+}
+
+// The fitting estimators (cubic with quadric fallback, or quadric only).
+FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
+                     bool cubic, FitScratch& s, double& H)
+{
+    const Vec3& N = normals[v];
+    const Vec3& p = mesh.points[v];
+    // Any tangent frame with u x v = N.
+    const Vec3 helper = std::abs(N.x()) < 0.6 ? Vec3::UnitX() : (std::abs(N.y()) < 0.6 ? Vec3::UnitY() : Vec3::UnitZ());
+    const Vec3 u = N.cross(helper).normalized();
+    const Vec3 w = N.cross(u);
+
+    const std::size_t m = s.nbrs.size();
+    double h = 0.0;
+    for (auto q : s.nbrs) h += (mesh.points[q] - p).norm();
+    h /= double(m);
+    if (!(h > 0.0)) return FitResult::Failed;
+    const double inv_h = 1.0 / h;
+    const double cos_max = std::cos(opt.max_normal_angle_deg * M_PI / 180.0);
+
+    if (cubic) {
+        s.M.resize(Eigen::Index(3 * m), 7);
+        s.rhs.resize(Eigen::Index(3 * m));
+        Eigen::Index r = 0;
+        for (auto q : s.nbrs) {
+            const Vec3 d = (mesh.points[q] - p) * inv_h;
+            const double x = d.dot(u), y = d.dot(w), z = d.dot(N);
+            const double wt =
+                opt.weighting == RowWeighting::InverseSquare && (x * x + y * y) > 0.0 ? 2.0 / (x * x + y * y) : 1.0;
+            s.M.row(r) << x * x / 2, x * y, y * y / 2, x * x * x, x * x * y, x * y * y, y * y * y;
+            s.M.row(r) *= wt;
+            s.rhs(r++) = wt * z;
+            const Vec3& n = normals[q];
+            const double a = n.dot(u), b = n.dot(w), c = n.dot(N);
+            if (c >= cos_max && c > 0.0) {
+                s.M.row(r) << x, y, 0, 3 * x * x, 2 * x * y, y * y, 0;
+                s.M.row(r) *= wt;
+                s.rhs(r++) = -wt * a / c;
+                s.M.row(r) << 0, x, y, 0, x * x, 2 * x * y, 3 * y * y;
+                s.M.row(r) *= wt;
+                s.rhs(r++) = -wt * b / c;
+            }
+        }
+        if (r >= 7) {
+            Eigen::ColPivHouseholderQR<Eigen::Matrix<double, Eigen::Dynamic, 7>> qr(s.M.topRows(r));
+            qr.setThreshold(1e-10);
+            if (qr.rank() == 7) {
+                const Eigen::Matrix<double, 7, 1> X = qr.solve(s.rhs.head(r));
+                const double Hs = -(X(0) + X(2)) / 2.0;
+                if (std::isfinite(Hs)) {
+                    H = Hs * inv_h;
+                    return FitResult::Cubic;
+                }
+            }
+        }
+    }
+    // Position-only quadric.
+    s.Q.resize(Eigen::Index(m), 3);
+    s.qrhs.resize(Eigen::Index(m));
+    Eigen::Index r = 0;
+    for (auto q : s.nbrs) {
+        const Vec3 d = (mesh.points[q] - p) * inv_h;
+        const double x = d.dot(u), y = d.dot(w), z = d.dot(N);
+        const double wt =
+            opt.weighting == RowWeighting::InverseSquare && (x * x + y * y) > 0.0 ? 2.0 / (x * x + y * y) : 1.0;
+        s.Q.row(r) << wt * x * x / 2, wt * x * y, wt * y * y / 2;
+        s.qrhs(r++) = wt * z;
+    }
+    if (r < 3) return FitResult::Failed;
+    Eigen::ColPivHouseholderQR<Eigen::Matrix<double, Eigen::Dynamic, 3>> qr(s.Q);
+    qr.setThreshold(1e-10);
+    if (qr.rank() < 3) return FitResult::Failed;
+    const Eigen::Vector3d X = qr.solve(s.qrhs);
+    const double Hs = -(X(0) + X(2)) / 2.0;
+    if (!std::isfinite(Hs)) return FitResult::Failed;
+    H = Hs * inv_h;
+    return FitResult::Quadric;
+}
+
+CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const std::vector<Vec3>& normals,
+                                const CurvatureOptions& opt)
+{
+    const std::size_t n = mesh.n_vertices();
+    const bool cubic = opt.method == CurvatureMethod::GoldfeatherCubic;
+    CurvatureField field;
+    field.H.assign(n, kNaN);
+    std::vector<unsigned char> how(n, 0);  // bit 0 widened, bit 1 fallback, bit 2 no normal
+#pragma omp parallel
+    {
+        FitScratch s;
+        s.stamp.assign(n, 0u);
+#pragma omp for schedule(dynamic, 1024)
+        for (std::ptrdiff_t iv = 0; iv < std::ptrdiff_t(n); ++iv) {
+            const auto v = std::size_t(iv);
+            if (normals[v].squaredNorm() == 0.0) {
+                how[v] = 4;
+                continue;
+            }
+            bool widened = false;
+            gather_neighbourhood(v, adj, opt.min_neighbors, s, widened);
+            if (s.nbrs.size() < 3) continue;
+            double H = kNaN;
+            const FitResult r = fit_vertex(v, mesh, normals, opt, cubic, s, H);
+            if (r == FitResult::Failed) continue;
+            field.H[v] = H;
+            how[v] = static_cast<unsigned char>((widened ? 1 : 0) | (cubic && r == FitResult::Quadric ? 2 : 0));
+        }
+    }
+    for (std::size_t v = 0; v < n; ++v) {
+        if (std::isnan(field.H[v])) ++field.undefined;
+        if (how[v] & 1) ++field.widened;
+        if (how[v] & 2) ++field.quadric_fallback;
+        if (how[v] & 4) ++field.no_normal;
+    }
+    return field;
+}
+
+double cot(const Vec3& a, const Vec3& b)
+{
+    const double s = a.cross(b).norm();
+    return s > 0.0 ? a.dot(b) / s : 0.0;
+}
+
+CurvatureField meyer_curvature(const Mesh& mesh, const std::vector<Vec3>& normals)
+{
+    const std::size_t n = mesh.n_vertices();
+    std::vector<Vec3> K(n, Vec3::Zero());
+    std::vector<double> area(n, 0.0);
+    const auto degenerate = degenerate_face_mask(mesh);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+        if (degenerate[f]) continue;
+        const Face& t = mesh.faces[f];
+        const Vec3* P[3] = {&mesh.points[std::size_t(t[0])], &mesh.points[std::size_t(t[1])],
+                            &mesh.points[std::size_t(t[2])]};
+        double cots[3];
+        bool obtuse_at[3];
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 e1 = *P[(k + 1) % 3] - *P[k];
+            const Vec3 e2 = *P[(k + 2) % 3] - *P[k];
+            cots[k] = cot(e1, e2);
+            obtuse_at[k] = e1.dot(e2) < 0.0;
+        }
+        const double tri_area = 0.5 * (*P[1] - *P[0]).cross(*P[2] - *P[0]).norm();
+        const bool obtuse = obtuse_at[0] || obtuse_at[1] || obtuse_at[2];
+        for (int k = 0; k < 3; ++k) {
+            const int j = (k + 1) % 3, l = (k + 2) % 3;
+            const Vec3 eij = *P[k] - *P[j];
+            const Vec3 eil = *P[k] - *P[l];
+            // Edge (k, j) is opposite l; edge (k, l) is opposite j.
+            K[std::size_t(t[k])] += cots[l] * eij + cots[j] * eil;
+            double a;
+            if (!obtuse)
+                a = (eij.squaredNorm() * cots[l] + eil.squaredNorm() * cots[j]) / 8.0;
+            else
+                a = obtuse_at[k] ? tri_area / 2.0 : tri_area / 4.0;
+            area[std::size_t(t[k])] += a;
+        }
+    }
+    const auto boundary = boundary_vertex_mask(mesh);
+    CurvatureField field;
+    field.H.assign(n, kNaN);
+    for (std::size_t v = 0; v < n; ++v) {
+        if (normals[v].squaredNorm() == 0.0) ++field.no_normal;
+        if (boundary[v] || !(area[v] > 0.0) || normals[v].squaredNorm() == 0.0) continue;
+        const Vec3 Kv = K[v] / (2.0 * area[v]);
+        field.H[v] = 0.5 * Kv.dot(normals[v]);
+    }
+    for (double h : field.H)
+        if (std::isnan(h)) ++field.undefined;
+    return field;
+}
+
+}  // namespace
+
+CurvatureField mean_curvature(const Mesh& mesh, const Adjacency& adjacency, const std::vector<Vec3>& normals,
+                              const CurvatureOptions& options)
+{
+    if (options.min_neighbors < 3 || options.min_neighbors > 64)
+        throw InvalidArgumentError(
+            fmt::format("curvature: min_neighbors = {} is outside [3, 64]", options.min_neighbors));
+    if (!(options.max_normal_angle_deg > 0.0 && options.max_normal_angle_deg <= 90.0))
+        throw InvalidArgumentError(
+            fmt::format("curvature: max_normal_angle_deg = {} is outside (0, 90]", options.max_normal_angle_deg));
+    if (adjacency.size() != mesh.n_vertices() || normals.size() != mesh.n_vertices())
+        throw InvalidArgumentError("curvature: adjacency or normals do not match the mesh");
+    if (options.method == CurvatureMethod::MeyerCotangent) return meyer_curvature(mesh, normals);
+    return fitted_curvature(mesh, adjacency, normals, options);
+}
+
+CurvatureField mean_curvature(const Mesh& mesh, const CurvatureOptions& options)
+{
+    return mean_curvature(mesh, vertex_adjacency(mesh), vertex_normals(mesh), options);
+}
+
+}  // namespace meshdiff

@@ -1,1 +1,115 @@
 #include "meshdiff/roughness.h"
+
+#include "meshdiff/error.h"
+#include "meshdiff/neighborhood.h"
+#include "meshdiff/normals.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace meshdiff {
+
+std::vector<int> default_levels()
+{
+    std::vector<int> l(20);
+    std::iota(l.begin(), l.end(), 1);
+    return l;
+}
+
+LevelRoughness level_roughness(int level, const std::vector<double>& D, double outlier_fraction)
+{
+    LevelRoughness r;
+    r.level = level;
+    std::vector<double> sq;
+    sq.reserve(D.size());
+    for (double d : D)
+        if (!std::isnan(d)) sq.push_back(d * d);
+    r.vertices_used = sq.size();
+    if (sq.empty()) return r;
+    // Plain sum in vertex order: deterministic.
+    double total = 0.0;
+    for (double v : sq) total += v;
+    r.sigma = std::sqrt(total / double(sq.size()));
+    if (total > 0.0) {
+        const auto k = std::max<std::size_t>(1, std::size_t(std::ceil(outlier_fraction * double(sq.size()))));
+        std::vector<double> part(sq);
+        std::nth_element(part.begin(), part.begin() + std::ptrdiff_t(k - 1), part.end(), std::greater<>());
+        double top = 0.0;
+        for (std::size_t i = 0; i < k; ++i) top += part[i];
+        r.top_share = top / total;
+    }
+    // The worst vertices by |D| (ties by id).
+    std::vector<std::uint32_t> ids;
+    ids.reserve(D.size());
+    for (std::size_t i = 0; i < D.size(); ++i)
+        if (!std::isnan(D[i])) ids.push_back(std::uint32_t(i));
+    const std::size_t m = std::min<std::size_t>(10, ids.size());
+    auto worse = [&](std::uint32_t a, std::uint32_t b) {
+        const double da = std::abs(D[a]), db = std::abs(D[b]);
+        return da != db ? da > db : a < b;
+    };
+    std::partial_sort(ids.begin(), ids.begin() + std::ptrdiff_t(m), ids.end(), worse);
+    r.worst_vertices.assign(ids.begin(), ids.begin() + std::ptrdiff_t(m));
+    return r;
+}
+
+RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options)
+{
+    for (int l : options.levels)
+        if (l < 1) throw InvalidArgumentError(fmt::format("profile: level {} is < 1 (levels count rings)", l));
+    if (options.levels.empty() && !options.global)
+        throw InvalidArgumentError("profile: no level requested (empty level list and no global level)");
+    if (!(options.outlier_fraction > 0.0 && options.outlier_fraction <= 1.0))
+        throw InvalidArgumentError("profile: outlier_fraction must be in (0, 1]");
+
+    RoughnessProfile p;
+    p.vertices = mesh.n_vertices();
+    p.normalization = unit_normalization(mesh);
+    const Mesh unit = apply_normalization(mesh, p.normalization);
+    const Adjacency adj = vertex_adjacency(unit);
+    const std::vector<Vec3> normals = vertex_normals(unit);
+
+    p.curvature_options = options.curvature;
+    CurvatureField field = mean_curvature(unit, adj, normals, options.curvature);
+    p.curvature_undefined = field.undefined;
+    p.curvature_widened = field.widened;
+    p.curvature_fallback = field.quadric_fallback;
+    const std::vector<double>& H = field.H;
+    const std::size_t n = H.size();
+
+    const DiskMeans means = disk_means(unit, adj, H, options.levels);
+    std::vector<double> D(n);
+    for (std::size_t li = 0; li < options.levels.size(); ++li) {
+        for (std::size_t i = 0; i < n; ++i) D[i] = H[i] - means.mean[li][i];  // NaN propagates
+        LevelRoughness lr = level_roughness(options.levels[li], D, options.outlier_fraction);
+        lr.no_neighborhood = (n - field.undefined) - lr.vertices_used;
+        p.levels.push_back(std::move(lr));
+        if (options.keep_vertex_data) p.D.push_back(D);
+    }
+
+    if (options.global) {
+        p.has_global = true;
+        // Mean over all other vertices with defined H, in O(n).
+        long double sum = 0.0L;
+        std::size_t m = 0;
+        for (double h : H)
+            if (!std::isnan(h)) {
+                sum += h;
+                ++m;
+            }
+        for (std::size_t i = 0; i < n; ++i)
+            D[i] = (std::isnan(H[i]) || m < 2) ? std::numeric_limits<double>::quiet_NaN()
+                                               : H[i] - double((sum - H[i]) / (long double)(m - 1));
+        p.global = level_roughness(0, D, options.outlier_fraction);
+        p.global.no_neighborhood = (n - field.undefined) - p.global.vertices_used;
+        if (options.keep_vertex_data) p.D_global = D;
+    }
+    if (options.keep_vertex_data) p.H = std::move(field.H);
+    return p;
+}
+
+}  // namespace meshdiff

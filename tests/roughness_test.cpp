@@ -1,3 +1,273 @@
+#include "meshdiff/roughness.h"
+
 #include <gtest/gtest.h>
 
-#include "meshdiff/roughness.h"
+#include "meshdiff/curvature.h"
+#include "meshdiff/error.h"
+#include "meshdiff/io.h"
+#include "meshdiff/neighborhood.h"
+#include "meshdiff/normals.h"
+#include "meshdiff/shapes.h"
+
+#include <omp.h>
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <numeric>
+#include <random>
+
+using namespace meshdiff;
+
+namespace {
+
+std::string data(const std::string& name)
+{
+    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
+}
+
+// Brute force: D_L by a BFS per vertex, straight from the definition.
+std::vector<double> brute_force_D(const Mesh& mesh, const std::vector<double>& H, int L)
+{
+    const Adjacency adj = vertex_adjacency(mesh);
+    std::vector<double> D(H.size(), std::nan(""));
+    for (std::size_t i = 0; i < H.size(); ++i) {
+        if (std::isnan(H[i])) continue;
+        const auto dist = ring_distances(adj, i, L);
+        double sum = 0;
+        int cnt = 0;
+        for (std::size_t j = 0; j < H.size(); ++j)
+            if (j != i && dist[j] > 0 && !std::isnan(H[j])) {
+                sum += H[j];
+                ++cnt;
+            }
+        if (cnt) D[i] = H[i] - sum / cnt;
+    }
+    return D;
+}
+
+double rms(const std::vector<double>& D)
+{
+    double s = 0;
+    int n = 0;
+    for (double d : D)
+        if (!std::isnan(d)) {
+            s += d * d;
+            ++n;
+        }
+    return std::sqrt(s / n);
+}
+
+}  // namespace
+
+TEST(RoughnessProfile, MatchesBruteForceOnARealMesh)
+{
+    const Mesh mesh = read_mesh(data("bunny_res4_ascii.ply")).mesh;
+    ProfileOptions opt;
+    opt.levels = {1, 2, 3, 5, 8};
+    opt.keep_vertex_data = true;
+    const auto p = roughness_profile(mesh, opt);
+    const Mesh unit = apply_normalization(mesh, p.normalization);
+    for (std::size_t k = 0; k < opt.levels.size(); ++k) {
+        const auto D = brute_force_D(unit, p.H, opt.levels[k]);
+        for (std::size_t i = 0; i < D.size(); ++i) {
+            ASSERT_EQ(std::isnan(D[i]), std::isnan(p.D[k][i])) << "vertex " << i;
+            if (!std::isnan(D[i])) {
+                ASSERT_NEAR(D[i], p.D[k][i], 1e-12 * (1 + std::abs(D[i])));
+            }
+        }
+        EXPECT_NEAR(p.levels[k].sigma, rms(D), 1e-12 * rms(D));
+    }
+}
+
+TEST(RoughnessProfile, GlobalLevelIsScaledStandardDeviation)
+{
+    // METHOD.md section 5: sigma_G = n/(n-1) * population standard deviation of H.
+    for (const char* name : {"bunny_res4_ascii.ply", "fandisk.ply", "teapot.obj"}) {
+        const Mesh mesh = read_mesh(data(name)).mesh;
+        ProfileOptions opt;
+        opt.levels = {1};
+        opt.keep_vertex_data = true;
+        const auto p = roughness_profile(mesh, opt);
+        double mean = 0;
+        int n = 0;
+        for (double h : p.H)
+            if (!std::isnan(h)) {
+                mean += h;
+                ++n;
+            }
+        mean /= n;
+        double var = 0;
+        for (double h : p.H)
+            if (!std::isnan(h)) var += (h - mean) * (h - mean);
+        const double expected = double(n) / (n - 1) * std::sqrt(var / n);
+        EXPECT_NEAR(p.global.sigma, expected, 1e-10 * expected) << name;
+        EXPECT_EQ(p.global.vertices_used, std::size_t(n)) << name;
+    }
+}
+
+TEST(RoughnessProfile, LevelsBeyondTheDiameterEqualGlobal)
+{
+    const Shape s = icosphere(2);  // 162 vertices, graph diameter well below 30
+    ProfileOptions opt;
+    opt.levels = {30, 100};
+    const auto p = roughness_profile(s.mesh, opt);
+    EXPECT_NEAR(p.levels[0].sigma, p.global.sigma, 1e-12 * p.global.sigma);
+    EXPECT_NEAR(p.levels[1].sigma, p.global.sigma, 1e-12 * p.global.sigma);
+    EXPECT_GT(p.global.sigma, 0.0);
+}
+
+TEST(RingNeighborhood, RegularGridHas3LLPlus1Vertices)
+{
+    const Shape grid = plane_grid(61, 61);
+    const Adjacency adj = vertex_adjacency(grid.mesh);
+    std::vector<double> ones(grid.mesh.n_vertices(), 1.0);
+    const std::vector<int> levels = {1, 2, 3, 5, 10};
+    const DiskMeans dm = disk_means(grid.mesh, adj, ones, levels, true);
+    const std::size_t centre = 30 * 61 + 30;
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+        const int L = levels[k];
+        EXPECT_EQ(dm.size[k][centre], std::uint32_t(3 * L * (L + 1))) << "L = " << L;
+        const auto dist = ring_distances(adj, centre, L);
+        const auto reached = std::count_if(dist.begin(), dist.end(), [](int d) { return d > 0; });
+        EXPECT_EQ(reached, 3 * L * (L + 1)) << "L = " << L;
+    }
+}
+
+TEST(RingNeighborhood, DiskMeansMatchBruteForceWithUndefinedValues)
+{
+    const Shape s = torus(24, 12);
+    const Adjacency adj = vertex_adjacency(s.mesh);
+    std::mt19937_64 rng(7);
+    std::vector<double> values(s.mesh.n_vertices());
+    for (auto& v : values) v = double(rng() % 1000) / 7.0;
+    for (std::size_t i = 0; i < values.size(); i += 13) values[i] = std::nan("");
+    const std::vector<int> levels = {4, 1, 7};
+    const DiskMeans dm = disk_means(s.mesh, adj, values, levels, true);
+    for (std::size_t k = 0; k < levels.size(); ++k)
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            if (std::isnan(values[i])) {
+                EXPECT_TRUE(std::isnan(dm.mean[k][i]));
+                continue;
+            }
+            const auto dist = ring_distances(adj, i, levels[k]);
+            double sum = 0;
+            int cnt = 0, size = 0;
+            for (std::size_t j = 0; j < values.size(); ++j)
+                if (dist[j] > 0) {
+                    ++size;
+                    if (!std::isnan(values[j])) {
+                        sum += values[j];
+                        ++cnt;
+                    }
+                }
+            ASSERT_EQ(dm.size[k][i], std::uint32_t(size));
+            ASSERT_NEAR(dm.mean[k][i], sum / cnt, 1e-12 * std::abs(sum / cnt));
+        }
+}
+
+TEST(RoughnessProfile, InvariantToTranslationRotationScaleAndVertexOrder)
+{
+    const Mesh mesh = read_mesh(data("bunny_res3.ply")).mesh;
+    ProfileOptions opt;
+    opt.levels = {1, 2, 5, 10};
+    const auto ref = roughness_profile(mesh, opt);
+
+    Mesh moved = mesh;
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+    for (auto& p : moved.points) p = 37.5 * (R * p) + Vec3(100, -20, 5);
+    const auto q = roughness_profile(moved, opt);
+
+    // A random permutation of the vertices (faces renumbered).
+    Mesh perm = mesh;
+    std::vector<std::int32_t> order(mesh.n_vertices());
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), std::mt19937_64(3));
+    for (std::size_t i = 0; i < order.size(); ++i) perm.points[std::size_t(order[i])] = mesh.points[i];
+    for (auto& f : perm.faces)
+        for (auto& v : f) v = order[std::size_t(v)];
+    const auto r = roughness_profile(perm, opt);
+
+    for (std::size_t k = 0; k < ref.levels.size(); ++k) {
+        EXPECT_NEAR(q.levels[k].sigma, ref.levels[k].sigma, 1e-8 * ref.levels[k].sigma);
+        EXPECT_NEAR(r.levels[k].sigma, ref.levels[k].sigma, 1e-10 * ref.levels[k].sigma);
+    }
+    EXPECT_NEAR(q.global.sigma, ref.global.sigma, 1e-8 * ref.global.sigma);
+    EXPECT_NEAR(r.global.sigma, ref.global.sigma, 1e-10 * ref.global.sigma);
+    EXPECT_NEAR(q.normalization.scale, 37.5 * ref.normalization.scale, 1e-9 * q.normalization.scale);
+}
+
+TEST(RoughnessProfile, IdenticalForAnyThreadCount)
+{
+    const Mesh mesh = read_mesh(data("fandisk.ply")).mesh;
+    ProfileOptions opt;
+    opt.keep_vertex_data = true;
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const auto a = roughness_profile(mesh, opt);
+    omp_set_num_threads(2);
+    const auto b = roughness_profile(mesh, opt);
+    omp_set_num_threads(3);
+    const auto c = roughness_profile(mesh, opt);
+    omp_set_num_threads(saved);
+    for (std::size_t k = 0; k < a.levels.size(); ++k) {
+        EXPECT_EQ(a.levels[k].sigma, b.levels[k].sigma);
+        EXPECT_EQ(a.levels[k].sigma, c.levels[k].sigma);
+    }
+    EXPECT_EQ(a.H, b.H);
+    EXPECT_EQ(a.global.sigma, c.global.sigma);
+}
+
+TEST(RoughnessProfile, NoisySphereIsRougherLocallyThanGlobally)
+{
+    // The paper's observation for a noisy sphere, with its own sphere generator.
+    const Shape s = noisy_sphere(4, 0.01, 11);
+    const auto p = roughness_profile(s.mesh);
+    EXPECT_GT(p.levels[0].sigma, p.global.sigma);
+    // Smooth sphere: every level is small next to the noisy one.
+    const auto smooth = roughness_profile(icosphere(4).mesh);
+    EXPECT_LT(smooth.levels[0].sigma, 0.2 * p.levels[0].sigma);
+}
+
+TEST(RoughnessProfile, DirtyMeshesGiveFiniteProfiles)
+{
+    for (const char* name : {"teapot.obj", "bunny_res3.ply", "bunny_res4_ascii.ply", "hemisphere.ply"}) {
+        for (auto method :
+             {CurvatureMethod::GoldfeatherCubic, CurvatureMethod::Quadric, CurvatureMethod::MeyerCotangent}) {
+            const Mesh mesh = read_mesh(data(name)).mesh;
+            ProfileOptions opt;
+            opt.curvature.method = method;
+            const auto p = roughness_profile(mesh, opt);
+            for (const auto& l : p.levels) {
+                EXPECT_TRUE(std::isfinite(l.sigma)) << name;
+                EXPECT_GT(l.vertices_used, 0u) << name;
+                EXPECT_EQ(l.vertices_used + l.no_neighborhood + p.curvature_undefined, mesh.n_vertices()) << name;
+            }
+            EXPECT_TRUE(std::isfinite(p.global.sigma)) << name;
+        }
+    }
+}
+
+TEST(RoughnessProfile, RejectsBadLevels)
+{
+    const Shape s = icosphere(1);
+    ProfileOptions opt;
+    opt.levels = {1, 0};
+    EXPECT_THROW(roughness_profile(s.mesh, opt), InvalidArgumentError);
+    opt.levels = {};
+    opt.global = false;
+    EXPECT_THROW(roughness_profile(s.mesh, opt), InvalidArgumentError);
+}
+
+TEST(LevelRoughness, TopShareFlagsOneDominantVertex)
+{
+    std::vector<double> D(2000, 0.01);
+    D[17] = 100.0;
+    D[3] = std::nan("");
+    const auto l = level_roughness(1, D);
+    EXPECT_EQ(l.vertices_used, 1999u);
+    EXPECT_GT(l.top_share, 0.99);
+    ASSERT_FALSE(l.worst_vertices.empty());
+    EXPECT_EQ(l.worst_vertices[0], 17u);
+    std::vector<double> even(2000, 0.5);
+    EXPECT_NEAR(level_roughness(1, even).top_share, 2.0 / 2000.0, 1e-12);
+}

@@ -1,11 +1,187 @@
 #include "commands.h"
+#include "meshdiff/error.h"
+#include "meshdiff/io.h"
+#include "meshdiff/shapes.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
 
 namespace meshdiff::cli {
 
+namespace {
+
+struct GenerateArgs
+{
+    std::string kind;
+    std::string out;
+    int subdivisions = 4;
+    double radius = 1.0;
+    double noise = 0.02;
+    std::vector<double> axes = {1.5, 1.0, 1.0};
+    double major = 1.0;
+    double minor = 0.25;
+    int n = 0;                 // grid resolution; 0: the kind's default
+    std::size_t vertices = 0;  // approximate vertex count of irregular kinds; 0: default
+    double amplitude = 1.0;
+    double spacing = 1.0;
+    std::uint64_t seed = 1;
+    std::map<std::string, const CLI::Option*> given;  // option name -> option, to find the ones set
+};
+
+const std::vector<std::string>& kinds()
+{
+    static const std::vector<std::string> k = {"sphere",     "noisy-sphere",     "ellipsoid",
+                                               "torus",      "torus-irregular",  "heightfield",
+                                               "heightfield-irregular", "plane"};
+    return k;
+}
+
+// Which options each kind reads; any other option given is a usage error.
+const std::set<std::string>& applicable(const std::string& kind)
+{
+    static const std::map<std::string, std::set<std::string>> table = {
+        {"sphere", {"--subdivisions", "--radius"}},
+        {"noisy-sphere", {"--subdivisions", "--radius", "--noise", "--seed"}},
+        {"ellipsoid", {"--subdivisions", "--axes"}},
+        {"torus", {"--major", "--minor", "--n"}},
+        {"torus-irregular", {"--major", "--minor", "--vertices", "--seed"}},
+        {"heightfield", {"--n", "--amplitude"}},
+        {"heightfield-irregular", {"--vertices", "--amplitude", "--seed"}},
+        {"plane", {"--n", "--spacing"}},
+    };
+    return table.at(kind);
+}
+
+Shape make_shape(const GenerateArgs& a, std::string& description)
+{
+    const std::string& k = a.kind;
+    if (k == "sphere") {
+        description = fmt::format("icosphere subdivisions={} radius={}", a.subdivisions, a.radius);
+        return icosphere(a.subdivisions, a.radius);
+    }
+    if (k == "noisy-sphere") {
+        description = fmt::format("icosphere subdivisions={} radius={} with uniform radial noise +-{} of the radius, "
+                                  "seed={}; exact_H is the noise-free sphere's 1/radius",
+                                  a.subdivisions, a.radius, a.noise, a.seed);
+        return noisy_sphere(a.subdivisions, a.noise, a.seed, a.radius);
+    }
+    if (k == "ellipsoid") {
+        if (a.axes.size() != 3) throw InvalidArgumentError("generate: --axes takes three semi-axes A B C");
+        description = fmt::format("ellipsoid: icosphere subdivisions={} scaled by a={} b={} c={}", a.subdivisions,
+                                  a.axes[0], a.axes[1], a.axes[2]);
+        return ellipsoid(a.subdivisions, a.axes[0], a.axes[1], a.axes[2]);
+    }
+    if (k == "torus") {
+        const int n_major = a.n > 0 ? a.n : 64;
+        const double ratio = a.major > 0 && a.minor > 0 ? a.minor / a.major : 0.25;
+        const int n_minor = std::max(3, int(std::lround(n_major * ratio)));
+        description = fmt::format("torus R={} r={} regular grid n_major={} n_minor={}", a.major, a.minor, n_major,
+                                  n_minor);
+        return torus(n_major, n_minor, a.major, a.minor);
+    }
+    if (k == "torus-irregular") {
+        const std::size_t v = a.vertices > 0 ? a.vertices : 1024;
+        description =
+            fmt::format("torus R={} r={} irregular, about {} vertices, seed={}", a.major, a.minor, v, a.seed);
+        return torus_irregular(v, a.major, a.minor, a.seed);
+    }
+    if (k == "heightfield") {
+        const int n = a.n > 0 ? a.n : 33;
+        description = fmt::format("height field (see shapes.h) amplitude={} on a regular {}x{} grid", a.amplitude, n, n);
+        return heightfield(n, a.amplitude);
+    }
+    if (k == "heightfield-irregular") {
+        const std::size_t v = a.vertices > 0 ? a.vertices : 1089;
+        description =
+            fmt::format("height field (see shapes.h) amplitude={} irregular, about {} vertices, seed={}", a.amplitude,
+                        v, a.seed);
+        return heightfield_irregular(v, a.seed, a.amplitude);
+    }
+    // plane
+    const int n = a.n > 0 ? a.n : 17;
+    description = fmt::format("plane grid {}x{} spacing={}", n, n, a.spacing);
+    return plane_grid(n, n, a.spacing);
+}
+
+int run_generate(const GenerateArgs& a)
+{
+    if (std::find(kinds().begin(), kinds().end(), a.kind) == kinds().end())
+        throw InvalidArgumentError(fmt::format(
+            "generate: unknown shape '{}' (expected sphere, noisy-sphere, ellipsoid, torus, torus-irregular, "
+            "heightfield, heightfield-irregular or plane)",
+            a.kind));
+    const auto& ok = applicable(a.kind);
+    for (const auto& [name, opt] : a.given)
+        if (opt->count() > 0 && ok.count(name) == 0)
+            throw InvalidArgumentError(fmt::format("generate: {} does not apply to {}", name, a.kind));
+    if (a.given.at("--n")->count() > 0 && a.n < 2)
+        throw InvalidArgumentError(fmt::format("generate: --n must be >= 2 (got {})", a.n));
+
+    std::string description;
+    const Shape shape = make_shape(a, description);
+    const std::filesystem::path out(a.out);
+    std::string ext = out.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext == ".ply") {
+        write_ply(out, shape.mesh, {{"exact_H", shape.exact_H}}, {},
+                  {"meshdiff generate: " + description, "exact_H: exact mean curvature, +1/r on a sphere"});
+    } else {
+        write_mesh(out, shape.mesh);
+        std::cerr << "meshdiff: note: exact_H is only stored in .ply files\n";
+    }
+    const auto [lo, hi] = std::minmax_element(shape.exact_H.begin(), shape.exact_H.end());
+    std::cout << fmt::format("{}: {} vertices, {} faces, exact H in [{:.6g}, {:.6g}] ({})\n", a.out,
+                             shape.mesh.n_vertices(), shape.mesh.n_faces(), *lo, *hi, description);
+    return 0;
+}
+
+}  // namespace
+
 void add_generate_command(CLI::App& app, Action& action)
 {
-    auto* sub = app.add_subcommand("generate", "(not yet implemented)");
-    sub->callback([&action] { action = [] { return 0; }; });
+    auto args = std::make_shared<GenerateArgs>();
+    auto* sub = app.add_subcommand(
+        "generate", "write an analytic test surface with its exact mean curvature (PLY vertex property exact_H)");
+    sub->add_option("SHAPE", args->kind,
+                    "sphere | noisy-sphere | ellipsoid | torus | torus-irregular | heightfield | "
+                    "heightfield-irregular | plane")
+        ->required();
+    sub->add_option("OUT", args->out, "output mesh (.ply keeps exact_H; .obj .off .stl do not)")->required();
+    auto& g = args->given;
+    g["--subdivisions"] =
+        sub->add_option("--subdivisions", args->subdivisions, "icosphere subdivisions, 0..8 (sphere, ellipsoid)")
+            ->capture_default_str();
+    g["--radius"] = sub->add_option("--radius", args->radius, "sphere radius")->capture_default_str();
+    g["--noise"] = sub->add_option("--noise", args->noise,
+                                   "noisy-sphere: radial noise, uniform in [-F, F) times the radius")
+                       ->capture_default_str();
+    g["--axes"] = sub->add_option("--axes", args->axes, "ellipsoid semi-axes A B C along x, y, z")
+                      ->expected(3)
+                      ->capture_default_str();
+    g["--major"] = sub->add_option("--major", args->major, "torus centre-circle radius R")->capture_default_str();
+    g["--minor"] = sub->add_option("--minor", args->minor, "torus tube radius r")->capture_default_str();
+    g["--n"] = sub->add_option("--n", args->n,
+                               "grid resolution: torus vertices around the major circle (default 64; the tube gets "
+                               "n r/R), heightfield and plane vertices per side (default 33, 17)");
+    g["--vertices"] = sub->add_option("--vertices", args->vertices,
+                                      "approximate vertex count of the irregular shapes (default 1024, 1089)");
+    g["--amplitude"] =
+        sub->add_option("--amplitude", args->amplitude, "height field amplitude")->capture_default_str();
+    g["--spacing"] = sub->add_option("--spacing", args->spacing, "plane grid spacing")->capture_default_str();
+    g["--seed"] = sub->add_option("--seed", args->seed, "random seed of the noisy and irregular shapes")
+                      ->capture_default_str();
+    sub->callback([args, &action] { action = [args] { return run_generate(*args); }; });
 }
 
 }  // namespace meshdiff::cli

@@ -1,4 +1,84 @@
 //! \file curvature.h
-//! \brief (placeholder, being written)
+//! \brief Per-vertex mean curvature H (METHOD.md section 4).
+//!
+//! Convention: H = (k1 + k2) / 2 with the sign chosen so that convex regions
+//! with outward normals are positive; a sphere of radius r gives H = +1/r. The
+//! unit is 1 / (the mesh's length unit): roughness_profile() calls this on the
+//! normalised mesh, so there H is dimensionless.
+//!
+//! Estimators:
+//! - GoldfeatherCubic (default): Goldfeather & Interrante, "A Novel
+//!   Cubic-Order Algorithm for Approximating Principal Direction Vectors",
+//!   ACM TOG 23(1), 2004. Least-squares fit of
+//!   z = A/2 x^2 + B xy + C/2 y^2 + D x^3 + E x^2 y + F x y^2 + G y^3
+//!   in the tangent frame of the vertex normal to the neighbours' positions
+//!   and normals; H = -(A + C) / 2. Solved by column-pivoting Householder QR in
+//!   coordinates scaled by the mean neighbour distance (for conditioning).
+//!   Robustness rules of METHOD.md: fit on the 1-ring, widened to the 2-ring
+//!   when the 1-ring has fewer than `min_neighbors` vertices; a neighbour's two
+//!   normal rows are used only if its normal is within `max_normal_angle_deg`
+//!   of the vertex normal; if the system is rank-deficient, fall back to the
+//!   position-only quadric; if that fails too, H is undefined (NaN).
+//! - Quadric: the position-only quadric z = A/2 x^2 + B xy + C/2 y^2 on the
+//!   same neighbourhood (Goldfeather & Interrante's "method 2").
+//! - MeyerCotangent: Meyer, Desbrun, Schroeder, Barr, "Discrete
+//!   Differential-Geometry Operators for Triangulated 2-Manifolds", VisMath
+//!   2002: cotangent formula with mixed Voronoi areas, H = K(x).n / 2. Undefined
+//!   on boundary and non-manifold-edge vertices.
 #pragma once
+
 #include "meshdiff/mesh.h"
+
+#include <string>
+#include <vector>
+
+namespace meshdiff {
+
+enum class CurvatureMethod
+{
+    GoldfeatherCubic,
+    Quadric,
+    MeyerCotangent
+};
+
+//! Per-neighbour weighting of the least-squares rows of the fitting methods.
+enum class RowWeighting
+{
+    None,          //!< all rows weight 1
+    InverseSquare  //!< each neighbour's rows times 2 / (x^2 + y^2) (mymesh, curvpack)
+};
+
+std::string to_string(CurvatureMethod m);
+std::string to_string(RowWeighting w);
+//! Parses "goldfeather" (or "cubic"), "quadric", "meyer" (or "cotangent").
+//! \throw InvalidArgumentError for another name.
+CurvatureMethod parse_curvature_method(const std::string& name);
+
+struct CurvatureOptions
+{
+    CurvatureMethod method = CurvatureMethod::GoldfeatherCubic;  //!< estimator
+    RowWeighting weighting = RowWeighting::None;                 //!< row weighting of the fits (measured: see README)
+    int min_neighbors = 6;                                       //!< widen to the 2-ring below this 1-ring size
+    double max_normal_angle_deg = 60.0;  //!< use a neighbour's normal rows only within this angle
+};
+
+//! H per vertex (NaN where undefined) and how each vertex was estimated.
+struct CurvatureField
+{
+    std::vector<double> H;
+    std::size_t undefined = 0;         //!< vertices with NaN H
+    std::size_t widened = 0;           //!< fits that used the 2-ring
+    std::size_t quadric_fallback = 0;  //!< cubic fits that fell back to the quadric
+    std::size_t no_normal = 0;         //!< vertices without a vertex normal (all faces degenerate)
+};
+
+//! Mean curvature of every vertex of \p mesh (in the mesh's own units).
+//! \throw InvalidArgumentError for out-of-range options.
+CurvatureField mean_curvature(const Mesh& mesh, const CurvatureOptions& options = {});
+
+//! The same with the adjacency and vertex normals already computed
+//! (vertex_adjacency(mesh), vertex_normals(mesh)).
+CurvatureField mean_curvature(const Mesh& mesh, const Adjacency& adjacency, const std::vector<Vec3>& normals,
+                              const CurvatureOptions& options = {});
+
+}  // namespace meshdiff

@@ -1,4 +1,79 @@
 //! \file roughness.h
-//! \brief (placeholder, being written)
+//! \brief The multi-level roughness profile of Kushunapally, Razdan & Bridges,
+//! "Roughness as a Shape Measure", CAD&A 4(1-4), 2007, eqs. 7-9 (METHOD.md
+//! sections 2-5).
+//!
+//! The mesh is scaled so that the mean distance of its vertices to their
+//! centroid is 1 (normalize.h); H is estimated per vertex (curvature.h);
+//! D_L(i) = H(i) - mean of H over N_L(i) (neighborhood.h; the centre is
+//! excluded); sigma_L = sqrt(mean over i of D_L(i)^2). The global level uses
+//! all other vertices of the mesh: D_G(i) = H(i) - mean of H(j), j != i.
+//! Vertices with undefined H are excluded from every mean and from the RMS;
+//! a vertex whose N_L holds no vertex with defined H has no D_L (counted).
 #pragma once
+
+#include "meshdiff/curvature.h"
 #include "meshdiff/mesh.h"
+#include "meshdiff/normalize.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace meshdiff {
+
+//! Levels 1..20, the default of the paper's plots.
+std::vector<int> default_levels();
+
+struct ProfileOptions
+{
+    std::vector<int> levels = default_levels();  //!< ring levels, each >= 1, in the order reported
+    bool global = true;                          //!< also compute the global level
+    CurvatureOptions curvature{};                //!< estimator of H
+    bool keep_vertex_data = false;               //!< keep H and D per vertex in the result
+    double outlier_fraction = 0.001;             //!< share of vertices in the top-|D| diagnostic
+};
+
+//! sigma and its counts at one level.
+struct LevelRoughness
+{
+    int level = 0;                    //!< ring level; 0 for the global level
+    double sigma = 0.0;               //!< RMS of D over the vertices used (0 if none)
+    std::size_t vertices_used = 0;    //!< vertices with a defined D
+    std::size_t no_neighborhood = 0;  //!< vertices with defined H but no defined H in N_L
+    //! Share of sigma^2 contributed by the outlier_fraction of vertices with
+    //! the largest |D| (at least one vertex). Near outlier_fraction for a
+    //! well-spread roughness; above 0.5 means a few vertices dominate sigma.
+    double top_share = 0.0;
+    std::vector<std::uint32_t> worst_vertices;  //!< the ids of those vertices, largest |D| first (at most 10)
+};
+
+struct RoughnessProfile
+{
+    Normalization normalization;           //!< c and s of the unit-sphere scaling
+    std::size_t vertices = 0;              //!< vertices of the mesh
+    CurvatureOptions curvature_options{};  //!< as used
+    std::size_t curvature_undefined = 0;   //!< vertices with undefined H
+    std::size_t curvature_widened = 0;     //!< fits widened to the 2-ring
+    std::size_t curvature_fallback = 0;    //!< cubic fits that fell back to the quadric
+    std::vector<LevelRoughness> levels;    //!< in the order of ProfileOptions::levels
+    bool has_global = false;
+    LevelRoughness global;  //!< level 0
+
+    //! Per vertex, only with keep_vertex_data: H on the normalised mesh, and D
+    //! for each level (NaN where undefined), D_global last if has_global.
+    std::vector<double> H;
+    std::vector<std::vector<double>> D;
+    std::vector<double> D_global;
+};
+
+//! The roughness profile of \p mesh (any position and scale: it is
+//! normalised first).
+//! \throw InvalidArgumentError for a level < 1 or an empty level list without global.
+//! \throw InvalidMeshError for a mesh without extent.
+RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options = {});
+
+//! sigma of one level computed from D values (NaN skipped), with the counts
+//! and the outlier diagnostic. Exposed for tests and for other D sources.
+LevelRoughness level_roughness(int level, const std::vector<double>& D, double outlier_fraction = 0.001);
+
+}  // namespace meshdiff

@@ -1,0 +1,40 @@
+//! \file options.h
+//! \brief Option parsing helpers shared by the subcommands.
+#pragma once
+
+#include "meshdiff/curvature.h"
+#include "meshdiff/roughness.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace meshdiff::cli {
+
+//! Parses a level list such as "1,2,5,10,20" or "1-20" or "1-5,10".
+//! \throw InvalidArgumentError on a malformed list or a level < 1.
+std::vector<int> parse_levels(const std::string& text);
+
+//! Options of the roughness profile shared by profile, compare and batch.
+struct ProfileCliOptions
+{
+    std::string levels = "1-20";
+    bool no_global = false;
+    std::string curvature = "goldfeather";
+    std::string weighting = "none";
+};
+void add_profile_options(CLI::App* sub, ProfileCliOptions& o);
+
+//! The library options for the parsed command-line options.
+ProfileOptions to_profile_options(const ProfileCliOptions& o, bool keep_vertex_data);
+
+//! Sets the OpenMP thread count when \p threads > 0.
+void set_threads(int threads);
+
+//! Writes \p j to FILE, or to stdout for "-".
+//! \throw IoError if the file cannot be written.
+void write_json(const std::string& target, const nlohmann::json& j);
+
+}  // namespace meshdiff::cli
