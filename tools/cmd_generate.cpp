@@ -41,9 +41,9 @@ struct GenerateArgs
 
 const std::vector<std::string>& kinds()
 {
-    static const std::vector<std::string> k = {"sphere",     "noisy-sphere",     "ellipsoid",
-                                               "torus",      "torus-irregular",  "heightfield",
-                                               "heightfield-irregular", "plane"};
+    static const std::vector<std::string> k = {
+        "sphere",      "noisy-sphere",          "ellipsoid", "torus", "torus-irregular",
+        "heightfield", "heightfield-irregular", "plane"};
     return k;
 }
 
@@ -71,9 +71,10 @@ Shape make_shape(const GenerateArgs& a, std::string& description)
         return icosphere(a.subdivisions, a.radius);
     }
     if (k == "noisy-sphere") {
-        description = fmt::format("icosphere subdivisions={} radius={} with uniform radial noise +-{} of the radius, "
-                                  "seed={}; exact_H is the noise-free sphere's 1/radius",
-                                  a.subdivisions, a.radius, a.noise, a.seed);
+        description = fmt::format(
+            "icosphere subdivisions={} radius={} with uniform radial noise +-{} of the radius, "
+            "seed={}; exact_H is the noise-free sphere's 1/radius",
+            a.subdivisions, a.radius, a.noise, a.seed);
         return noisy_sphere(a.subdivisions, a.noise, a.seed, a.radius);
     }
     if (k == "ellipsoid") {
@@ -86,26 +87,25 @@ Shape make_shape(const GenerateArgs& a, std::string& description)
         const int n_major = a.n > 0 ? a.n : 64;
         const double ratio = a.major > 0 && a.minor > 0 ? a.minor / a.major : 0.25;
         const int n_minor = std::max(3, int(std::lround(n_major * ratio)));
-        description = fmt::format("torus R={} r={} regular grid n_major={} n_minor={}", a.major, a.minor, n_major,
-                                  n_minor);
+        description =
+            fmt::format("torus R={} r={} regular grid n_major={} n_minor={}", a.major, a.minor, n_major, n_minor);
         return torus(n_major, n_minor, a.major, a.minor);
     }
     if (k == "torus-irregular") {
         const std::size_t v = a.vertices > 0 ? a.vertices : 1024;
-        description =
-            fmt::format("torus R={} r={} irregular, about {} vertices, seed={}", a.major, a.minor, v, a.seed);
+        description = fmt::format("torus R={} r={} irregular, about {} vertices, seed={}", a.major, a.minor, v, a.seed);
         return torus_irregular(v, a.major, a.minor, a.seed);
     }
     if (k == "heightfield") {
         const int n = a.n > 0 ? a.n : 33;
-        description = fmt::format("height field (see shapes.h) amplitude={} on a regular {}x{} grid", a.amplitude, n, n);
+        description =
+            fmt::format("height field (see shapes.h) amplitude={} on a regular {}x{} grid", a.amplitude, n, n);
         return heightfield(n, a.amplitude);
     }
     if (k == "heightfield-irregular") {
         const std::size_t v = a.vertices > 0 ? a.vertices : 1089;
-        description =
-            fmt::format("height field (see shapes.h) amplitude={} irregular, about {} vertices, seed={}", a.amplitude,
-                        v, a.seed);
+        description = fmt::format("height field (see shapes.h) amplitude={} irregular, about {} vertices, seed={}",
+                                  a.amplitude, v, a.seed);
         return heightfield_irregular(v, a.seed, a.amplitude);
     }
     // plane
@@ -163,9 +163,9 @@ void add_generate_command(CLI::App& app, Action& action)
         sub->add_option("--subdivisions", args->subdivisions, "icosphere subdivisions, 0..8 (sphere, ellipsoid)")
             ->capture_default_str();
     g["--radius"] = sub->add_option("--radius", args->radius, "sphere radius")->capture_default_str();
-    g["--noise"] = sub->add_option("--noise", args->noise,
-                                   "noisy-sphere: radial noise, uniform in [-F, F) times the radius")
-                       ->capture_default_str();
+    g["--noise"] =
+        sub->add_option("--noise", args->noise, "noisy-sphere: radial noise, uniform in [-F, F) times the radius")
+            ->capture_default_str();
     g["--axes"] = sub->add_option("--axes", args->axes, "ellipsoid semi-axes A B C along x, y, z")
                       ->expected(3)
                       ->capture_default_str();
@@ -176,11 +176,10 @@ void add_generate_command(CLI::App& app, Action& action)
                                "n r/R), heightfield and plane vertices per side (default 33, 17)");
     g["--vertices"] = sub->add_option("--vertices", args->vertices,
                                       "approximate vertex count of the irregular shapes (default 1024, 1089)");
-    g["--amplitude"] =
-        sub->add_option("--amplitude", args->amplitude, "height field amplitude")->capture_default_str();
+    g["--amplitude"] = sub->add_option("--amplitude", args->amplitude, "height field amplitude")->capture_default_str();
     g["--spacing"] = sub->add_option("--spacing", args->spacing, "plane grid spacing")->capture_default_str();
-    g["--seed"] = sub->add_option("--seed", args->seed, "random seed of the noisy and irregular shapes")
-                      ->capture_default_str();
+    g["--seed"] =
+        sub->add_option("--seed", args->seed, "random seed of the noisy and irregular shapes")->capture_default_str();
     sub->callback([args, &action] { action = [args] { return run_generate(*args); }; });
 }
 

@@ -46,14 +46,15 @@ int run_smooth(const SmoothArgs& a)
 void add_smooth_command(CLI::App& app, Action& action)
 {
     auto args = std::make_shared<SmoothArgs>();
-    auto* sub = app.add_subcommand("smooth",
-                                   "smooth a mesh (boundary vertices fixed) with one of the paper's five methods");
+    auto* sub =
+        app.add_subcommand("smooth", "smooth a mesh (boundary vertices fixed) with one of the paper's five methods");
     sub->add_option("IN", args->in, "input mesh (.ply .obj .off .stl)")->required();
     sub->add_option("OUT", args->out, "output mesh (.ply .obj .off .stl)")->required();
     sub->add_option("--method", args->method, "laplacian | taubin | bilaplacian | mcf | modified-mcf")
         ->capture_default_str();
-    sub->add_option("--update", args->update, "post (Jacobi, from the previous positions) | pre (Gauss-Seidel, in "
-                                              "place in vertex order)")
+    sub->add_option("--update", args->update,
+                    "post (Jacobi, from the previous positions) | pre (Gauss-Seidel, in "
+                    "place in vertex order)")
         ->capture_default_str();
     SmoothingOptions& o = args->options;
     sub->add_option("--iterations", o.iterations, "iterations (a Taubin iteration is a lambda and a mu step)")
@@ -63,8 +64,9 @@ void add_smooth_command(CLI::App& app, Action& action)
     sub->add_option("--step", o.step, "mcf / modified-mcf time step in units of the squared mean edge length")
         ->capture_default_str();
     sub->add_option("--damping", o.damping, "bilaplacian relaxation factor, in (0, 1]")->capture_default_str();
-    sub->add_option("--epsilon", o.epsilon, "modified-mcf: vertices whose umbrella is within acos(eps) of "
-                                            "perpendicular to the curvature normal do not move")
+    sub->add_option("--epsilon", o.epsilon,
+                    "modified-mcf: vertices whose umbrella is within acos(eps) of "
+                    "perpendicular to the curvature normal do not move")
         ->capture_default_str();
     sub->callback([args, &action] { action = [args] { return run_smooth(*args); }; });
 }

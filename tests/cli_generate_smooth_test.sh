@@ -1,0 +1,98 @@
+#!/bin/sh
+# End-to-end checks of `meshdiff generate` and `meshdiff smooth`.
+# Usage: cli_generate_smooth_test.sh MESHDIFF_BINARY TEMP_DIR
+set -e
+bin="$1"
+tmp="$2"
+if [ -z "$bin" ] || [ -z "$tmp" ]; then
+    echo "usage: $0 MESHDIFF_BINARY TEMP_DIR" >&2
+    exit 2
+fi
+mkdir -p "$tmp"
+
+fail() {
+    echo "FAIL: $*" >&2
+    exit 1
+}
+
+# Runs the tool, expects exit code $1 (the rest are the arguments).
+expect_exit() {
+    want="$1"
+    shift
+    set +e
+    "$bin" "$@" >"$tmp/stdout" 2>"$tmp/stderr"
+    got=$?
+    set -e
+    [ "$got" -eq "$want" ] || fail "meshdiff $* exited $got, expected $want: $(cat "$tmp/stderr")"
+}
+
+# PLY header check: the file exists, is a PLY and carries exact_H.
+expect_ply_with_exact_h() {
+    [ -s "$1" ] || fail "$1 missing or empty"
+    head -c 400 "$1" | grep -a -q "^ply" || fail "$1 is not a PLY"
+    head -c 600 "$1" | grep -a -q "property double exact_H" || fail "$1 lacks exact_H"
+}
+
+# --- generate: every shape, defaults and with options ---------------------
+expect_exit 0 generate sphere "$tmp/sphere.ply" --subdivisions 2 --radius 2
+expect_ply_with_exact_h "$tmp/sphere.ply"
+head -c 400 "$tmp/sphere.ply" | grep -a -q "element vertex 162" || fail "sphere: expected 162 vertices"
+expect_exit 0 generate noisy-sphere "$tmp/noisy.ply" --subdivisions 3 --noise 0.05 --seed 7
+expect_ply_with_exact_h "$tmp/noisy.ply"
+expect_exit 0 generate noisy-sphere "$tmp/noisy2.ply" --subdivisions 3 --noise 0.05 --seed 7
+cmp -s "$tmp/noisy.ply" "$tmp/noisy2.ply" || fail "noisy-sphere: same seed, different file"
+expect_exit 0 generate noisy-sphere "$tmp/noisy3.ply" --subdivisions 3 --noise 0.05 --seed 8
+if cmp -s "$tmp/noisy.ply" "$tmp/noisy3.ply"; then fail "noisy-sphere: different seeds, same file"; fi
+expect_exit 0 generate ellipsoid "$tmp/ellipsoid.ply" --subdivisions 3 --axes 1.5 1 1
+expect_ply_with_exact_h "$tmp/ellipsoid.ply"
+expect_exit 0 generate torus "$tmp/torus.ply" --major 1 --minor 0.25 --n 48
+expect_ply_with_exact_h "$tmp/torus.ply"
+head -c 400 "$tmp/torus.ply" | grep -a -q "element vertex 576" || fail "torus: expected 48 x 12 vertices"
+expect_exit 0 generate torus-irregular "$tmp/torus_irr.ply" --vertices 800 --seed 3
+expect_ply_with_exact_h "$tmp/torus_irr.ply"
+expect_exit 0 generate heightfield "$tmp/hf.ply" --n 21 --amplitude 0.5
+expect_ply_with_exact_h "$tmp/hf.ply"
+expect_exit 0 generate heightfield-irregular "$tmp/hf_irr.ply" --vertices 500 --seed 2
+expect_ply_with_exact_h "$tmp/hf_irr.ply"
+expect_exit 0 generate plane "$tmp/plane.ply" --n 9 --spacing 0.5
+expect_ply_with_exact_h "$tmp/plane.ply"
+expect_exit 0 generate sphere "$tmp/sphere.obj" --subdivisions 1
+[ -s "$tmp/sphere.obj" ] || fail "sphere.obj missing"
+
+# --- generate: usage errors (exit 2) and unwritable output (exit 3) -------
+expect_exit 2 generate cube "$tmp/cube.ply"
+expect_exit 2 generate sphere "$tmp/bad.ply" --subdivisions 12
+expect_exit 2 generate sphere "$tmp/bad.ply" --noise 0.1
+expect_exit 2 generate torus "$tmp/bad.ply" --major 0.2 --minor 0.5
+expect_exit 2 generate ellipsoid "$tmp/bad.ply" --axes 1 0 1
+expect_exit 2 generate plane "$tmp/bad.ply" --n 1
+expect_exit 2 generate sphere
+expect_exit 3 generate sphere "$tmp/no/such/dir/s.ply"
+[ ! -e "$tmp/bad.ply" ] || fail "a rejected generate wrote a file"
+
+# --- smooth: every method with both update schemes ------------------------
+for method in laplacian taubin bilaplacian mcf modified-mcf; do
+    for update in post pre; do
+        out="$tmp/smooth_${method}_${update}.ply"
+        expect_exit 0 smooth "$tmp/noisy.ply" "$out" --method "$method" --update "$update" --iterations 5
+        [ -s "$out" ] || fail "smooth $method $update: no output"
+    done
+done
+expect_exit 0 smooth "$tmp/hf.ply" "$tmp/hf_smooth.off" --method taubin --lambda 0.6 --mu -0.65 --iterations 3
+[ -s "$tmp/hf_smooth.off" ] || fail "smooth to .off: no output"
+expect_exit 0 smooth "$tmp/torus_irr.ply" "$tmp/t_mcf.ply" --method mcf --step 0.05 --iterations 3
+expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/bilap.ply" --method bilaplacian --damping 0.5 --iterations 2
+expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/zero.ply" --iterations 0
+if cmp -s "$tmp/noisy.ply" "$tmp/smooth_laplacian_post.ply"; then fail "smooth changed nothing"; fi
+
+# --- smooth: usage errors (exit 2), missing input (exit 3) ----------------
+expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method gauss
+expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --update sideways
+expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --iterations -1
+expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method taubin --mu -0.1
+expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method mcf --step 0
+expect_exit 2 smooth "$tmp/noisy.ply"
+expect_exit 3 smooth "$tmp/does_not_exist.ply" "$tmp/bad.ply"
+[ ! -e "$tmp/bad.ply" ] || fail "a rejected smooth wrote a file"
+
+echo "cli_generate_smooth_test: all checks passed"
