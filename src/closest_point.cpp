@@ -1,1 +1,446 @@
 #include "meshdiff/closest_point.h"
+
+#include "meshdiff/error.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace meshdiff {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr std::uint32_t kNoFace = std::numeric_limits<std::uint32_t>::max();
+// sin^2 of the angle at corner 0 below which a triangle is treated as the
+// union of its edges (see the header).
+constexpr double kDegenerateSin2 = 1e-16;
+
+bool is_degenerate(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    const Vec3 ab = b - a;
+    const Vec3 ac = c - a;
+    return !(ab.cross(ac).squaredNorm() > kDegenerateSin2 * ab.squaredNorm() * ac.squaredNorm());
+}
+
+Vec3 segment_point(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+    const Vec3 ab = b - a;
+    const double len2 = ab.squaredNorm();
+    if (!(len2 > 0.0)) return a;
+    const double t = ab.dot(p - a) / len2;
+    if (t <= 0.0) return a;
+    if (t >= 1.0) return b;
+    return a + t * ab;
+}
+
+// Closest point of the union of the three edges (exact for a collinear or
+// point-like triangle). Ties: the first edge in the order ab, bc, ca.
+Vec3 degenerate_triangle_point(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    Vec3 best = segment_point(p, a, b);
+    double best_d2 = (p - best).squaredNorm();
+    for (const auto& [u, v] : {std::pair<const Vec3*, const Vec3*>{&b, &c}, {&c, &a}}) {
+        const Vec3 q = segment_point(p, *u, *v);
+        const double d2 = (p - q).squaredNorm();
+        if (d2 < best_d2) {
+            best_d2 = d2;
+            best = q;
+        }
+    }
+    return best;
+}
+
+// Ericson, Real-Time Collision Detection, 5.1.5, for a non-degenerate
+// triangle; the face region projects onto the plane (stable for thin
+// triangles, unlike the barycentric combination).
+Vec3 triangle_point(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    const Vec3 ab = b - a;
+    const Vec3 ac = c - a;
+    const Vec3 ap = p - a;
+    const double d1 = ab.dot(ap);
+    const double d2 = ac.dot(ap);
+    if (d1 <= 0.0 && d2 <= 0.0) return a;
+
+    const Vec3 bp = p - b;
+    const double d3 = ab.dot(bp);
+    const double d4 = ac.dot(bp);
+    if (d3 >= 0.0 && d4 <= d3) return b;
+
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
+
+    const Vec3 cp = p - c;
+    const double d5 = ab.dot(cp);
+    const double d6 = ac.dot(cp);
+    if (d6 >= 0.0 && d5 <= d6) return c;
+
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
+
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+
+    const Vec3 n = ab.cross(ac);
+    return p - (n.dot(ap) / n.squaredNorm()) * n;
+}
+
+struct Tri
+{
+    Vec3 a, b, c;
+    std::uint32_t face;
+    bool degenerate;
+};
+
+inline Vec3 tri_point(const Vec3& p, const Tri& t)
+{
+    return t.degenerate ? degenerate_triangle_point(p, t.a, t.b, t.c) : triangle_point(p, t.a, t.b, t.c);
+}
+
+struct Node
+{
+    std::array<double, 3> lo, hi;
+    std::uint32_t first;  // leaf: first triangle; inner: left child (right = first + 1)
+    std::uint32_t count;  // leaf: number of triangles (> 0); inner: 0
+};
+
+inline double box_distance2(const Node& n, const Vec3& p)
+{
+    const double ex = std::max(std::max(n.lo[0] - p.x(), p.x() - n.hi[0]), 0.0);
+    const double ey = std::max(std::max(n.lo[1] - p.y(), p.y() - n.hi[1]), 0.0);
+    const double ez = std::max(std::max(n.lo[2] - p.z(), p.z() - n.hi[2]), 0.0);
+    return ex * ex + ey * ey + ez * ez;
+}
+
+struct Box
+{
+    Vec3 lo = Vec3::Constant(kInf);
+    Vec3 hi = Vec3::Constant(-kInf);
+    void grow(const Vec3& p)
+    {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    void grow(const Box& b)
+    {
+        lo = lo.cwiseMin(b.lo);
+        hi = hi.cwiseMax(b.hi);
+    }
+    double half_area() const
+    {
+        if (!(hi.x() >= lo.x())) return 0.0;
+        const Vec3 d = hi - lo;
+        return d.x() * d.y() + d.y() * d.z() + d.z() * d.x();
+    }
+};
+
+constexpr std::uint32_t kLeafSize = 4;
+constexpr int kBins = 16;
+constexpr std::uint32_t kMaxSahDepth = 48;
+constexpr std::size_t kBlock = 2048;  // queries per parallel block (fixed: results do not depend on threads)
+
+}  // namespace
+
+ClosestPoint closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+    ClosestPoint r;
+    r.point = segment_point(p, a, b);
+    r.distance = (p - r.point).norm();
+    return r;
+}
+
+ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    ClosestPoint r;
+    r.point = is_degenerate(a, b, c) ? degenerate_triangle_point(p, a, b, c) : triangle_point(p, a, b, c);
+    r.distance = (p - r.point).norm();
+    return r;
+}
+
+ClosestPoint closest_point_brute_force(const Mesh& mesh, const Vec3& p)
+{
+    validate(mesh, "closest_point_brute_force");
+    double best_d2 = kInf;
+    ClosestPoint best;
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+        const Face& t = mesh.faces[f];
+        const Vec3& a = mesh.points[std::size_t(t[0])];
+        const Vec3& b = mesh.points[std::size_t(t[1])];
+        const Vec3& c = mesh.points[std::size_t(t[2])];
+        const Vec3 q = is_degenerate(a, b, c) ? degenerate_triangle_point(p, a, b, c) : triangle_point(p, a, b, c);
+        const double d2 = (p - q).squaredNorm();
+        if (d2 < best_d2) {
+            best_d2 = d2;
+            best.point = q;
+            best.face = std::uint32_t(f);
+        }
+    }
+    best.distance = std::sqrt(best_d2);
+    return best;
+}
+
+struct ClosestPointIndex::Impl
+{
+    std::vector<Tri> tris;  // in leaf order
+    std::vector<Node> nodes;
+
+    void build(const Mesh& mesh);
+    // Lexicographic minimum of (squared distance, face) over all triangles;
+    // `hint` (a position in `tris`, or kNoFace) only seeds the bound.
+    ClosestPoint query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const;
+};
+
+void ClosestPointIndex::Impl::build(const Mesh& mesh)
+{
+    const std::size_t n = mesh.n_faces();
+    tris.resize(n);
+    std::vector<Box> boxes(n);
+    std::vector<Vec3> centroid(n);
+    for (std::size_t f = 0; f < n; ++f) {
+        const Face& t = mesh.faces[f];
+        Tri& tri = tris[f];
+        tri.a = mesh.points[std::size_t(t[0])];
+        tri.b = mesh.points[std::size_t(t[1])];
+        tri.c = mesh.points[std::size_t(t[2])];
+        tri.face = std::uint32_t(f);
+        tri.degenerate = is_degenerate(tri.a, tri.b, tri.c);
+
+        boxes[f].grow(tri.a);
+        boxes[f].grow(tri.b);
+        boxes[f].grow(tri.c);
+        centroid[f] = (tri.a + tri.b + tri.c) / 3.0;
+    }
+    std::vector<std::uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+
+    nodes.clear();
+    nodes.reserve(2 * (n / kLeafSize + 1));
+    nodes.push_back({});
+    struct Task
+    {
+        std::uint32_t node, begin, end, depth;
+    };
+    std::vector<Task> stack{{0, 0, std::uint32_t(n), 0}};
+    while (!stack.empty()) {
+        const Task task = stack.back();
+        stack.pop_back();
+        Box box, cbox;
+        for (std::uint32_t i = task.begin; i < task.end; ++i) {
+            box.grow(boxes[order[i]]);
+            cbox.grow(centroid[order[i]]);
+        }
+        Node& node = nodes[task.node];
+        for (int k = 0; k < 3; ++k) {
+            node.lo[std::size_t(k)] = box.lo[k];
+            node.hi[std::size_t(k)] = box.hi[k];
+        }
+        const std::uint32_t count = task.end - task.begin;
+        if (count <= kLeafSize) {
+            node.first = task.begin;
+            node.count = count;
+            continue;
+        }
+        // Binned SAH along the longest centroid axis; median split if the
+        // centroids coincide or the SAH split is one-sided.
+        int axis = 0;
+        const Vec3 ext = cbox.hi - cbox.lo;
+        if (ext.y() > ext[axis]) axis = 1;
+        if (ext.z() > ext[axis]) axis = 2;
+        std::uint32_t mid = task.begin + count / 2;
+        if (ext[axis] > 0.0) {
+            std::array<Box, kBins> bin_box;
+            std::array<std::uint32_t, kBins> bin_count{};
+            const double scale = kBins / ext[axis];
+            auto bin_of = [&](std::uint32_t f) {
+                return std::min(kBins - 1, int((centroid[f][axis] - cbox.lo[axis]) * scale));
+            };
+            for (std::uint32_t i = task.begin; i < task.end; ++i) {
+                const int b = bin_of(order[i]);
+                bin_box[std::size_t(b)].grow(boxes[order[i]]);
+                ++bin_count[std::size_t(b)];
+            }
+            std::array<double, kBins> right_cost{};
+            Box acc;
+            std::uint32_t acc_n = 0;
+            for (int b = kBins - 1; b > 0; --b) {
+                acc.grow(bin_box[std::size_t(b)]);
+                acc_n += bin_count[std::size_t(b)];
+                right_cost[std::size_t(b)] = acc.half_area() * acc_n;
+            }
+            acc = Box();
+            acc_n = 0;
+            double best = kInf;
+            int best_split = -1;
+            for (int b = 0; b < kBins - 1; ++b) {
+                acc.grow(bin_box[std::size_t(b)]);
+                acc_n += bin_count[std::size_t(b)];
+                if (acc_n == 0 || acc_n == count) continue;
+                const double cost = acc.half_area() * acc_n + right_cost[std::size_t(b + 1)];
+                if (cost < best) {
+                    best = cost;
+                    best_split = b;
+                }
+            }
+            // Deep trees (one-sided SAH splits) fall back to median splits, which
+            // bound the depth, and so the traversal stack, by 48 + log2(n).
+            if (best_split >= 0 && task.depth < kMaxSahDepth) {
+                auto it = std::partition(order.begin() + task.begin, order.begin() + task.end,
+                                         [&](std::uint32_t f) { return bin_of(f) <= best_split; });
+                mid = std::uint32_t(it - order.begin());
+            } else {
+                std::nth_element(order.begin() + task.begin, order.begin() + mid, order.begin() + task.end,
+                                 [&](std::uint32_t x, std::uint32_t y) {
+                                     return centroid[x][axis] < centroid[y][axis] ||
+                                            (centroid[x][axis] == centroid[y][axis] && x < y);
+                                 });
+            }
+        }
+        const auto left = std::uint32_t(nodes.size());
+        nodes.push_back({});
+        nodes.push_back({});
+        nodes[task.node].first = left;
+        nodes[task.node].count = 0;
+        stack.push_back({left + 1, mid, task.end, task.depth + 1});
+        stack.push_back({left, task.begin, mid, task.depth + 1});
+    }
+    std::vector<Tri> ordered(n);
+    for (std::size_t i = 0; i < n; ++i) ordered[i] = tris[order[i]];
+    tris.swap(ordered);
+}
+
+ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const
+{
+    double best_d2 = kInf;
+    std::uint32_t best_face = kNoFace;
+    std::uint32_t best_pos = kNoFace;
+    Vec3 best_point = Vec3::Zero();
+    auto consider = [&](std::uint32_t pos) {
+        const Tri& t = tris[pos];
+        const Vec3 q = tri_point(p, t);
+        const double d2 = (p - q).squaredNorm();
+        if (d2 < best_d2 || (d2 == best_d2 && t.face < best_face)) {
+            best_d2 = d2;
+            best_face = t.face;
+            best_pos = pos;
+            best_point = q;
+        }
+    };
+    if (hint != kNoFace) consider(hint);
+
+    // A node is skipped only if its box is farther than the best so far by a
+    // margin above rounding, so that ties and near-ties are still examined.
+    constexpr double keep = 1.0 - 1e-12;
+    struct Entry
+    {
+        std::uint32_t node;
+        double d2;
+    };
+    std::array<Entry, 128> stack;
+    std::size_t top = 0;
+    stack[top++] = {0, box_distance2(nodes[0], p)};
+    while (top > 0) {
+        const Entry e = stack[--top];
+        if (e.d2 * keep > best_d2) continue;
+        const Node& node = nodes[e.node];
+        if (node.count > 0) {
+            for (std::uint32_t i = 0; i < node.count; ++i) consider(node.first + i);
+            continue;
+        }
+        const double dl = box_distance2(nodes[node.first], p);
+        const double dr = box_distance2(nodes[node.first + 1], p);
+        const Entry l{node.first, dl};
+        const Entry r{node.first + 1, dr};
+        // Push the farther child first so that the nearer one is visited first.
+        const Entry& near = dl <= dr ? l : r;
+        const Entry& far = dl <= dr ? r : l;
+        if (far.d2 * keep <= best_d2) stack[top++] = far;
+        if (near.d2 * keep <= best_d2) stack[top++] = near;
+    }
+    if (hit) *hit = best_pos;
+    ClosestPoint r;
+    r.distance = std::sqrt(best_d2);
+    r.point = best_point;
+    r.face = best_face;
+    return r;
+}
+
+ClosestPointIndex::ClosestPointIndex(const Mesh& mesh) : impl_(std::make_unique<Impl>())
+{
+    validate(mesh, "ClosestPointIndex");
+    impl_->build(mesh);
+}
+
+ClosestPointIndex::~ClosestPointIndex() = default;
+ClosestPointIndex::ClosestPointIndex(ClosestPointIndex&&) noexcept = default;
+ClosestPointIndex& ClosestPointIndex::operator=(ClosestPointIndex&&) noexcept = default;
+
+ClosestPoint ClosestPointIndex::closest_point(const Vec3& p) const
+{
+    return impl_->query(p, kNoFace, nullptr);
+}
+
+namespace {
+// Runs f(i, hint) -> hit over fixed blocks of queries in parallel; within a
+// block, each query is seeded with the previous query's triangle.
+template <class F>
+void for_blocks(std::size_t n, F&& f)
+{
+    const auto n_blocks = std::int64_t((n + kBlock - 1) / kBlock);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::int64_t b = 0; b < n_blocks; ++b) {
+        std::uint32_t hint = kNoFace;
+        const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
+        for (std::size_t i = std::size_t(b) * kBlock; i < end; ++i) hint = f(i, hint);
+    }
+}
+}  // namespace
+
+std::vector<ClosestPoint> ClosestPointIndex::closest_points(const std::vector<Vec3>& queries) const
+{
+    std::vector<ClosestPoint> out(queries.size());
+    const Impl& impl = *impl_;
+    for_blocks(queries.size(), [&](std::size_t i, std::uint32_t hint) {
+        std::uint32_t hit = kNoFace;
+        out[i] = impl.query(queries[i], hint, &hit);
+        return hit;
+    });
+    return out;
+}
+
+std::vector<double> ClosestPointIndex::distances(const std::vector<Vec3>& queries) const
+{
+    std::vector<double> out(queries.size());
+    const Impl& impl = *impl_;
+    for_blocks(queries.size(), [&](std::size_t i, std::uint32_t hint) {
+        std::uint32_t hit = kNoFace;
+        out[i] = impl.query(queries[i], hint, &hit).distance;
+        return hit;
+    });
+    return out;
+}
+
+std::size_t ClosestPointIndex::n_faces() const
+{
+    return impl_->tris.size();
+}
+
+BoundingBox ClosestPointIndex::bounds() const
+{
+    BoundingBox b;
+    const Node& root = impl_->nodes[0];
+    b.min = Vec3(root.lo[0], root.lo[1], root.lo[2]);
+    b.max = Vec3(root.hi[0], root.hi[1], root.hi[2]);
+    return b;
+}
+
+std::size_t ClosestPointIndex::memory_bytes() const
+{
+    return impl_->tris.capacity() * sizeof(Tri) + impl_->nodes.capacity() * sizeof(Node);
+}
+
+}  // namespace meshdiff

@@ -1,1 +1,129 @@
 #include "meshdiff/surface_distance.h"
+
+#include "meshdiff/error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace meshdiff {
+
+namespace {
+
+// Neumaier's compensated sum, sequential in index order.
+struct Sum
+{
+    double s = 0.0, c = 0.0;
+    void add(double x)
+    {
+        const double t = s + x;
+        c += std::abs(s) >= std::abs(x) ? (s - t) + x : (x - t) + s;
+        s = t;
+    }
+    double value() const { return s + c; }
+};
+
+// The rank-th smallest (1-based) of v, by nearest rank for percent q.
+double nearest_rank(std::vector<double>& v, unsigned q)
+{
+    const std::size_t n = v.size();
+    std::size_t rank = (std::size_t(q) * n + 99) / 100;  // ceil(q n / 100)
+    rank = std::clamp<std::size_t>(rank, 1, n);
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(rank - 1), v.end());
+    return v[rank - 1];
+}
+
+}  // namespace
+
+DistanceStats relative_to(const DistanceStats& stats, double diagonal)
+{
+    if (!(std::isfinite(diagonal) && diagonal > 0.0))
+        throw InvalidArgumentError(fmt::format("relative_to: diagonal must be finite and positive, got {}", diagonal));
+    DistanceStats r = stats;
+    for (double* x : {&r.min, &r.max, &r.mean, &r.rms, &r.stddev, &r.p50, &r.p95, &r.p99}) *x /= diagonal;
+    return r;
+}
+
+DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<double>& distances)
+{
+    if (samples.size() != distances.size())
+        throw InvalidArgumentError(
+            fmt::format("distance_stats: {} samples but {} distances", samples.size(), distances.size()));
+    if (distances.empty()) throw InvalidArgumentError("distance_stats: no samples");
+    DistanceStats s;
+    s.n_vertex = samples.n_vertex;
+    s.n_edge = samples.n_edge;
+    s.n_face = samples.n_face;
+    const auto n = double(distances.size());
+    Sum sum, sum2;
+    s.min = distances[0];
+    s.max = distances[0];
+    for (double d : distances) {
+        s.min = std::min(s.min, d);
+        s.max = std::max(s.max, d);
+        sum.add(d);
+        sum2.add(d * d);
+    }
+    s.mean = sum.value() / n;
+    s.rms = std::sqrt(sum2.value() / n);
+    Sum dev;
+    for (double d : distances) dev.add((d - s.mean) * (d - s.mean));
+    s.stddev = std::sqrt(dev.value() / n);
+    std::vector<double> sorted = distances;
+    s.p50 = nearest_rank(sorted, 50);
+    s.p95 = nearest_rank(sorted, 95);
+    s.p99 = nearest_rank(sorted, 99);
+    return s;
+}
+
+DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options)
+{
+    const SurfaceSamples samples = sample_surface(from, options);
+    if (samples.size() == 0)
+        throw InvalidArgumentError("SamplingOptions: the enabled sample kinds give no sample on this mesh");
+    return distance_stats(samples, to.distances(samples.points));
+}
+
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options)
+{
+    validate(options);
+    validate(a, "surface_distance: mesh A");
+    validate(b, "surface_distance: mesh B");
+    SamplingOptions opt = options;
+    if (!opt.samples && !opt.density) opt.samples = 10 * std::max(a.n_faces(), b.n_faces());
+
+    SurfaceDistance r;
+    {
+        const ClosestPointIndex index_b(b);
+        r.forward = one_sided_distance(a, index_b, opt);
+    }
+    {
+        const ClosestPointIndex index_a(a);
+        r.backward = one_sided_distance(b, index_a, opt);
+    }
+    r.hausdorff = std::max(r.forward.max, r.backward.max);
+    r.diagonal = bounding_box(a).diagonal();
+    r.metro_diagonal = metro_diagonal(a, b);
+    return r;
+}
+
+std::vector<double> vertex_distances(const Mesh& from, const ClosestPointIndex& to)
+{
+    return to.distances(from.points);
+}
+
+double metro_diagonal(const Mesh& a, const Mesh& b)
+{
+    const BoundingBox ba = bounding_box(a);
+    const BoundingBox bb = bounding_box(b);
+    BoundingBox u;
+    u.min = ba.min.cwiseMin(bb.min);
+    u.max = ba.max.cwiseMax(bb.max);
+    const double widen = 0.02 * u.diagonal();
+    u.min.array() -= widen;
+    u.max.array() += widen;
+    return u.diagonal();
+}
+
+}  // namespace meshdiff

@@ -1,0 +1,168 @@
+// Benchmark of the Metro-style surface distance (surface_distance.h).
+//
+// Usage:
+//   meshdiff_bench_distance [--runs N] [--samples N] [--threads N]
+//                           [--igea IGEA.ply --igea-decimated DEC.ply]
+//                           [--large] [--large-faces N]
+//                           [--pair A B ...]
+//
+// Each case prints the median wall time of N runs of surface_distance() (both
+// directions, default budget 10 x max #faces unless --samples), the sample
+// counts, the statistics, and the peak resident memory of the process so far
+// (getrusage ru_maxrss; run one case per process for per-case peaks).
+//
+// Cases:
+//   --igea A --igea-decimated B   igea.ply against a 10% decimation made with
+//                                 OpenMesh-commandlineDecimater -M Q -n 0.1 -i igea.ply -o DEC.ply
+//   --large                       a generated torus of about --large-faces faces
+//                                 (default 1,000,000) against a perturbed torus
+//                                 with a different grid of about the same size
+//   --pair A B                    any two mesh files (repeatable)
+#include "meshdiff/closest_point.h"
+#include "meshdiff/io.h"
+#include "meshdiff/surface_distance.h"
+
+#include <fmt/format.h>
+#include <omp.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace {
+
+using meshdiff::Mesh;
+using meshdiff::Vec3;
+
+double peak_rss_mib()
+{
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+// Torus (axis z, centre radius R, tube radius r) on an nu x nv grid, with a
+// radial perturbation of the tube of relative amplitude `wave`.
+Mesh torus(int nu, int nv, double R, double r, double wave)
+{
+    Mesh m;
+    const double pi = std::acos(-1.0);
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            const double u = 2 * pi * i / nu;
+            const double v = 2 * pi * j / nv;
+            const double rr = r * (1.0 + wave * std::sin(7 * u) * std::sin(5 * v));
+            m.points.emplace_back((R + rr * std::cos(v)) * std::cos(u), (R + rr * std::cos(v)) * std::sin(u),
+                                  rr * std::sin(v));
+        }
+    auto id = [&](int i, int j) { return std::int32_t((i % nu) * nv + (j % nv)); };
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) {
+            m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+            m.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+        }
+    return m;
+}
+
+void print_stats(const char* name, const meshdiff::DistanceStats& s, double diag)
+{
+    fmt::print(
+        "  {:8s} samples {} (v {} e {} f {})  min {:.6g} max {:.6g} mean {:.6g} rms {:.6g} p95 {:.6g}"
+        "  [max/diag {:.6g} mean/diag {:.6g} rms/diag {:.6g}]\n",
+        name, s.n_samples(), s.n_vertex, s.n_edge, s.n_face, s.min, s.max, s.mean, s.rms, s.p95, s.max / diag,
+        s.mean / diag, s.rms / diag);
+}
+
+void run_case(const std::string& label, const Mesh& a, const Mesh& b, int runs,
+              const meshdiff::SamplingOptions& options)
+{
+    fmt::print("{}: A {} vertices {} faces, B {} vertices {} faces, threads {}\n", label, a.n_vertices(), a.n_faces(),
+               b.n_vertices(), b.n_faces(), omp_get_max_threads());
+    std::vector<double> times;
+    meshdiff::SurfaceDistance r;
+    for (int k = 0; k < runs; ++k) {
+        const auto t0 = std::chrono::steady_clock::now();
+        r = meshdiff::surface_distance(a, b, options);
+        const auto t1 = std::chrono::steady_clock::now();
+        times.push_back(std::chrono::duration<double>(t1 - t0).count());
+    }
+    std::sort(times.begin(), times.end());
+    print_stats("forward", r.forward, r.diagonal);
+    print_stats("backward", r.backward, r.diagonal);
+    fmt::print("  hausdorff {:.6g} (diag A {:.6g}, metro diag {:.6g})\n", r.hausdorff, r.diagonal, r.metro_diagonal);
+    fmt::print("  time median {:.3f} s (min {:.3f}, max {:.3f}, {} runs)  peak RSS so far {:.1f} MiB\n",
+               times[times.size() / 2], times.front(), times.back(), runs, peak_rss_mib());
+}
+
+[[noreturn]] void usage()
+{
+    fmt::print(stderr,
+               "usage: meshdiff_bench_distance [--runs N] [--samples N] [--threads N] [--igea A --igea-decimated B]"
+               " [--large] [--large-faces N] [--pair A B]...\n");
+    std::exit(2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    int runs = 3;
+    meshdiff::SamplingOptions options;
+    std::string igea, igea_dec;
+    bool large = false;
+    long large_faces = 1000000;
+    std::vector<std::pair<std::string, std::string>> pairs;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto next = [&]() -> std::string {
+            if (i + 1 >= argc) usage();
+            return argv[++i];
+        };
+        if (arg == "--runs")
+            runs = std::max(1, std::atoi(next().c_str()));
+        else if (arg == "--samples")
+            options.samples = std::size_t(std::atoll(next().c_str()));
+        else if (arg == "--threads")
+            omp_set_num_threads(std::max(1, std::atoi(next().c_str())));
+        else if (arg == "--igea")
+            igea = next();
+        else if (arg == "--igea-decimated")
+            igea_dec = next();
+        else if (arg == "--large")
+            large = true;
+        else if (arg == "--large-faces")
+            large_faces = std::atol(next().c_str());
+        else if (arg == "--pair") {
+            std::string a = next();
+            pairs.emplace_back(a, next());
+        } else
+            usage();
+    }
+    if (igea.empty() != igea_dec.empty()) usage();
+    if (igea.empty() && !large && pairs.empty()) usage();
+
+    try {
+        if (!igea.empty())
+            run_case("igea vs decimation", meshdiff::read_mesh(igea).mesh, meshdiff::read_mesh(igea_dec).mesh, runs,
+                     options);
+        for (const auto& [a, b] : pairs)
+            run_case(fmt::format("{} vs {}", a, b), meshdiff::read_mesh(a).mesh, meshdiff::read_mesh(b).mesh, runs,
+                     options);
+        if (large) {
+            // About large_faces faces each: 2 nu nv with nu = 2 nv, and a
+            // 0.8 : 1.25 aspect for the second grid.
+            const int nv = int(std::sqrt(double(large_faces) / 4.0));
+            const Mesh a = torus(2 * nv, nv, 1.0, 0.3, 0.0);
+            const Mesh b = torus(int(1.6 * nv), int(1.25 * nv), 1.0, 0.3, 0.01);
+            run_case("generated tori", a, b, runs, options);
+        }
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "error: {}\n", e.what());
+        return 1;
+    }
+    return 0;
+}
