@@ -85,6 +85,18 @@ expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/bilap.ply" --method bilaplacian --da
 expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/zero.ply" --iterations 0
 if cmp -s "$tmp/noisy.ply" "$tmp/smooth_laplacian_post.ply"; then fail "smooth changed nothing"; fi
 
+# --- smooth: roughness profiles recorded during smoothing -----------------
+expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/prof.ply" --method taubin --iterations 4 --profile-every 2 \
+    --json "$tmp/prof.json"
+[ -s "$tmp/prof.json" ] || fail "smooth --json: no JSON"
+grep -q '"schema": "meshdiff.smoothing/1"' "$tmp/prof.json" || fail "smooth --json: schema missing"
+tr -d ' \n' <"$tmp/prof.json" | grep -q '"iterations":\[0,2,4\]' || fail "smooth --json: iterations not 0,2,4"
+tr -d ' \n' <"$tmp/prof.json" | grep -q '"levels":\[1,5,10,20\]' || fail "smooth --json: default levels"
+expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/prof2.ply" --iterations 3 --json - --levels 1,2
+grep -q '"sigma_global"' "$tmp/stdout" || fail "smooth --json -: no JSON on stdout"
+expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --profile-every 2
+expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --json "$tmp/bad.json" --levels 0
+
 # --- smooth: usage errors (exit 2), missing input (exit 3) ----------------
 expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method gauss
 expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --update sideways

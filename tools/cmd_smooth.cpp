@@ -1,13 +1,19 @@
 #include "commands.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
+#include "meshdiff/roughness.h"
 #include "meshdiff/smoothing.h"
+#include "options.h"
+
+#include <nlohmann/json.hpp>
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace meshdiff::cli {
 
@@ -20,24 +26,78 @@ struct SmoothArgs
     std::string method = "laplacian";
     std::string update = "post";
     SmoothingOptions options;  // numeric fields bound to the options below
-    // TODO(profile): --profile-every K --json FILE. Record the roughness
-    // profile (levels 1, 5, 10, 20 and global) at iteration 0 and every K
-    // iterations through SmoothingOptions::callback, and write
-    // {"schema": "meshdiff.smoothing/1", "method", "update", "iterations": [...],
-    //  "levels": [...], "sigma": [[...] per recorded iteration],
-    //  "sigma_global": [...]}. Waits for the committed roughness_profile API.
+    int profile_every = 0;     // 0: no profile recording
+    std::string json;          // profile recording target ("-" for stdout)
+    ProfileCliOptions profile;
+    int threads = 0;
 };
+
+// Roughness profiles recorded during smoothing, as the JSON document
+// meshdiff.smoothing/1.
+struct Recording
+{
+    std::vector<int> iterations;
+    std::vector<std::vector<double>> sigma;  // per recorded iteration, per level
+    std::vector<double> sigma_global;
+    std::vector<std::size_t> undefined;  // vertices with undefined H
+};
+
+nlohmann::json recording_json(const SmoothArgs& a, const SmoothingOptions& o, const ProfileOptions& p,
+                              const Recording& r)
+{
+    nlohmann::json j;
+    j["schema"] = "meshdiff.smoothing/1";
+    j["input"] = a.in;
+    j["output"] = a.out;
+    j["method"] = smoothing_method_name(o.method);
+    j["update"] = smoothing_update_name(o.update);
+    j["parameters"] = {{"iterations", o.iterations}, {"lambda", o.lambda},  {"mu", o.mu}, {"step", o.step},
+                       {"damping", o.damping},       {"epsilon", o.epsilon}};
+    j["curvature"] = to_string(p.curvature.method);
+    j["profile_every"] = a.profile_every;
+    j["iterations"] = r.iterations;
+    j["levels"] = p.levels;
+    j["sigma"] = r.sigma;
+    j["sigma_global"] = r.sigma_global;
+    j["curvature_undefined"] = r.undefined;
+    return j;
+}
 
 int run_smooth(const SmoothArgs& a)
 {
     SmoothingOptions options = a.options;
     options.method = parse_smoothing_method(a.method);
     options.update = parse_smoothing_update(a.update);
+    if (a.profile_every < 0)
+        throw InvalidArgumentError(fmt::format("--profile-every must be >= 1 (got {})", a.profile_every));
+    if (a.profile_every > 0 && a.json.empty()) throw InvalidArgumentError("--profile-every needs --json FILE");
+    const bool record = !a.json.empty();
+    ProfileOptions profile_options;
+    Recording recording;
+    if (record) {
+        set_threads(a.threads);
+        profile_options = to_profile_options(a.profile, false);
+        // Every K iterations, or only at the start and the end.
+        const int every = a.profile_every > 0 ? a.profile_every : std::max(1, options.iterations);
+        const int last = options.iterations;
+        options.callback = [&, every, last](int k, const Mesh& mesh) {
+            if (k % every != 0 && k != last) return;
+            const RoughnessProfile p = roughness_profile(mesh, profile_options);
+            recording.iterations.push_back(k);
+            std::vector<double> sigma;
+            for (const auto& l : p.levels) sigma.push_back(l.sigma);
+            recording.sigma.push_back(std::move(sigma));
+            if (p.has_global) recording.sigma_global.push_back(p.global.sigma);
+            recording.undefined.push_back(p.curvature_undefined);
+        };
+    }
     LoadedMesh loaded = read_mesh(a.in);
     smooth(loaded.mesh, options);
     write_mesh(a.out, loaded.mesh);
-    std::cout << fmt::format("{}: {} {}-updating, {} iterations, {} vertices\n", a.out, a.method, a.update,
-                             options.iterations, loaded.mesh.n_vertices());
+    if (record) write_json(a.json, recording_json(a, options, profile_options, recording));
+    if (a.json != "-")
+        std::cout << fmt::format("{}: {} {}-updating, {} iterations, {} vertices\n", a.out, a.method, a.update,
+                                 options.iterations, loaded.mesh.n_vertices());
     return 0;
 }
 
@@ -68,6 +128,14 @@ void add_smooth_command(CLI::App& app, Action& action)
                     "modified-mcf: vertices whose umbrella is within acos(eps) of "
                     "perpendicular to the curvature normal do not move")
         ->capture_default_str();
+    sub->add_option("--profile-every", args->profile_every,
+                    "record the roughness profile at iteration 0 and every K iterations (and the last); needs --json");
+    sub->add_option("--json", args->json,
+                    "write the recorded profiles (schema meshdiff.smoothing/1) to FILE, or '-' for stdout; "
+                    "without --profile-every only the first and last iterations are recorded");
+    args->profile.levels = "1,5,10,20";
+    add_profile_options(sub, args->profile);
+    sub->add_option("--threads", args->threads, "worker threads of the profile (0: all cores)")->capture_default_str();
     sub->callback([args, &action] { action = [args] { return run_smooth(*args); }; });
 }
 
