@@ -123,13 +123,11 @@ SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options)
     // Edges: density sqrt(face density) per unit length, with carry-over.
     if (options.edges) {
         const auto edges = unique_edges(mesh);
-        if (options.faces && area > 0.0) {
-            s.edge_density = std::sqrt(remaining / area);
-        } else {
-            double length = 0.0;
-            for (const Edge& e : edges) length += (mesh.points[e.b] - mesh.points[e.a]).norm();
-            s.edge_density = length > 0.0 ? remaining / length : 0.0;
-        }
+        double length = 0.0;
+        for (const Edge& e : edges) length += (mesh.points[e.b] - mesh.points[e.a]).norm();
+        // Never more than the remaining budget (Metro would overshoot here).
+        const double cap = length > 0.0 ? remaining / length : 0.0;
+        s.edge_density = options.faces && area > 0.0 ? std::min(std::sqrt(remaining / area), cap) : cap;
         double carry = 0.0;
         for (const Edge& e : edges) {
             const Vec3& p0 = mesh.points[e.a];

@@ -1,3 +1,326 @@
-#include <gtest/gtest.h>
-
 #include "meshdiff/surface_distance.h"
+
+#include "meshdiff/error.h"
+#include "meshdiff/io.h"
+#include "meshdiff/shapes.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+using namespace meshdiff;
+
+namespace {
+
+const std::string kData = MESHDIFF_TEST_DATA_DIR;
+
+Mesh transformed(Mesh m, double scale, const Eigen::Matrix3d& rotation, const Vec3& shift)
+{
+    for (Vec3& p : m.points) p = scale * (rotation * p) + shift;
+    return m;
+}
+
+bool same_bits(double x, double y)
+{
+    return std::memcmp(&x, &y, sizeof(double)) == 0;
+}
+
+void expect_identical(const DistanceStats& x, const DistanceStats& y)
+{
+    EXPECT_TRUE(same_bits(x.min, y.min));
+    EXPECT_TRUE(same_bits(x.max, y.max));
+    EXPECT_TRUE(same_bits(x.mean, y.mean));
+    EXPECT_TRUE(same_bits(x.rms, y.rms));
+    EXPECT_TRUE(same_bits(x.stddev, y.stddev));
+    EXPECT_TRUE(same_bits(x.p50, y.p50));
+    EXPECT_TRUE(same_bits(x.p95, y.p95));
+    EXPECT_TRUE(same_bits(x.p99, y.p99));
+    EXPECT_EQ(x.n_vertex, y.n_vertex);
+    EXPECT_EQ(x.n_edge, y.n_edge);
+    EXPECT_EQ(x.n_face, y.n_face);
+}
+
+// Smallest distance from the origin to the surface of a convex polyhedron
+// around it: the smallest distance to a face plane.
+double inner_radius(const Mesh& m)
+{
+    double r = INFINITY;
+    for (std::size_t f = 0; f < m.n_faces(); ++f) {
+        const Vec3 n = face_cross(m, f).normalized();
+        r = std::min(r, std::abs(n.dot(m.points[std::size_t(m.faces[f][0])])));
+    }
+    return r;
+}
+
+}  // namespace
+
+TEST(SurfaceDistance, PlaneAgainstOffsetCopyGivesTheOffset)
+{
+    // Two grids of the same square at different resolutions, 0.125 apart.
+    const double d = 0.125;
+    const Mesh a = plane_grid(11, 11, 0.1).mesh;
+    Mesh b = plane_grid(8, 8, 1.0 / 7.0).mesh;
+    for (Vec3& p : b.points) p.z() += d;
+    const SurfaceDistance r = surface_distance(a, b);
+    for (const DistanceStats* s : {&r.forward, &r.backward}) {
+        EXPECT_NEAR(s->min, d, 1e-14);
+        EXPECT_NEAR(s->max, d, 1e-14);
+        EXPECT_NEAR(s->mean, d, 1e-14);
+        EXPECT_NEAR(s->rms, d, 1e-14);
+        EXPECT_NEAR(s->stddev, 0.0, 1e-14);
+        EXPECT_NEAR(s->p99, d, 1e-14);
+    }
+    EXPECT_NEAR(r.hausdorff, d, 1e-14);
+}
+
+TEST(SurfaceDistance, ConcentricSpheresGiveTheRadiusDifferenceWithinTheSagitta)
+{
+    const double r1 = 1.0, r2 = 1.5;
+    const Mesh inner = icosphere(3, r1).mesh;
+    const Mesh outer = icosphere(2, r2).mesh;
+    const double sag1 = r1 - inner_radius(inner);
+    const double sag2 = r2 - inner_radius(outer);
+    ASSERT_GT(sag1, 0.0);
+    const SurfaceDistance r = surface_distance(inner, outer);
+    // A point of the inner mesh has radius in [r1 - sag1, r1]; the outer
+    // surface lies between radii r2 - sag2 and r2 around it.
+    for (const DistanceStats* s : {&r.forward, &r.backward}) {
+        EXPECT_GE(s->min, r2 - r1 - sag2 - 1e-12);
+        EXPECT_LE(s->max, r2 - r1 + sag1 + 1e-12);
+        EXPECT_NEAR(s->mean, r2 - r1, std::max(sag1, sag2));
+    }
+    // The outer vertices are on the sphere of radius r2, so the largest
+    // backward distance is at least r2 - r1.
+    EXPECT_GE(r.backward.max, r2 - r1 - 1e-12);
+}
+
+TEST(SurfaceDistance, MeshAgainstItselfIsZeroAtVerticesAndRoundingElsewhere)
+{
+    const Mesh m = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    SamplingOptions vertices_only;
+    vertices_only.edges = vertices_only.faces = false;
+    const SurfaceDistance v = surface_distance(m, m, vertices_only);
+    EXPECT_EQ(v.forward.max, 0.0);
+    EXPECT_EQ(v.backward.max, 0.0);
+    EXPECT_EQ(v.hausdorff, 0.0);
+
+    const SurfaceDistance all = surface_distance(m, m);
+    double coordinate_scale = 0.0;
+    for (const Vec3& p : m.points) coordinate_scale = std::max(coordinate_scale, p.cwiseAbs().maxCoeff());
+    EXPECT_LE(all.hausdorff, 1e-15 * coordinate_scale);
+    EXPECT_EQ(all.forward.min, 0.0);
+}
+
+TEST(SurfaceDistance, SymmetricIsTheMaxOfBothDirections)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    const SurfaceDistance r = surface_distance(a, b);
+    EXPECT_NE(r.forward.max, r.backward.max);  // not symmetric per direction
+    EXPECT_EQ(r.hausdorff, std::max(r.forward.max, r.backward.max));
+    EXPECT_GT(r.hausdorff, 0.0);
+}
+
+TEST(SurfaceDistance, SwappingTheMeshesSwapsTheDirections)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    const SurfaceDistance ab = surface_distance(a, b);
+    const SurfaceDistance ba = surface_distance(b, a);
+    expect_identical(ab.forward, ba.backward);
+    expect_identical(ab.backward, ba.forward);
+    EXPECT_EQ(ab.diagonal, bounding_box(a).diagonal());
+    EXPECT_EQ(ba.diagonal, bounding_box(b).diagonal());
+}
+
+TEST(SurfaceDistance, DefaultBudgetIsTenTimesTheLargerFaceCount)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    const SurfaceDistance r = surface_distance(a, b);
+    const std::size_t target = 10 * std::max(a.n_faces(), b.n_faces());
+    for (const DistanceStats* s : {&r.forward, &r.backward}) {
+        EXPECT_LE(s->n_samples(), target);
+        EXPECT_GE(s->n_samples() + 30, target);
+    }
+    EXPECT_EQ(r.forward.n_vertex, a.n_vertices());
+    EXPECT_EQ(r.backward.n_vertex, b.n_vertices());
+
+    SamplingOptions o;
+    o.samples = 12345;
+    const SurfaceDistance r2 = surface_distance(a, b, o);
+    EXPECT_LE(r2.forward.n_samples(), 12345u);
+    EXPECT_GE(r2.forward.n_samples() + 30, 12345u);
+    EXPECT_GE(r2.backward.n_samples() + 30, 12345u);
+}
+
+TEST(SurfaceDistance, ResultsAreIdenticalForOneAndTwoThreads)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const SurfaceDistance one = surface_distance(a, b);
+    omp_set_num_threads(2);
+    const SurfaceDistance two = surface_distance(a, b);
+    omp_set_num_threads(saved);
+    expect_identical(one.forward, two.forward);
+    expect_identical(one.backward, two.backward);
+    EXPECT_TRUE(same_bits(one.hausdorff, two.hausdorff));
+}
+
+TEST(SurfaceDistance, ScalingBothMeshesScalesDistances)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    const SurfaceDistance r = surface_distance(a, b);
+    const Eigen::Matrix3d id = Eigen::Matrix3d::Identity();
+    // A power of two scales every floating-point operation exactly.
+    const SurfaceDistance r4 =
+        surface_distance(transformed(a, 4.0, id, Vec3::Zero()), transformed(b, 4.0, id, Vec3::Zero()));
+    EXPECT_EQ(r4.forward.max, 4.0 * r.forward.max);
+    EXPECT_EQ(r4.backward.mean, 4.0 * r.backward.mean);
+    EXPECT_EQ(r4.hausdorff, 4.0 * r.hausdorff);
+    // Any other factor: equal up to rounding, relative values unchanged.
+    const double s = 3.7;
+    const SurfaceDistance rs =
+        surface_distance(transformed(a, s, id, Vec3::Zero()), transformed(b, s, id, Vec3::Zero()));
+    EXPECT_NEAR(rs.hausdorff, s * r.hausdorff, 1e-9 * s * r.hausdorff);
+    EXPECT_NEAR(rs.forward.mean, s * r.forward.mean, 1e-6 * s * r.forward.mean);
+    EXPECT_NEAR(rs.backward.rms, s * r.backward.rms, 1e-6 * s * r.backward.rms);
+    EXPECT_NEAR(rs.relative_hausdorff(), r.relative_hausdorff(), 1e-9 * r.relative_hausdorff());
+    EXPECT_NEAR(relative_to(rs.forward, rs.diagonal).rms, relative_to(r.forward, r.diagonal).rms,
+                1e-6 * relative_to(r.forward, r.diagonal).rms);
+    EXPECT_NEAR(rs.metro_diagonal, s * r.metro_diagonal, 1e-12 * rs.metro_diagonal);
+}
+
+TEST(SurfaceDistance, RigidMotionChangesNothing)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    const Eigen::Matrix3d rot = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+    const Vec3 shift(0.3, -1.2, 2.0);
+    const Mesh ma = transformed(a, 1.0, rot, shift);
+    const Mesh mb = transformed(b, 1.0, rot, shift);
+    // Vertex samples move with the meshes: equal up to rounding.
+    SamplingOptions vertices_only;
+    vertices_only.edges = vertices_only.faces = false;
+    const SurfaceDistance v = surface_distance(a, b, vertices_only);
+    const SurfaceDistance mv = surface_distance(ma, mb, vertices_only);
+    EXPECT_NEAR(mv.forward.max, v.forward.max, 1e-9 * v.forward.max);
+    EXPECT_NEAR(mv.forward.mean, v.forward.mean, 1e-9 * v.forward.mean);
+    EXPECT_NEAR(mv.backward.rms, v.backward.rms, 1e-9 * v.backward.rms);
+    // With edge and face samples, rounding of the areas can move a few samples
+    // between faces (carry-over), so the statistics agree to sampling noise.
+    const SurfaceDistance r = surface_distance(a, b);
+    const SurfaceDistance m = surface_distance(ma, mb);
+    EXPECT_NEAR(m.hausdorff, r.hausdorff, 1e-3 * r.hausdorff);
+    EXPECT_NEAR(m.forward.mean, r.forward.mean, 1e-3 * r.forward.mean);
+    EXPECT_NEAR(m.backward.rms, r.backward.rms, 1e-3 * r.backward.rms);
+}
+
+TEST(SurfaceDistance, DegenerateOpenAndNonManifoldMeshesGiveFiniteNumbers)
+{
+    const Mesh teapot = read_mesh(kData + "/teapot.obj").mesh;
+    Mesh bunny = read_mesh(kData + "/bunny_res3.ply").mesh;
+    // Add degenerate faces: a collinear one and a point-like one.
+    const auto n = std::int32_t(bunny.points.size());
+    bunny.points.push_back(bunny.points[0]);
+    bunny.points.push_back(0.5 * (bunny.points[0] + bunny.points[1]));
+    bunny.faces.push_back({0, n + 1, 1});
+    bunny.faces.push_back({n, n, 0});
+    const Mesh bunny4 = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    for (const auto& [a, b] : {std::pair<const Mesh*, const Mesh*>{&bunny, &bunny4}, {&teapot, &bunny4}}) {
+        const SurfaceDistance r = surface_distance(*a, *b);
+        for (const DistanceStats* s : {&r.forward, &r.backward})
+            for (double x : {s->min, s->max, s->mean, s->rms, s->stddev, s->p50, s->p95, s->p99})
+                EXPECT_TRUE(std::isfinite(x));
+        EXPECT_GT(r.hausdorff, 0.0);
+    }
+}
+
+TEST(SurfaceDistance, MonteCarloIsReproducibleForASeed)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    SamplingOptions o;
+    o.face_scheme = FaceSampling::MonteCarlo;
+    o.seed = 9;
+    const SurfaceDistance x = surface_distance(a, b, o);
+    const SurfaceDistance y = surface_distance(a, b, o);
+    o.seed = 10;
+    const SurfaceDistance z = surface_distance(a, b, o);
+    expect_identical(x.forward, y.forward);
+    EXPECT_NE(x.forward.mean, z.forward.mean);
+    EXPECT_NEAR(x.forward.mean, z.forward.mean, 0.05 * x.forward.mean);
+}
+
+TEST(SurfaceDistance, PercentilesUseNearestRank)
+{
+    SurfaceSamples s;
+    std::vector<double> d;
+    for (int i = 100; i >= 1; --i) {  // 100 .. 1, unsorted order
+        s.points.emplace_back(0, 0, 0);
+        d.push_back(double(i));
+    }
+    s.n_face = 100;
+    const DistanceStats st = distance_stats(s, d);
+    EXPECT_EQ(st.p50, 50.0);
+    EXPECT_EQ(st.p95, 95.0);
+    EXPECT_EQ(st.p99, 99.0);
+    EXPECT_EQ(st.min, 1.0);
+    EXPECT_EQ(st.max, 100.0);
+    EXPECT_DOUBLE_EQ(st.mean, 50.5);
+    EXPECT_DOUBLE_EQ(st.rms, std::sqrt(338350.0 / 100.0));
+    EXPECT_DOUBLE_EQ(st.stddev, std::sqrt((100.0 * 100.0 - 1.0) / 12.0));
+    // Ten samples: the 95th and 99th percentiles are the largest.
+    s.points.resize(10);
+    d = {3, 1, 4, 1, 5, 9, 2, 6, 5, 3};
+    const DistanceStats t = distance_stats(s, d);
+    EXPECT_EQ(t.p50, 3.0);
+    EXPECT_EQ(t.p95, 9.0);
+    EXPECT_EQ(t.p99, 9.0);
+}
+
+TEST(SurfaceDistance, VertexDistancesMatchBruteForce)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const ClosestPointIndex index(b);
+    const std::vector<double> d = vertex_distances(a, index);
+    ASSERT_EQ(d.size(), a.n_vertices());
+    for (std::size_t i = 0; i < a.n_vertices(); i += 7)
+        EXPECT_NEAR(d[i], closest_point_brute_force(b, a.points[i]).distance, 1e-12 * d[i] + 1e-300);
+}
+
+TEST(SurfaceDistance, MetroDiagonalWidensTheUnionBoxByTwoPercent)
+{
+    const Mesh a = plane_grid(3, 3, 0.5).mesh;  // [-0.5, 0.5]^2 at z = 0
+    Mesh b = a;
+    for (Vec3& p : b.points) p.z() = 1.0;
+    // Union box 1 x 1 x 1, diagonal sqrt 3; widened by 0.02 sqrt 3 on every side.
+    EXPECT_NEAR(metro_diagonal(a, b), std::sqrt(3.0) * (1.0 + 0.04 * std::sqrt(3.0)), 1e-12);
+    const SurfaceDistance r = surface_distance(a, b);
+    EXPECT_DOUBLE_EQ(r.diagonal, std::sqrt(2.0));
+    EXPECT_DOUBLE_EQ(r.metro_diagonal, metro_diagonal(a, b));
+}
+
+TEST(SurfaceDistance, InvalidOptionsAndMeshesThrow)
+{
+    const Mesh m = plane_grid(3, 3).mesh;
+    SamplingOptions o;
+    o.samples = 0;
+    EXPECT_THROW(surface_distance(m, m, o), InvalidArgumentError);
+    EXPECT_THROW(surface_distance(m, Mesh{}), InvalidMeshError);
+    EXPECT_THROW(relative_to(DistanceStats{}, 0.0), InvalidArgumentError);
+    // Faces only, on a mesh whose only face is degenerate: no sample at all.
+    Mesh flat;
+    flat.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)};
+    flat.faces = {Face{0, 1, 2}};
+    SamplingOptions faces_only;
+    faces_only.vertices = faces_only.edges = false;
+    EXPECT_THROW(surface_distance(flat, m, faces_only), InvalidArgumentError);
+}
