@@ -4,7 +4,7 @@
 //   meshdiff_bench_distance [--runs N] [--samples N] [--threads N]
 //                           [--igea IGEA.ply --igea-decimated DEC.ply]
 //                           [--large] [--large-faces N]
-//                           [--pair A B ...]
+//                           [--pair A B ...] [--one-sided]
 //
 // Each case prints the median wall time of N runs of surface_distance() (both
 // directions, default budget 10 x max #faces unless --samples), the sample
@@ -18,6 +18,11 @@
 //                                 (default 1,000,000) against a perturbed torus
 //                                 with a different grid of about the same size
 //   --pair A B                    any two mesh files (repeatable)
+//   --one-sided                   for --pair: only A -> B (samples on A), timed
+//                                 from the loaded meshes (index build, sampling,
+//                                 queries, statistics); one line
+//                                 "one-sided samples N v N e N f N min X max X
+//                                 mean X rms X time_s T" for scripts
 #include "meshdiff/closest_point.h"
 #include "meshdiff/io.h"
 #include "meshdiff/surface_distance.h"
@@ -77,6 +82,25 @@ void print_stats(const char* name, const meshdiff::DistanceStats& s, double diag
         s.mean / diag, s.rms / diag);
 }
 
+void run_one_sided(const Mesh& a, const Mesh& b, int runs, const meshdiff::SamplingOptions& options)
+{
+    std::vector<double> times;
+    meshdiff::DistanceStats s;
+    for (int k = 0; k < runs; ++k) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const meshdiff::ClosestPointIndex index(b);
+        s = meshdiff::one_sided_distance(a, index, options);
+        const auto t1 = std::chrono::steady_clock::now();
+        times.push_back(std::chrono::duration<double>(t1 - t0).count());
+    }
+    std::sort(times.begin(), times.end());
+    fmt::print(
+        "one-sided samples {} v {} e {} f {} min {:.17g} max {:.17g} mean {:.17g} rms {:.17g} time_s {:.4f} "
+        "threads {} peak_rss_mib {:.1f}\n",
+        s.n_samples(), s.n_vertex, s.n_edge, s.n_face, s.min, s.max, s.mean, s.rms, times[times.size() / 2],
+        omp_get_max_threads(), peak_rss_mib());
+}
+
 void run_case(const std::string& label, const Mesh& a, const Mesh& b, int runs,
               const meshdiff::SamplingOptions& options)
 {
@@ -102,7 +126,7 @@ void run_case(const std::string& label, const Mesh& a, const Mesh& b, int runs,
 {
     fmt::print(stderr,
                "usage: meshdiff_bench_distance [--runs N] [--samples N] [--threads N] [--igea A --igea-decimated B]"
-               " [--large] [--large-faces N] [--pair A B]...\n");
+               " [--large] [--large-faces N] [--pair A B]... [--one-sided]\n");
     std::exit(2);
 }
 
@@ -114,6 +138,7 @@ int main(int argc, char** argv)
     meshdiff::SamplingOptions options;
     std::string igea, igea_dec;
     bool large = false;
+    bool one_sided = false;
     long large_faces = 1000000;
     std::vector<std::pair<std::string, std::string>> pairs;
     for (int i = 1; i < argc; ++i) {
@@ -134,6 +159,8 @@ int main(int argc, char** argv)
             igea_dec = next();
         else if (arg == "--large")
             large = true;
+        else if (arg == "--one-sided")
+            one_sided = true;
         else if (arg == "--large-faces")
             large_faces = std::atol(next().c_str());
         else if (arg == "--pair") {
@@ -149,9 +176,14 @@ int main(int argc, char** argv)
         if (!igea.empty())
             run_case("igea vs decimation", meshdiff::read_mesh(igea).mesh, meshdiff::read_mesh(igea_dec).mesh, runs,
                      options);
-        for (const auto& [a, b] : pairs)
+        for (const auto& [a, b] : pairs) {
+            if (one_sided) {
+                run_one_sided(meshdiff::read_mesh(a).mesh, meshdiff::read_mesh(b).mesh, runs, options);
+                continue;
+            }
             run_case(fmt::format("{} vs {}", a, b), meshdiff::read_mesh(a).mesh, meshdiff::read_mesh(b).mesh, runs,
                      options);
+        }
         if (large) {
             // About large_faces faces each: 2 nu nv with nu = 2 nv, and a
             // 0.8 : 1.25 aspect for the second grid.
