@@ -288,7 +288,7 @@ TEST(Smoothing, InvalidOptionsThrowNamingTheField)
 TEST(Smoothing, HugeFlowStepLeavesOnlyFiniteCoordinates)
 {
     Mesh mesh = torus_irregular(1000, 1.0, 0.25, 3).mesh;
-    SmoothingOptions o = options(SmoothingMethod::MeanCurvatureFlow, SmoothingUpdate::Post, 2000);
+    SmoothingOptions o = options(SmoothingMethod::MeanCurvatureFlow, SmoothingUpdate::Post, 100);
     o.step = 10;
     try {
         smooth(mesh, o);
