@@ -53,19 +53,27 @@ struct HalfEdge
 
 std::vector<HalfEdge> sorted_half_edges(const Mesh& mesh)
 {
-    std::vector<HalfEdge> he;
-    he.reserve(3 * mesh.n_faces());
+    // Counting sort by the smaller vertex, then small sorts per bucket.
+    const std::size_t n = mesh.n_vertices();
+    std::vector<std::uint32_t> start(n + 1, 0);
+    for (const Face& t : mesh.faces)
+        for (int k = 0; k < 3; ++k) {
+            const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
+            if (a != b) ++start[std::min(a, b) + 1];
+        }
+    for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+    std::vector<HalfEdge> he(start[n]);
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
         const Face& t = mesh.faces[f];
         for (int k = 0; k < 3; ++k) {
-            auto a = std::uint32_t(t[k]);
-            auto b = std::uint32_t(t[(k + 1) % 3]);
+            const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
             if (a == b) continue;
-            he.push_back({edge_key(a, b), std::uint32_t(f), a < b});
+            he[fill[std::min(a, b)]++] = {edge_key(a, b), std::uint32_t(f), a < b};
         }
     }
-    std::sort(he.begin(), he.end(),
-              [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.face < y.face; });
+    auto less = [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.face < y.face; };
+    for (std::size_t i = 0; i < n; ++i) std::sort(he.begin() + start[i], he.begin() + start[i + 1], less);
     return he;
 }
 
@@ -114,45 +122,65 @@ double surface_area(const Mesh& mesh)
 }
 
 namespace {
-Adjacency build_csr(std::size_t n, std::vector<std::uint64_t>& pairs)
+
+// CSR from a row-count pass and a fill pass (counting sort), then each row
+// sorted and deduplicated: O(entries) plus small sorts, no global sort.
+template <class ForEachEntry>
+Adjacency build_csr(std::size_t n, ForEachEntry&& for_each_entry, bool dedupe)
 {
-    // pairs: (row << 32 | col), possibly repeated.
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     Adjacency adj;
     adj.offset.assign(n + 1, 0);
-    adj.index.resize(pairs.size());
-    for (std::size_t k = 0; k < pairs.size(); ++k) {
-        adj.offset[(pairs[k] >> 32) + 1]++;
-        adj.index[k] = std::uint32_t(pairs[k] & 0xffffffffu);
-    }
+    for_each_entry([&](std::uint32_t row, std::uint32_t) { ++adj.offset[row + 1]; });
     for (std::size_t i = 0; i < n; ++i) adj.offset[i + 1] += adj.offset[i];
+    adj.index.resize(adj.offset[n]);
+    std::vector<std::uint32_t> fill(adj.offset.begin(), adj.offset.end() - 1);
+    for_each_entry([&](std::uint32_t row, std::uint32_t col) { adj.index[fill[row]++] = col; });
+    if (!dedupe) return adj;
+    std::uint32_t out = 0;
+    std::uint32_t row_start = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t b = row_start, e = adj.offset[i + 1];
+        std::sort(adj.index.begin() + b, adj.index.begin() + e);
+        row_start = e;
+        adj.offset[i] = out;
+        for (std::uint32_t k = b; k < e; ++k)
+            if (k == b || adj.index[k] != adj.index[k - 1]) adj.index[out++] = adj.index[k];
+    }
+    adj.offset[n] = out;
+    adj.index.resize(out);
+    adj.index.shrink_to_fit();
     return adj;
 }
+
 }  // namespace
 
 Adjacency vertex_adjacency(const Mesh& mesh)
 {
-    std::vector<std::uint64_t> pairs;
-    pairs.reserve(6 * mesh.n_faces());
-    for (const Face& t : mesh.faces)
-        for (int k = 0; k < 3; ++k) {
-            auto a = std::uint64_t(std::uint32_t(t[k]));
-            auto b = std::uint64_t(std::uint32_t(t[(k + 1) % 3]));
-            if (a == b) continue;
-            pairs.push_back((a << 32) | b);
-            pairs.push_back((b << 32) | a);
-        }
-    return build_csr(mesh.n_vertices(), pairs);
+    return build_csr(
+        mesh.n_vertices(),
+        [&](auto&& emit) {
+            for (const Face& t : mesh.faces)
+                for (int k = 0; k < 3; ++k) {
+                    const auto a = std::uint32_t(t[k]);
+                    const auto b = std::uint32_t(t[(k + 1) % 3]);
+                    if (a == b) continue;
+                    emit(a, b);
+                    emit(b, a);
+                }
+        },
+        true);
 }
 
 Adjacency vertex_faces(const Mesh& mesh)
 {
-    std::vector<std::uint64_t> pairs;
-    pairs.reserve(3 * mesh.n_faces());
-    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
-        for (auto v : mesh.faces[f]) pairs.push_back((std::uint64_t(std::uint32_t(v)) << 32) | f);
-    return build_csr(mesh.n_vertices(), pairs);
+    // Faces are visited in order, so each row comes out ascending.
+    return build_csr(
+        mesh.n_vertices(),
+        [&](auto&& emit) {
+            for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+                for (auto v : mesh.faces[f]) emit(std::uint32_t(v), std::uint32_t(f));
+        },
+        false);
 }
 
 std::vector<char> degenerate_face_mask(const Mesh& mesh)

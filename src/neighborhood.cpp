@@ -2,9 +2,14 @@
 
 #include "meshdiff/error.h"
 
+#ifndef MESHDIFF_BFS_WORDS
+#define MESHDIFF_BFS_WORDS 2
+#endif
+
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -63,14 +68,136 @@ std::vector<std::uint32_t> morton_order(const Mesh& mesh)
     return order;
 }
 
-struct BfsScratch
+// Bit-parallel BFS from W * 64 centres at a time. Per vertex: the centres
+// that have reached it (seen), that reach it at the level being built (next)
+// and that reached it at the last level (frontier), interleaved so that one
+// cache line serves a neighbour test.
+template <int W>
+struct Marks
 {
-    std::vector<std::uint64_t> seen, frontier, next;
+    std::uint64_t seen[W];
+    std::uint64_t next[W];
+};
+
+template <int W>
+struct BatchBfs
+{
+    static constexpr std::size_t kBatch = 64 * W;
+    const Adjacency& adj;
+    const std::vector<double>& values;
+    const bool all_defined;
+    const int lmax;
+    std::vector<Marks<W>> marks;
+    std::vector<std::array<std::uint64_t, W>> frontier;
     std::vector<std::uint32_t> flist, nlist, touched;
-    std::vector<double> sum;           // [level][64], level 1..Lmax
+    std::vector<double> sum;           // [level][kBatch], level 1..lmax
     std::vector<std::uint32_t> count;  // defined values
     std::vector<std::uint32_t> size;   // all vertices
+
+    BatchBfs(const Adjacency& a, const std::vector<double>& v, bool defined, int max_level)
+        : adj(a), values(v), all_defined(defined), lmax(max_level)
+    {
+        const std::size_t n = adj.size();
+        marks.assign(n, Marks<W>{});
+        frontier.assign(n, std::array<std::uint64_t, W>{});
+        nlist.resize(n + 1);
+        sum.resize(std::size_t(lmax + 1) * kBatch);
+        count.resize(std::size_t(lmax + 1) * kBatch);
+        size.resize(std::size_t(lmax + 1) * kBatch);
+    }
+
+    // Fills sum/count/size (cumulative over levels) for centres[0..nb).
+    void run(const std::uint32_t* centres, std::size_t nb)
+    {
+        std::fill(sum.begin(), sum.end(), 0.0);
+        std::fill(count.begin(), count.end(), 0u);
+        std::fill(size.begin(), size.end(), 0u);
+        flist.clear();
+        touched.clear();
+        for (std::size_t k = 0; k < nb; ++k) {
+            const auto c = centres[k];
+            marks[c].seen[k / 64] |= std::uint64_t(1) << (k % 64);
+            frontier[c][k / 64] |= std::uint64_t(1) << (k % 64);
+            flist.push_back(c);
+            touched.push_back(c);
+        }
+        for (int level = 1; level <= lmax && !flist.empty(); ++level) {
+            // Branch-free expansion: the new-vertex list grows by one exactly
+            // when a vertex gets its first new centre at this level.
+            std::size_t n_new = 0;
+            std::uint32_t* nl = nlist.data();
+            for (auto v : flist) {
+                const auto f = frontier[v];
+                for (auto it = adj.begin(v); it != adj.end(v); ++it) {
+                    Marks<W>& m = marks[*it];
+                    std::uint64_t old_any = 0, add_any = 0;
+                    for (int w = 0; w < W; ++w) {
+                        const std::uint64_t add = f[w] & ~m.seen[w];
+                        old_any |= m.next[w];
+                        add_any |= add;
+                        m.next[w] |= add;
+                    }
+                    nl[n_new] = *it;
+                    n_new += std::size_t((old_any == 0) & (add_any != 0));
+                }
+            }
+            for (auto v : flist) frontier[v] = std::array<std::uint64_t, W>{};
+            double* lsum = &sum[std::size_t(level) * kBatch];
+            std::uint32_t* lcount = &count[std::size_t(level) * kBatch];
+            std::uint32_t* lsize = &size[std::size_t(level) * kBatch];
+            flist.clear();
+            for (std::size_t q = 0; q < n_new; ++q) {
+                const auto v = nl[q];
+                Marks<W>& m = marks[v];
+                std::uint64_t seen_any = 0;
+                for (int w = 0; w < W; ++w) seen_any |= m.seen[w];
+                if (!seen_any) touched.push_back(v);
+                flist.push_back(v);
+                const double val = values[v];
+                const bool defined = !std::isnan(val);
+                for (int w = 0; w < W; ++w) {
+                    std::uint64_t bits = m.next[w];
+                    m.next[w] = 0;
+                    m.seen[w] |= bits;
+                    frontier[v][w] = bits;
+                    double* ws = lsum + 64 * w;
+                    std::uint32_t* wc = lcount + 64 * w;
+                    if (all_defined) {
+                        // count == size: one counter per centre suffices.
+                        while (bits) {
+                            const int b = __builtin_ctzll(bits);
+                            bits &= bits - 1;
+                            ws[b] += val;
+                            ++wc[b];
+                        }
+                    } else {
+                        std::uint32_t* wz = lsize + 64 * w;
+                        while (bits) {
+                            const int b = __builtin_ctzll(bits);
+                            bits &= bits - 1;
+                            ++wz[b];
+                            if (defined) {
+                                ws[b] += val;
+                                ++wc[b];
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        for (auto v : flist) frontier[v] = std::array<std::uint64_t, W>{};
+        for (auto v : touched) marks[v] = Marks<W>{};
+        for (int level = 2; level <= lmax; ++level)
+            for (std::size_t k = 0; k < kBatch; ++k) {
+                sum[std::size_t(level) * kBatch + k] += sum[std::size_t(level - 1) * kBatch + k];
+                count[std::size_t(level) * kBatch + k] += count[std::size_t(level - 1) * kBatch + k];
+                size[std::size_t(level) * kBatch + k] += size[std::size_t(level - 1) * kBatch + k];
+            }
+        if (all_defined) size = count;
+    }
 };
+
+constexpr int kWords = MESHDIFF_BFS_WORDS;
 
 }  // namespace
 
@@ -94,83 +221,25 @@ DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
     centres.reserve(n);
     for (auto v : morton_order(mesh))
         if (!std::isnan(values[v])) centres.push_back(v);
-    const std::size_t n_batches = (centres.size() + 63) / 64;
+    const std::size_t n_batches = (centres.size() + BatchBfs<kWords>::kBatch - 1) / BatchBfs<kWords>::kBatch;
+    const bool all_defined = centres.size() == n;
 
 #pragma omp parallel
     {
-        BfsScratch s;
-        s.seen.assign(n, 0);
-        s.frontier.assign(n, 0);
-        s.next.assign(n, 0);
-        s.sum.resize(std::size_t(lmax + 1) * 64);
-        s.count.resize(std::size_t(lmax + 1) * 64);
-        s.size.resize(std::size_t(lmax + 1) * 64);
-#pragma omp for schedule(dynamic, 4)
+        BatchBfs<kWords> bfs(adj, values, all_defined, lmax);
+        constexpr std::size_t kBatch = BatchBfs<kWords>::kBatch;
+#pragma omp for schedule(dynamic, 2)
         for (std::ptrdiff_t ib = 0; ib < std::ptrdiff_t(n_batches); ++ib) {
-            const std::size_t first = std::size_t(ib) * 64;
-            const std::size_t nb = std::min<std::size_t>(64, centres.size() - first);
-            std::fill(s.sum.begin(), s.sum.end(), 0.0);
-            std::fill(s.count.begin(), s.count.end(), 0u);
-            std::fill(s.size.begin(), s.size.end(), 0u);
-            s.flist.clear();
-            s.touched.clear();
-            for (std::size_t k = 0; k < nb; ++k) {
-                const auto c = centres[first + k];
-                s.seen[c] = s.frontier[c] = std::uint64_t(1) << k;
-                s.flist.push_back(c);
-                s.touched.push_back(c);
-            }
-            for (int level = 1; level <= lmax && !s.flist.empty(); ++level) {
-                s.nlist.clear();
-                for (auto v : s.flist) {
-                    const std::uint64_t f = s.frontier[v];
-                    for (auto it = adj.begin(v); it != adj.end(v); ++it) {
-                        const std::uint64_t add = f & ~s.seen[*it];
-                        if (!add) continue;
-                        if (!s.next[*it]) s.nlist.push_back(*it);
-                        s.next[*it] |= add;
-                    }
-                }
-                for (auto v : s.flist) s.frontier[v] = 0;
-                double* lsum = &s.sum[std::size_t(level) * 64];
-                std::uint32_t* lcount = &s.count[std::size_t(level) * 64];
-                std::uint32_t* lsize = &s.size[std::size_t(level) * 64];
-                for (auto w : s.nlist) {
-                    std::uint64_t bits = s.next[w];
-                    s.next[w] = 0;
-                    if (!s.seen[w]) s.touched.push_back(w);
-                    s.seen[w] |= bits;
-                    s.frontier[w] = bits;
-                    const double val = values[w];
-                    const bool defined = !std::isnan(val);
-                    while (bits) {
-                        const int b = __builtin_ctzll(bits);
-                        bits &= bits - 1;
-                        ++lsize[b];
-                        if (defined) {
-                            lsum[b] += val;
-                            ++lcount[b];
-                        }
-                    }
-                }
-                std::swap(s.flist, s.nlist);
-            }
-            for (auto v : s.flist) s.frontier[v] = 0;
-            for (auto v : s.touched) s.seen[v] = 0;
-            // Cumulative sums over levels, then the requested means.
-            for (int level = 2; level <= lmax; ++level)
-                for (std::size_t k = 0; k < 64; ++k) {
-                    s.sum[std::size_t(level) * 64 + k] += s.sum[std::size_t(level - 1) * 64 + k];
-                    s.count[std::size_t(level) * 64 + k] += s.count[std::size_t(level - 1) * 64 + k];
-                    s.size[std::size_t(level) * 64 + k] += s.size[std::size_t(level - 1) * 64 + k];
-                }
+            const std::size_t first = std::size_t(ib) * kBatch;
+            const std::size_t nb = std::min<std::size_t>(kBatch, centres.size() - first);
+            bfs.run(centres.data() + first, nb);
             for (std::size_t li = 0; li < levels.size(); ++li) {
-                const std::size_t base = std::size_t(levels[li]) * 64;
+                const std::size_t base = std::size_t(levels[li]) * kBatch;
                 for (std::size_t k = 0; k < nb; ++k) {
                     const auto c = centres[first + k];
-                    const auto cnt = s.count[base + k];
-                    if (cnt > 0) out.mean[li][c] = s.sum[base + k] / double(cnt);
-                    if (with_sizes) out.size[li][c] = s.size[base + k];
+                    const auto cnt = bfs.count[base + k];
+                    if (cnt > 0) out.mean[li][c] = bfs.sum[base + k] / double(cnt);
+                    if (with_sizes) out.size[li][c] = bfs.size[base + k];
                 }
             }
         }
