@@ -188,10 +188,13 @@ struct ClosestPointIndex::Impl
 {
     std::vector<Tri> tris;  // in leaf order
     std::vector<Node> nodes;
+    std::vector<std::uint32_t> parent_of;  // per node (root: 0)
+    std::vector<std::uint32_t> leaf_of;    // per triangle position: its leaf
 
     void build(const Mesh& mesh);
     // Lexicographic minimum of (squared distance, face) over all triangles;
-    // `hint` (a position in `tris`, or kNoFace) only seeds the bound.
+    // `hint` (a position in `tris`, or kNoFace) only changes the search order:
+    // the search starts in the hint's leaf and climbs towards the root.
     ClosestPoint query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const;
 };
 
@@ -311,6 +314,16 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
     std::vector<Tri> ordered(n);
     for (std::size_t i = 0; i < n; ++i) ordered[i] = tris[order[i]];
     tris.swap(ordered);
+    parent_of.assign(nodes.size(), 0);
+    leaf_of.assign(n, 0);
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+        const Node& node = nodes[k];
+        if (node.count > 0) {
+            for (std::uint32_t i = 0; i < node.count; ++i) leaf_of[node.first + i] = std::uint32_t(k);
+        } else {
+            parent_of[node.first] = parent_of[node.first + 1] = std::uint32_t(k);
+        }
+    }
 }
 
 ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const
@@ -330,7 +343,6 @@ ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, s
             best_point = q;
         }
     };
-    if (hint != kNoFace) consider(hint);
 
     // A node is skipped only if its box is farther than the best so far by a
     // margin above rounding, so that ties and near-ties are still examined.
@@ -341,25 +353,44 @@ ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, s
         double d2;
     };
     std::array<Entry, 128> stack;
-    std::size_t top = 0;
-    stack[top++] = {0, box_distance2(nodes[0], p)};
-    while (top > 0) {
-        const Entry e = stack[--top];
-        if (e.d2 * keep > best_d2) continue;
-        const Node& node = nodes[e.node];
-        if (node.count > 0) {
-            for (std::uint32_t i = 0; i < node.count; ++i) consider(node.first + i);
-            continue;
+    // Branch and bound below `root`, nearest child first.
+    auto descend = [&](std::uint32_t root, double root_d2) {
+        std::size_t top = 0;
+        stack[top++] = {root, root_d2};
+        while (top > 0) {
+            const Entry e = stack[--top];
+            if (e.d2 * keep > best_d2) continue;
+            const Node& node = nodes[e.node];
+            if (node.count > 0) {
+                for (std::uint32_t i = 0; i < node.count; ++i) consider(node.first + i);
+                continue;
+            }
+            const double dl = box_distance2(nodes[node.first], p);
+            const double dr = box_distance2(nodes[node.first + 1], p);
+            const Entry l{node.first, dl};
+            const Entry r{node.first + 1, dr};
+            // Push the farther child first so that the nearer one is visited first.
+            const Entry& near = dl <= dr ? l : r;
+            const Entry& far = dl <= dr ? r : l;
+            if (far.d2 * keep <= best_d2) stack[top++] = far;
+            if (near.d2 * keep <= best_d2) stack[top++] = near;
         }
-        const double dl = box_distance2(nodes[node.first], p);
-        const double dr = box_distance2(nodes[node.first + 1], p);
-        const Entry l{node.first, dl};
-        const Entry r{node.first + 1, dr};
-        // Push the farther child first so that the nearer one is visited first.
-        const Entry& near = dl <= dr ? l : r;
-        const Entry& far = dl <= dr ? r : l;
-        if (far.d2 * keep <= best_d2) stack[top++] = far;
-        if (near.d2 * keep <= best_d2) stack[top++] = near;
+    };
+
+    if (hint == kNoFace) {
+        descend(0, box_distance2(nodes[0], p));
+    } else {
+        // Start in the hint's leaf and climb to the root, searching the sibling
+        // subtree at each level: every triangle is in exactly one of these.
+        std::uint32_t node = leaf_of[hint];
+        for (std::uint32_t i = 0; i < nodes[node].count; ++i) consider(nodes[node].first + i);
+        while (node != 0) {
+            const std::uint32_t parent = parent_of[node];
+            const std::uint32_t sibling = node == nodes[parent].first ? node + 1 : node - 1;
+            const double d2 = box_distance2(nodes[sibling], p);
+            if (d2 * keep <= best_d2) descend(sibling, d2);
+            node = parent;
+        }
     }
     if (hit) *hit = best_pos;
     ClosestPoint r;
@@ -440,7 +471,8 @@ BoundingBox ClosestPointIndex::bounds() const
 
 std::size_t ClosestPointIndex::memory_bytes() const
 {
-    return impl_->tris.capacity() * sizeof(Tri) + impl_->nodes.capacity() * sizeof(Node);
+    return impl_->tris.capacity() * sizeof(Tri) + impl_->nodes.capacity() * sizeof(Node) +
+           (impl_->parent_of.capacity() + impl_->leaf_of.capacity()) * sizeof(std::uint32_t);
 }
 
 }  // namespace meshdiff
