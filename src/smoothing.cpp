@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstddef>
 #include <utility>
 #include <vector>
 
@@ -176,7 +177,9 @@ public:
                     // Umbrellas of all vertices once, then U2 from them.
                     const std::vector<Vec3>& p = mesh_.points;
                     u_.resize(p.size());
-                    for (std::size_t i = 0; i < p.size(); ++i) u_[i] = umbrella(adj_, p, i);
+                    const auto n = std::ptrdiff_t(p.size());
+#pragma omp parallel for schedule(static)
+                    for (std::ptrdiff_t k = 0; k < n; ++k) u_[std::size_t(k)] = umbrella(adj_, p, std::size_t(k));
                     sweep([&](const std::vector<Vec3>&, std::size_t i) -> Vec3 {
                         return Vec3(-o_.damping * inv_nu_[i] *
                                     umbrella2(i, [&](std::size_t j) -> Vec3 { return u_[j]; }));
@@ -224,8 +227,13 @@ private:
                 if (!fixed_[i]) p[i] += d(p, i);
         } else {
             delta_.assign(p.size(), Vec3::Zero());
-            for (std::size_t i = 0; i < p.size(); ++i)
+            const auto n = std::ptrdiff_t(p.size());
+            // Independent per vertex, so the result does not depend on the thread count.
+#pragma omp parallel for schedule(static)
+            for (std::ptrdiff_t k = 0; k < n; ++k) {
+                const auto i = std::size_t(k);
                 if (!fixed_[i]) delta_[i] = d(p, i);
+            }
             for (std::size_t i = 0; i < p.size(); ++i) p[i] += delta_[i];
         }
     }

@@ -4,6 +4,7 @@
 #include "meshdiff/shapes.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -208,6 +209,21 @@ TEST(Smoothing, PreAndPostUpdatingDifferAndAreDeterministic)
         // The first vertex sees only old positions in both schemes.
         EXPECT_NE(post1.points, pre1.points);
     }
+}
+
+TEST(Smoothing, ResultDoesNotDependOnTheThreadCount)
+{
+    const Shape s = torus_irregular(1500, 1.0, 0.3, 4);
+    const int threads = omp_get_max_threads();
+    for (auto m : kMethods) {
+        Mesh one = s.mesh, many = s.mesh;
+        omp_set_num_threads(1);
+        smooth(one, options(m, SmoothingUpdate::Post, 3));
+        omp_set_num_threads(4);
+        smooth(many, options(m, SmoothingUpdate::Post, 3));
+        EXPECT_EQ(one.points, many.points) << smoothing_method_name(m);
+    }
+    omp_set_num_threads(threads);
 }
 
 TEST(Smoothing, ModifiedMeanCurvatureFlowRegularisesTrianglesMeanCurvatureFlowDoesNot)
