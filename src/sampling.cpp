@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <tuple>
@@ -102,10 +103,17 @@ SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options)
     for (std::size_t f = 0; f < mesh.n_faces(); ++f)
         if (!degenerate[f]) area += face_area[f] = 0.5 * face_cross(mesh, f).norm();
 
-    auto add = [&s](const Vec3& p, SampleKind kind, std::size_t element) {
-        s.points.push_back(p);
-        s.kind.push_back(kind);
-        s.element.push_back(std::uint32_t(element));
+    // Counts are decided sequentially (carry-over), positions are then filled
+    // in parallel into disjoint ranges: the result does not depend on threads.
+    auto grow = [&s](std::size_t extra) {
+        s.points.resize(s.points.size() + extra);
+        s.kind.resize(s.points.size());
+        s.element.resize(s.points.size());
+    };
+    auto put = [&s](std::size_t at, const Vec3& p, SampleKind kind, std::size_t element) {
+        s.points[at] = p;
+        s.kind[at] = kind;
+        s.element[at] = std::uint32_t(element);
     };
 
     // Vertices: every referenced one, in index order.
@@ -114,7 +122,10 @@ SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options)
         for (const Face& t : mesh.faces)
             for (auto v : t) referenced[std::size_t(v)] = 1;
         for (std::size_t v = 0; v < mesh.n_vertices(); ++v)
-            if (referenced[v]) add(mesh.points[v], SampleKind::OnVertex, v);
+            if (referenced[v]) {
+                grow(1);
+                put(s.points.size() - 1, mesh.points[v], SampleKind::OnVertex, v);
+            }
         s.n_vertex = s.points.size();
     }
     if (s.n_vertex >= s.target) return s;
@@ -123,20 +134,32 @@ SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options)
     // Edges: density sqrt(face density) per unit length, with carry-over.
     if (options.edges) {
         const auto edges = unique_edges(mesh);
+        std::vector<double> len(edges.size());
         double length = 0.0;
-        for (const Edge& e : edges) length += (mesh.points[e.b] - mesh.points[e.a]).norm();
+        for (std::size_t i = 0; i < edges.size(); ++i)
+            length += len[i] = (mesh.points[edges[i].b] - mesh.points[edges[i].a]).norm();
         // Never more than the remaining budget (Metro would overshoot here).
         const double cap = length > 0.0 ? remaining / length : 0.0;
         s.edge_density = options.faces && area > 0.0 ? std::min(std::sqrt(remaining / area), cap) : cap;
+        std::vector<std::size_t> offset(edges.size() + 1, s.points.size());
         double carry = 0.0;
-        for (const Edge& e : edges) {
-            const Vec3& p0 = mesh.points[e.a];
-            const Vec3& p1 = mesh.points[e.b];
-            carry += (p1 - p0).norm() * s.edge_density;
+        for (std::size_t i = 0; i < edges.size(); ++i) {
+            carry += len[i] * s.edge_density;
             const auto n = std::size_t(carry);
-            const Vec3 step = (p1 - p0) / double(n + 1);
-            for (std::size_t i = 1; i <= n; ++i) add(p0 + step * double(i), SampleKind::OnEdge, e.face);
+            offset[i + 1] = offset[i] + n;
             carry -= double(n);
+        }
+        grow(offset.back() - s.points.size());
+        const auto n_edges = std::int64_t(edges.size());
+#pragma omp parallel for schedule(static)
+        for (std::int64_t ii = 0; ii < n_edges; ++ii) {
+            const auto i = std::size_t(ii);
+            const std::size_t n = offset[i + 1] - offset[i];
+            const Vec3& p0 = mesh.points[edges[i].a];
+            const Vec3& p1 = mesh.points[edges[i].b];
+            const Vec3 step = (p1 - p0) / double(n + 1);
+            for (std::size_t k = 1; k <= n; ++k)
+                put(offset[i] + k - 1, p0 + step * double(k), SampleKind::OnEdge, edges[i].face);
         }
         s.n_edge = s.points.size() - s.n_vertex;
         remaining = std::max(0.0, remaining - double(s.n_edge));
@@ -145,42 +168,63 @@ SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options)
     // Faces.
     if (options.faces && area > 0.0 && remaining > 0.0) {
         s.face_density = remaining / area;
-        s.points.reserve(s.points.size() + std::size_t(remaining) + 1);
-        s.kind.reserve(s.points.capacity());
-        s.element.reserve(s.points.capacity());
-        std::mt19937_64 rng(options.seed);
+        const bool lattice = options.face_scheme == FaceSampling::SimilarTriangles;
+        // Per face: the lattice order k (SimilarTriangles) or the count.
+        std::vector<std::size_t> order(mesh.n_faces(), 0);
+        std::vector<std::size_t> offset(mesh.n_faces() + 1, s.points.size());
         double carry = 0.0;
         for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
-            if (degenerate[f]) continue;
-            carry += face_area[f] * s.face_density;
-            const auto due = std::size_t(carry);
-            if (due == 0) continue;
+            std::size_t n = 0;
+            if (!degenerate[f]) {
+                carry += face_area[f] * s.face_density;
+                const auto due = std::size_t(carry);
+                if (lattice) {
+                    order[f] = lattice_order(due);
+                    n = order[f] * (order[f] + 1) / 2;
+                } else {
+                    n = due;
+                }
+                carry -= double(n);
+            }
+            offset[f + 1] = offset[f] + n;
+        }
+        grow(offset.back() - s.points.size());
+        auto corners = [&mesh](std::size_t f) {
             const Face& t = mesh.faces[f];
-            const Vec3& v0 = mesh.points[std::size_t(t[0])];
-            const Vec3& v1 = mesh.points[std::size_t(t[1])];
-            const Vec3& v2 = mesh.points[std::size_t(t[2])];
-            if (options.face_scheme == FaceSampling::SimilarTriangles) {
+            return std::array<const Vec3*, 3>{&mesh.points[std::size_t(t[0])], &mesh.points[std::size_t(t[1])],
+                                              &mesh.points[std::size_t(t[2])]};
+        };
+        if (lattice) {
+            const auto n_faces = std::int64_t(mesh.n_faces());
+#pragma omp parallel for schedule(static)
+            for (std::int64_t ff = 0; ff < n_faces; ++ff) {
+                const auto f = std::size_t(ff);
+                const std::size_t k = order[f];
+                if (k == 0) continue;
                 // Interior points of the lattice of step 1/(k+2) along both edges.
-                const std::size_t k = lattice_order(due);
-                const Vec3 e1 = (v1 - v0) / double(k + 2);
-                const Vec3 e2 = (v2 - v0) / double(k + 2);
+                const auto [v0, v1, v2] = corners(f);
+                const Vec3 e1 = (*v1 - *v0) / double(k + 2);
+                const Vec3 e2 = (*v2 - *v0) / double(k + 2);
+                std::size_t at = offset[f];
                 for (std::size_t i = 1; i <= k; ++i)
                     for (std::size_t j = 1; i + j <= k + 1; ++j)
-                        add(v0 + e1 * double(i) + e2 * double(j), SampleKind::OnFace, f);
-                carry -= double(k * (k + 1) / 2);
-            } else {
-                const Vec3 e1 = v1 - v0;
-                const Vec3 e2 = v2 - v0;
-                for (std::size_t i = 0; i < due; ++i) {
+                        put(at++, *v0 + e1 * double(i) + e2 * double(j), SampleKind::OnFace, f);
+            }
+        } else {
+            std::mt19937_64 rng(options.seed);
+            for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+                const auto [v0, v1, v2] = corners(f);
+                const Vec3 e1 = *v1 - *v0;
+                const Vec3 e2 = *v2 - *v0;
+                for (std::size_t at = offset[f]; at < offset[f + 1]; ++at) {
                     double r1 = unit_double(rng);
                     double r2 = unit_double(rng);
                     if (r1 + r2 > 1.0) {
                         r1 = 1.0 - r1;
                         r2 = 1.0 - r2;
                     }
-                    add(v0 + e1 * r1 + e2 * r2, SampleKind::OnFace, f);
+                    put(at, *v0 + e1 * r1 + e2 * r2, SampleKind::OnFace, f);
                 }
-                carry -= double(due);
             }
         }
         s.n_face = s.points.size() - s.n_vertex - s.n_edge;

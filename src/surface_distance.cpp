@@ -24,13 +24,21 @@ struct Sum
     double value() const { return s + c; }
 };
 
-// The rank-th smallest (1-based) of v, by nearest rank for percent q.
-double nearest_rank(std::vector<double>& v, unsigned q)
+std::size_t rank_of(std::size_t n, unsigned q)
+{
+    return std::clamp<std::size_t>((std::size_t(q) * n + 99) / 100, 1, n);  // ceil(q n / 100)
+}
+
+// The nearest-rank q-th percentile of v: its ceil(q n / 100)-th smallest
+// element. v is partially sorted in place; if it already is partitioned at the
+// rank of percentile `below` (an earlier call with q = below), only the part
+// above that rank is searched.
+double nearest_rank(std::vector<double>& v, unsigned q, unsigned below)
 {
     const std::size_t n = v.size();
-    std::size_t rank = (std::size_t(q) * n + 99) / 100;  // ceil(q n / 100)
-    rank = std::clamp<std::size_t>(rank, 1, n);
-    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(rank - 1), v.end());
+    const std::size_t rank = rank_of(n, q);
+    const std::size_t start = below == 0 ? 0 : rank_of(n, below) - 1;
+    std::nth_element(v.begin() + std::ptrdiff_t(start), v.begin() + std::ptrdiff_t(rank - 1), v.end());
     return v[rank - 1];
 }
 
@@ -71,9 +79,9 @@ DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<do
     for (double d : distances) dev.add((d - s.mean) * (d - s.mean));
     s.stddev = std::sqrt(dev.value() / n);
     std::vector<double> sorted = distances;
-    s.p50 = nearest_rank(sorted, 50);
-    s.p95 = nearest_rank(sorted, 95);
-    s.p99 = nearest_rank(sorted, 99);
+    s.p50 = nearest_rank(sorted, 50, 0);
+    s.p95 = nearest_rank(sorted, 95, 50);
+    s.p99 = nearest_rank(sorted, 99, 95);
     return s;
 }
 
