@@ -1,11 +1,76 @@
 #include "commands.h"
+#include "meshdiff/closest_point.h"
+#include "meshdiff/colormap.h"
+#include "meshdiff/compare.h"
+#include "meshdiff/error.h"
+#include "meshdiff/io.h"
+#include "options.h"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
 
 namespace meshdiff::cli {
 
+namespace {
+
+struct CompareArgs
+{
+    std::string original, processed;
+    CompareCliOptions compare;
+    std::string json;
+    std::string distance_map;
+    std::vector<double> color_range;
+    int threads = 0;
+};
+
+int run_compare(const CompareArgs& a)
+{
+    set_threads(a.threads);
+    const CompareOptions options = to_compare_options(a.compare);
+    if (!a.color_range.empty() && !(a.color_range.size() == 2 && a.color_range[0] < a.color_range[1]))
+        throw InvalidArgumentError("--color-range needs MIN MAX with MIN < MAX");
+    const LoadedMesh original = read_mesh(a.original);
+    const LoadedMesh processed = read_mesh(a.processed);
+    const Comparison c = compare_meshes(original, processed, options);
+
+    if (!a.distance_map.empty()) {
+        const ClosestPointIndex index(original.mesh);
+        const std::vector<double> d = vertex_distances(processed.mesh, index);
+        double lo = 0.0, hi = 0.0;
+        if (a.color_range.size() == 2) {
+            lo = a.color_range[0];
+            hi = a.color_range[1];
+        } else {
+            for (double x : d) hi = std::max(hi, x);
+        }
+        write_ply(a.distance_map, processed.mesh, {{"distance", d}}, sequential_colors(d, lo, hi),
+                  {fmt::format("per-vertex distance of {} to the surface of {}", a.processed, a.original),
+                   fmt::format("colour: blue (low) to red (high) over [{:.9g}, {:.9g}]", lo, hi)});
+    }
+    if (!a.json.empty()) write_json(a.json, comparison_json(c));
+    if (a.json != "-") std::cout << comparison_text(c);
+    return 0;
+}
+
+}  // namespace
+
 void add_compare_command(CLI::App& app, Action& action)
 {
-    auto* sub = app.add_subcommand("compare", "(not yet implemented)");
-    sub->callback([&action] { action = [] { return 0; }; });
+    auto args = std::make_shared<CompareArgs>();
+    auto* sub = app.add_subcommand("compare",
+                                   "compare an original and a processed mesh: roughness profiles, per-level "
+                                   "roughness distance, Metro-style surface distance (the default command)");
+    sub->add_option("ORIGINAL", args->original, "original mesh (.ply .obj .off .stl)")->required();
+    sub->add_option("PROCESSED", args->processed, "processed mesh")->required();
+    add_compare_options(sub, args->compare);
+    sub->add_option("--json", args->json, "write the JSON report to FILE, or '-' for stdout");
+    sub->add_option("--distance-map", args->distance_map,
+                    "write the processed mesh with per-vertex distance to the original and a colour ramp as PLY");
+    sub->add_option("--color-range", args->color_range, "fix the distance colour range: MIN MAX")->expected(2);
+    sub->add_option("--threads", args->threads, "worker threads (0: all cores)")->capture_default_str();
+    sub->callback([args, &action] { action = [args] { return run_compare(*args); }; });
 }
 
 }  // namespace meshdiff::cli

@@ -67,6 +67,43 @@ ProfileOptions to_profile_options(const ProfileCliOptions& o, bool keep_vertex_d
     return p;
 }
 
+void add_compare_options(CLI::App* sub, CompareCliOptions& o)
+{
+    add_profile_options(sub, o.profile);
+    sub->add_option("-k,--k", o.k, "constant k of the roughness distance (eq. 10)")->capture_default_str();
+    sub->add_flag("--no-roughness", o.no_roughness, "skip the roughness half");
+    sub->add_flag("--no-distance", o.no_distance, "skip the surface distance half");
+    sub->add_option("-n,--samples", o.samples, "samples per direction (default: 10 x the larger face count, as Metro)");
+    sub->add_option("--density", o.density, "samples per unit area instead of a count");
+    sub->add_option("--face-sampling", o.face_sampling, "face sampling scheme")
+        ->check(CLI::IsMember({"similar", "montecarlo"}))
+        ->capture_default_str();
+    sub->add_option("--seed", o.seed, "seed of Monte Carlo sampling")->capture_default_str();
+    sub->add_flag("--no-vertex-samples", o.no_vertex_samples, "do not sample vertices");
+    sub->add_flag("--no-edge-samples", o.no_edge_samples, "do not sample edges");
+    sub->add_flag("--no-face-samples", o.no_face_samples, "do not sample faces");
+}
+
+CompareOptions to_compare_options(const CompareCliOptions& o)
+{
+    CompareOptions c;
+    c.profile = to_profile_options(o.profile, false);
+    c.k = o.k;
+    c.roughness = !o.no_roughness;
+    c.distance = !o.no_distance;
+    if (o.samples > 0 && o.density > 0.0) throw InvalidArgumentError("--samples and --density exclude each other");
+    if (o.samples > 0) c.sampling.samples = o.samples;
+    if (o.density < 0.0) throw InvalidArgumentError("--density must be > 0");
+    if (o.density > 0.0) c.sampling.density = o.density;
+    c.sampling.face_scheme = o.face_sampling == "similar" ? FaceSampling::SimilarTriangles : FaceSampling::MonteCarlo;
+    c.sampling.seed = o.seed;
+    c.sampling.vertices = !o.no_vertex_samples;
+    c.sampling.edges = !o.no_edge_samples;
+    c.sampling.faces = !o.no_face_samples;
+    validate(c.sampling);
+    return c;
+}
+
 void set_threads(int threads)
 {
     if (threads < 0) throw InvalidArgumentError(fmt::format("--threads: {} must be >= 0 (0: all cores)", threads));

@@ -2,6 +2,7 @@
 //! \brief Option parsing helpers shared by the subcommands.
 #pragma once
 
+#include "meshdiff/compare.h"
 #include "meshdiff/curvature.h"
 #include "meshdiff/roughness.h"
 
@@ -29,6 +30,22 @@ void add_profile_options(CLI::App* sub, ProfileCliOptions& o);
 
 //! The library options for the parsed command-line options.
 ProfileOptions to_profile_options(const ProfileCliOptions& o, bool keep_vertex_data);
+
+//! Options of a comparison shared by compare and batch.
+struct CompareCliOptions
+{
+    ProfileCliOptions profile;
+    double k = 1e-4;
+    bool no_roughness = false;
+    bool no_distance = false;
+    std::size_t samples = 0;  // 0: Metro's default budget
+    double density = 0.0;     // 0: unset
+    std::string face_sampling = "similar";
+    std::uint64_t seed = 1;
+    bool no_vertex_samples = false, no_edge_samples = false, no_face_samples = false;
+};
+void add_compare_options(CLI::App* sub, CompareCliOptions& o);
+CompareOptions to_compare_options(const CompareCliOptions& o);
 
 //! Sets the OpenMP thread count when \p threads > 0.
 void set_threads(int threads);
