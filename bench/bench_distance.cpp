@@ -5,6 +5,8 @@
 //                           [--igea IGEA.ply --igea-decimated DEC.ply]
 //                           [--large] [--large-faces N]
 //                           [--pair A B ...] [--one-sided]
+//                           [--no-vertices] [--no-edges] [--no-faces]
+//                           [--monte-carlo] [--seed N]
 //
 // Each case prints the median wall time of N runs of surface_distance() (both
 // directions, default budget 10 x max #faces unless --samples), the sample
@@ -126,7 +128,8 @@ void run_case(const std::string& label, const Mesh& a, const Mesh& b, int runs,
 {
     fmt::print(stderr,
                "usage: meshdiff_bench_distance [--runs N] [--samples N] [--threads N] [--igea A --igea-decimated B]"
-               " [--large] [--large-faces N] [--pair A B]... [--one-sided]\n");
+               " [--large] [--large-faces N] [--pair A B]... [--one-sided] [--no-vertices] [--no-edges]"
+               " [--no-faces] [--monte-carlo] [--seed N]\n");
     std::exit(2);
 }
 
@@ -161,6 +164,16 @@ int main(int argc, char** argv)
             large = true;
         else if (arg == "--one-sided")
             one_sided = true;
+        else if (arg == "--no-vertices")
+            options.vertices = false;
+        else if (arg == "--no-edges")
+            options.edges = false;
+        else if (arg == "--no-faces")
+            options.faces = false;
+        else if (arg == "--monte-carlo")
+            options.face_scheme = meshdiff::FaceSampling::MonteCarlo;
+        else if (arg == "--seed")
+            options.seed = std::stoull(next());
         else if (arg == "--large-faces")
             large_faces = std::atol(next().c_str());
         else if (arg == "--pair") {

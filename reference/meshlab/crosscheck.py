@@ -53,10 +53,10 @@ HAUSDORFF_FILTER = """ <filter name="Hausdorff Distance">
   <Param type="RichMesh" value="0" name="SampledMesh"/>
   <Param type="RichMesh" value="1" name="TargetMesh"/>
   <Param type="RichBool" value="false" name="SaveSample"/>
-  <Param type="RichBool" value="true" name="SampleVert"/>
-  <Param type="RichBool" value="true" name="SampleEdge"/>
+  <Param type="RichBool" value="{v}" name="SampleVert"/>
+  <Param type="RichBool" value="{e}" name="SampleEdge"/>
   <Param type="RichBool" value="false" name="SampleFauxEdge"/>
-  <Param type="RichBool" value="true" name="SampleFace"/>
+  <Param type="RichBool" value="{f}" name="SampleFace"/>
   <Param type="RichInt" value="{n}" name="SampleNum"/>
   <Param type="RichAbsPerc" value="1e9" min="0" max="1e9" name="MaxDist"/>
  </filter>
@@ -69,12 +69,17 @@ PAIRS = [
 ]
 
 
-def write_script(path, scale, samplenum):
+# Sample kinds per mode: (vertices, edges, faces).
+MODES = {"all": (True, True, True), "vertices": (True, False, False), "faces": (False, False, True)}
+
+
+def write_script(path, scale, samplenum, mode="all"):
+    v, e, fc = ("true" if x else "false" for x in MODES[mode])
     with open(path, "w") as f:
         f.write("<!DOCTYPE FilterScript>\n<FilterScript>\n")
         f.write(SCALE_FILTER.format(s=scale))
         if samplenum is not None:
-            f.write(HAUSDORFF_FILTER.format(n=samplenum))
+            f.write(HAUSDORFF_FILTER.format(n=samplenum, v=v, e=e, f=fc))
         f.write("</FilterScript>\n")
 
 
@@ -102,8 +107,12 @@ def parse_meshlab(text, scale):
             "diag": float(d.group(1)) / scale}
 
 
-def run_meshdiff(bench, sampled, target, samples, runs):
+def run_meshdiff(bench, sampled, target, samples, runs, mode="all", threads=None):
     cmd = [bench, "--pair", sampled, target, "--one-sided", "--samples", str(samples), "--runs", str(runs)]
+    flags = dict(zip(("--no-vertices", "--no-edges", "--no-faces"), MODES[mode]))
+    cmd += [k for k, on in flags.items() if not on]
+    if threads:
+        cmd += ["--threads", str(threads)]
     t0 = time.monotonic()
     p = subprocess.run(cmd, capture_output=True, text=True)
     wall = time.monotonic() - t0
@@ -117,10 +126,10 @@ def run_meshdiff(bench, sampled, target, samples, runs):
             "command": " ".join(cmd)}
 
 
-def one_direction(args, tmp, sampled, target, samplenum):
+def one_direction(args, tmp, sampled, target, samplenum, mode="all", single_thread=False):
     hd = os.path.join(tmp, "hd.mlx")
     base = os.path.join(tmp, "base.mlx")
-    write_script(hd, args.scale, samplenum)
+    write_script(hd, args.scale, samplenum, mode)
     write_script(base, args.scale, None)
     log = os.path.join(tmp, "log.txt")
     wall_base, _, _ = run_meshlab(sampled, target, base, os.path.join(tmp, "base_log.txt"))
@@ -128,9 +137,12 @@ def one_direction(args, tmp, sampled, target, samplenum):
     ml = parse_meshlab(text, args.scale)
     ml.update({"wall_s": wall, "baseline_wall_s": wall_base, "filter_s": max(0.0, wall - wall_base),
                "command": cmd, "script": open(hd).read()})
-    md = run_meshdiff(args.bench, sampled, target, ml["samples"], args.runs)
-    return {"sampled": os.path.basename(sampled), "target": os.path.basename(target), "meshlab": ml,
-            "meshdiff": md}
+    md = run_meshdiff(args.bench, sampled, target, ml["samples"], args.runs, mode)
+    r = {"sampled": os.path.basename(sampled), "target": os.path.basename(target), "mode": mode, "meshlab": ml,
+         "meshdiff": md}
+    if single_thread:
+        r["meshdiff_1thread"] = run_meshdiff(args.bench, sampled, target, ml["samples"], args.runs, mode, 1)
+    return r
 
 
 def main():
@@ -143,21 +155,24 @@ def main():
     ap.add_argument("--igea-decimated", help="igea decimation for the timing case (see README.md)")
     ap.add_argument("--igea-samplenum", type=int, default=1276258,
                     help="MeshLab SampleNum for igea (134345 vertices + 2 x this = 10 x #faces of igea)")
+    ap.add_argument("--modes", default="all,vertices,faces",
+                    help="sample kinds to compare: all (V+E+F), vertices (vertices only), faces (faces only)")
     ap.add_argument("--json", help="write all results here")
     args = ap.parse_args()
 
     results = []
     with tempfile.TemporaryDirectory() as tmp:
-        for a, b in PAIRS:
-            pa, pb = os.path.join(args.data, a), os.path.join(args.data, b)
-            for s, t in ((pa, pb), (pb, pa)):
-                r = one_direction(args, tmp, s, t, args.samplenum)
-                results.append(r)
-                print(json.dumps(r_summary(r)), flush=True)
+        for mode in args.modes.split(","):
+            for a, b in PAIRS:
+                pa, pb = os.path.join(args.data, a), os.path.join(args.data, b)
+                for s, t in ((pa, pb), (pb, pa)):
+                    r = one_direction(args, tmp, s, t, args.samplenum, mode)
+                    results.append(r)
+                    print(json.dumps(r_summary(r)), flush=True)
         if args.igea_decimated:
             igea = os.path.join(args.data, "igea.ply")
             for s, t in ((igea, args.igea_decimated), (args.igea_decimated, igea)):
-                r = one_direction(args, tmp, s, t, args.igea_samplenum)
+                r = one_direction(args, tmp, s, t, args.igea_samplenum, "all", single_thread=True)
                 r["timing_case"] = True
                 results.append(r)
                 print(json.dumps(r_summary(r)), flush=True)
@@ -169,21 +184,23 @@ def main():
 
 def r_summary(r):
     ml, md = r["meshlab"], r["meshdiff"]
-    return {"dir": r["sampled"] + " -> " + r["target"], "n": ml["samples"],
+    return {"dir": r["sampled"] + " -> " + r["target"], "mode": r["mode"], "n": ml["samples"],
             "meshlab": [ml["max"], ml["mean"], ml["rms"], round(ml["filter_s"], 3)],
             "meshdiff": [md["max"], md["mean"], md["rms"], round(md["time_s"], 3)]}
 
 
 def print_table(results):
-    print("\n| direction (samples on -> distance to) | samples | tool | max | mean | RMS | time (s) |")
-    print("|---|---|---|---|---|---|---|")
+    print("\n| samples on -> distance to | kinds | samples | tool | max | mean | RMS | time (s) |")
+    print("|---|---|---|---|---|---|---|---|")
     for r in results:
         ml, md = r["meshlab"], r["meshdiff"]
         d = "{} -> {}".format(r["sampled"], r["target"])
-        print("| {} | {} | MeshLab | {:.6g} | {:.6g} | {:.6g} | {:.2f} (filter; {:.2f} whole run) |".format(
-            d, ml["samples"], ml["max"], ml["mean"], ml["rms"], ml["filter_s"], ml["wall_s"]))
-        print("| | {} | meshdiff | {:.6g} | {:.6g} | {:.6g} | {:.2f} ({} threads; {:.2f} whole run) |".format(
-            md["samples"], md["max"], md["mean"], md["rms"], md["time_s"], md["threads"], md["process_wall_s"]))
+        print("| {} | {} | {} | MeshLab | {:.7g} | {:.7g} | {:.7g} | {:.2f} filter ({:.2f} whole run) |".format(
+            d, r["mode"], ml["samples"], ml["max"], ml["mean"], ml["rms"], ml["filter_s"], ml["wall_s"]))
+        rows = [("meshdiff", md)] + ([("meshdiff", r["meshdiff_1thread"])] if "meshdiff_1thread" in r else [])
+        for name, m in rows:
+            print("| | | {} | {} | {:.7g} | {:.7g} | {:.7g} | {:.2f} ({} thread(s), median of runs) |".format(
+                m["samples"], name, m["max"], m["mean"], m["rms"], m["time_s"], m["threads"]))
 
 
 if __name__ == "__main__":
