@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 #include <Eigen/Geometry>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 
 #include <cmath>
 #include <cstddef>
@@ -22,29 +24,27 @@ void require(bool ok, const char* field, const std::string& what)
 void validate_options(const SmoothingOptions& o)
 {
     require(o.iterations >= 0, "iterations", fmt::format("must be >= 0 (got {})", o.iterations));
-    switch (o.method) {
-        case SmoothingMethod::Laplacian:
-            require(std::isfinite(o.lambda) && o.lambda > 0 && o.lambda <= 1, "lambda",
-                    fmt::format("must be in (0, 1] (got {})", o.lambda));
-            break;
-        case SmoothingMethod::Taubin:
-            require(std::isfinite(o.lambda) && o.lambda > 0 && o.lambda <= 1, "lambda",
-                    fmt::format("must be in (0, 1] (got {})", o.lambda));
-            require(std::isfinite(o.mu) && o.mu < -o.lambda && o.mu >= -1, "mu",
-                    fmt::format("must be < -lambda = {} and >= -1 (got {})", -o.lambda, o.mu));
-            break;
-        case SmoothingMethod::Bilaplacian:
-            require(std::isfinite(o.damping) && o.damping > 0 && o.damping <= 1, "damping",
-                    fmt::format("must be in (0, 1] (got {})", o.damping));
-            break;
-        case SmoothingMethod::ModifiedMeanCurvatureFlow:
-            require(std::isfinite(o.epsilon) && o.epsilon >= 0 && o.epsilon < 1, "epsilon",
-                    fmt::format("must be in [0, 1) (got {})", o.epsilon));
-            [[fallthrough]];
-        case SmoothingMethod::MeanCurvatureFlow:
-            require(std::isfinite(o.step) && o.step > 0 && o.step <= 10, "step",
-                    fmt::format("must be in (0, 10] (got {})", o.step));
-            break;
+    const bool flow =
+        o.method == SmoothingMethod::MeanCurvatureFlow || o.method == SmoothingMethod::ModifiedMeanCurvatureFlow;
+    require(!o.implicit || o.method == SmoothingMethod::MeanCurvatureFlow, "implicit",
+            "applies to mean curvature flow (mcf) only");
+    require(!o.implicit || o.update == SmoothingUpdate::Post, "implicit", "is a simultaneous solve: use post-updating");
+    if (o.method == SmoothingMethod::Laplacian || o.method == SmoothingMethod::Taubin)
+        require(std::isfinite(o.lambda) && o.lambda > 0 && o.lambda <= 1, "lambda",
+                fmt::format("must be in (0, 1] (got {})", o.lambda));
+    if (o.method == SmoothingMethod::Taubin)
+        require(std::isfinite(o.mu) && o.mu < -o.lambda && o.mu >= -1, "mu",
+                fmt::format("must be < -lambda = {} and >= -1 (got {})", -o.lambda, o.mu));
+    if (o.method == SmoothingMethod::Bilaplacian)
+        require(std::isfinite(o.damping) && o.damping > 0 && o.damping <= 1, "damping",
+                fmt::format("must be in (0, 1] (got {})", o.damping));
+    if (o.method == SmoothingMethod::ModifiedMeanCurvatureFlow)
+        require(std::isfinite(o.epsilon) && o.epsilon >= 0 && o.epsilon < 1, "epsilon",
+                fmt::format("must be in [0, 1) (got {})", o.epsilon));
+    if (flow) {
+        const double max_step = o.implicit ? 1000.0 : 10.0;
+        require(std::isfinite(o.step) && o.step > 0 && o.step <= max_step, "step",
+                fmt::format("must be in (0, {}] (got {})", max_step, o.step));
     }
 }
 
@@ -67,6 +67,19 @@ double cot(const Vec3& a, const Vec3& b)
     return a.dot(b) / cross;
 }
 
+// The part of vertex i's mixed area (Meyer et al. 2002) in triangle (i, j, k),
+// given its edges from i and the cotangents at j and k: the Voronoi part for a
+// non-obtuse triangle, half the area if the angle at i is obtuse, a quarter if
+// another angle is.
+double mixed_area_part(const Vec3& eij, const Vec3& eik, const Vec3& ejk, double cot_j, double cot_k)
+{
+    const double tri = 0.5 * eij.cross(eik).norm();
+    if (!(tri > 0)) return 0.0;
+    if (eij.dot(eik) < 0) return tri / 2;
+    if ((-eij).dot(ejk) < 0 || eik.dot(ejk) < 0) return tri / 4;
+    return (eij.squaredNorm() * cot_k + eik.squaredNorm() * cot_j) / 8;
+}
+
 // Mean-curvature normal Hn_i = 1/(4 A_mixed) sum (cot a + cot b)(x_j - x_i),
 // from the faces around i. Zero where the mixed area vanishes.
 Vec3 curvature_normal(const Mesh& mesh, const Adjacency& vf, const std::vector<Vec3>& p, std::size_t i)
@@ -85,20 +98,64 @@ Vec3 curvature_normal(const Mesh& mesh, const Adjacency& vf, const std::vector<V
         const double cot_j = cot(-eij, ejk);   // angle at j, opposite edge (i, k)
         const double cot_k = cot(-eik, -ejk);  // angle at k, opposite edge (i, j)
         sum += cot_k * eij + cot_j * eik;
-        const double tri = 0.5 * eij.cross(eik).norm();
-        if (!(tri > 0)) continue;
-        // Mixed area (Meyer et al. 2002).
-        const bool obtuse_i = eij.dot(eik) < 0;
-        const bool obtuse_other = (-eij).dot(ejk) < 0 || eik.dot(ejk) < 0;
-        if (obtuse_i)
-            area += tri / 2;
-        else if (obtuse_other)
-            area += tri / 4;
-        else
-            area += (eij.squaredNorm() * cot_k + eik.squaredNorm() * cot_j) / 8;
+        area += mixed_area_part(eij, eik, ejk, cot_j, cot_k);
     }
     if (!(area > 0)) return Vec3::Zero();
     return sum / (4 * area);
+}
+
+// One backward-Euler MCF step (Desbrun et al. 1999): (D - dt L) X' = D X with
+// D = diag(4 A_mixed), L the cotangent Laplacian; fixed vertices keep their
+// positions (identity rows), as do vertices without area.
+void implicit_mcf_step(const Mesh& mesh, const Adjacency& vf, const std::vector<char>& fixed, double dt,
+                       std::vector<Vec3>& p)
+{
+    const std::size_t n = p.size();
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(7 * n);
+    Eigen::MatrixXd rhs(Eigen::Index(n), 3);
+    std::vector<std::pair<std::size_t, double>> w;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto row = Eigen::Index(i);
+        rhs.row(row) = p[i].transpose();
+        double area = 0.0;
+        w.clear();
+        if (!fixed[i]) {
+            for (auto f = vf.begin(i); f != vf.end(i); ++f) {
+                const Face& tri = mesh.faces[*f];
+                int k = 0;
+                while (k < 3 && std::size_t(tri[std::size_t(k)]) != i) ++k;
+                if (k == 3) continue;
+                const auto j = std::size_t(tri[std::size_t((k + 1) % 3)]);
+                const auto l = std::size_t(tri[std::size_t((k + 2) % 3)]);
+                const Vec3 eij = p[j] - p[i], eil = p[l] - p[i], ejl = p[l] - p[j];
+                const double cot_j = cot(-eij, ejl), cot_l = cot(-eil, -ejl);
+                w.emplace_back(j, cot_l);
+                w.emplace_back(l, cot_j);
+                area += mixed_area_part(eij, eil, ejl, cot_j, cot_l);
+            }
+        }
+        if (fixed[i] || !(area > 0)) {
+            t.emplace_back(row, row, 1.0);
+            continue;
+        }
+        double diagonal = 4 * area;
+        for (const auto& [j, wij] : w) {
+            t.emplace_back(row, Eigen::Index(j), -dt * wij);
+            diagonal += dt * wij;
+        }
+        t.emplace_back(row, row, diagonal);
+        rhs.row(row) *= 4 * area;
+    }
+    const auto size = Eigen::Index(n);
+    Eigen::SparseMatrix<double> a(size, size);
+    a.setFromTriplets(t.begin(), t.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    lu.compute(a);
+    if (lu.info() != Eigen::Success) throw SolverError("smooth: implicit mcf: the system could not be factorised");
+    const Eigen::MatrixXd x = lu.solve(rhs);
+    if (lu.info() != Eigen::Success) throw SolverError("smooth: implicit mcf: the solve failed");
+    for (std::size_t i = 0; i < n; ++i) p[i] = x.row(Eigen::Index(i)).transpose();
 }
 
 // Ohtake et al. (2000) eq. 13: move along the umbrella at MCF normal speed.
@@ -187,6 +244,10 @@ public:
                 }
                 break;
             case SmoothingMethod::MeanCurvatureFlow:
+                if (o_.implicit) {
+                    implicit_mcf_step(mesh_, vf_, fixed_, dt_, mesh_.points);
+                    break;
+                }
                 sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 {
                     return Vec3(dt_ * curvature_normal(mesh_, vf_, p, i));
                 });

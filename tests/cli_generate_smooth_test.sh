@@ -81,6 +81,8 @@ done
 expect_exit 0 smooth "$tmp/hf.ply" "$tmp/hf_smooth.off" --method taubin --lambda 0.6 --mu -0.65 --iterations 3
 [ -s "$tmp/hf_smooth.off" ] || fail "smooth to .off: no output"
 expect_exit 0 smooth "$tmp/torus_irr.ply" "$tmp/t_mcf.ply" --method mcf --step 0.05 --iterations 3
+expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/implicit.ply" --method mcf --implicit --step 20 --iterations 2
+[ -s "$tmp/implicit.ply" ] || fail "smooth --implicit: no output"
 expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/bilap.ply" --method bilaplacian --damping 0.5 --iterations 2
 expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/zero.ply" --iterations 0
 if cmp -s "$tmp/noisy.ply" "$tmp/smooth_laplacian_post.ply"; then fail "smooth changed nothing"; fi
@@ -103,6 +105,8 @@ expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --update sideways
 expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --iterations -1
 expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method taubin --mu -0.1
 expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method mcf --step 0
+expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method taubin --implicit
+expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method mcf --implicit --update pre
 expect_exit 2 smooth "$tmp/noisy.ply"
 expect_exit 3 smooth "$tmp/does_not_exist.ply" "$tmp/bad.ply"
 [ ! -e "$tmp/bad.ply" ] || fail "a rejected smooth wrote a file"

@@ -70,6 +70,19 @@ double mean_quality(const Mesh& m)
     return q / double(m.n_faces());
 }
 
+double mean_edge_length(const Mesh& m)
+{
+    const Adjacency adj = vertex_adjacency(m);
+    double sum = 0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < adj.size(); ++i)
+        for (auto j = adj.begin(i); j != adj.end(i); ++j) {
+            sum += (m.points[i] - m.points[*j]).norm();
+            ++n;
+        }
+    return sum / double(n);
+}
+
 bool all_finite(const Mesh& m)
 {
     return std::all_of(m.points.begin(), m.points.end(), [](const Vec3& p) { return p.allFinite(); });
@@ -148,14 +161,7 @@ TEST(Smoothing, MeanCurvatureFlowMovesASphereInwardAtSpeedH)
         Mesh mesh = sphere;
         SmoothingOptions o = options(SmoothingMethod::MeanCurvatureFlow, u, 1);
         o.step = 0.2;
-        double e = 0;  // mean edge length, as the smoother computes it
-        std::size_t n = 0;
-        for (const Face& f : sphere.faces)
-            for (int k = 0; k < 3; ++k) {
-                e += (sphere.points[std::size_t(f[k])] - sphere.points[std::size_t(f[(k + 1) % 3])]).norm();
-                ++n;
-            }
-        e /= double(n);
+        const double e = mean_edge_length(sphere);
         const double dt = o.step * e * e;
         smooth(mesh, o);
         double mean_r = 0;
@@ -243,6 +249,60 @@ TEST(Smoothing, ModifiedMeanCurvatureFlowRegularisesTrianglesMeanCurvatureFlowDo
     }
 }
 
+TEST(Smoothing, ImplicitMeanCurvatureFlowMatchesExplicitForSmallStepsAndTakesLargeOnes)
+{
+    const Shape s = noisy_sphere(3, 0.03, 21);
+    SmoothingOptions o = options(SmoothingMethod::MeanCurvatureFlow, SmoothingUpdate::Post, 1);
+    o.step = 0.005;
+    Mesh expl = s.mesh, impl = s.mesh;
+    smooth(expl, o);
+    o.implicit = true;
+    smooth(impl, o);
+    double moved = 0, diff = 0;
+    for (std::size_t i = 0; i < expl.n_vertices(); ++i) {
+        moved = std::max(moved, (expl.points[i] - s.mesh.points[i]).norm());
+        diff = std::max(diff, (expl.points[i] - impl.points[i]).norm());
+    }
+    EXPECT_GT(moved, 0.0);
+    EXPECT_LT(diff, 0.1 * moved);
+
+    // A step twenty times the explicit stability limit: stays finite and smooths.
+    Mesh big = s.mesh;
+    o.step = 10;
+    o.iterations = 3;
+    smooth(big, o);
+    ASSERT_TRUE(all_finite(big));
+    EXPECT_LT(radial_spread(big), 0.3 * radial_spread(s.mesh));
+    // The continuous flow would have collapsed the sphere (t = 30 e^2 > 1/2);
+    // backward Euler lags it and keeps a small positive volume.
+    EXPECT_GT(signed_volume(big), 0.01 * signed_volume(s.mesh));
+
+    // A sphere under mean curvature flow (speed H = 1/r) has r^2 = r0^2 - 2t;
+    // with moderate implicit steps the volume follows (r^2)^(3/2).
+    Mesh moderate = s.mesh;
+    o.step = 1;
+    o.iterations = 5;
+    smooth(moderate, o);
+    const double e = mean_edge_length(s.mesh), t = o.iterations * o.step * e * e;
+    const double expected = std::pow(1 - 2 * t, 1.5);
+    EXPECT_NEAR(signed_volume(moderate) / signed_volume(s.mesh), expected, 0.1 * expected) << "t " << t;
+
+    // Boundary rows stay fixed.
+    const Shape hf = heightfield_irregular(400, 2);
+    const std::vector<char> boundary = boundary_vertex_mask(hf.mesh);
+    Mesh open = hf.mesh;
+    o.step = 2;
+    smooth(open, o);
+    std::size_t moved_inner = 0;
+    for (std::size_t i = 0; i < open.n_vertices(); ++i) {
+        if (boundary[i])
+            EXPECT_EQ(open.points[i], hf.mesh.points[i]) << i;
+        else if (open.points[i] != hf.mesh.points[i])
+            ++moved_inner;
+    }
+    EXPECT_GT(moved_inner, open.n_vertices() / 2);
+}
+
 TEST(Smoothing, DegenerateFacesProduceNoNaN)
 {
     Mesh mesh = noisy_sphere(2, 0.02, 4).mesh;
@@ -255,6 +315,10 @@ TEST(Smoothing, DegenerateFacesProduceNoNaN)
             smooth(out, options(m, u, 5));
             EXPECT_TRUE(all_finite(out)) << label(m, u);
         }
+    SmoothingOptions o = options(SmoothingMethod::MeanCurvatureFlow, SmoothingUpdate::Post, 5);
+    o.implicit = true;
+    smooth(mesh, o);
+    EXPECT_TRUE(all_finite(mesh)) << "implicit mcf";
 }
 
 TEST(Smoothing, InvalidOptionsThrowNamingTheField)
@@ -290,6 +354,13 @@ TEST(Smoothing, InvalidOptionsThrowNamingTheField)
     o.method = SmoothingMethod::ModifiedMeanCurvatureFlow;
     o.epsilon = 1.0;
     EXPECT_NE(message(o).find("epsilon"), std::string::npos);
+    o = SmoothingOptions{};
+    o.method = SmoothingMethod::Taubin;
+    o.implicit = true;
+    EXPECT_NE(message(o).find("implicit"), std::string::npos);
+    o.method = SmoothingMethod::MeanCurvatureFlow;
+    o.update = SmoothingUpdate::Pre;
+    EXPECT_NE(message(o).find("implicit"), std::string::npos);
     // Fields of other methods are not checked.
     o = SmoothingOptions{};
     o.mu = 0.7;

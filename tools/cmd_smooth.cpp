@@ -51,8 +51,9 @@ nlohmann::json recording_json(const SmoothArgs& a, const SmoothingOptions& o, co
     j["output"] = a.out;
     j["method"] = smoothing_method_name(o.method);
     j["update"] = smoothing_update_name(o.update);
-    j["parameters"] = {{"iterations", o.iterations}, {"lambda", o.lambda},  {"mu", o.mu}, {"step", o.step},
-                       {"damping", o.damping},       {"epsilon", o.epsilon}};
+    j["parameters"] = {
+        {"iterations", o.iterations}, {"lambda", o.lambda},    {"mu", o.mu}, {"step", o.step}, {"damping", o.damping},
+        {"epsilon", o.epsilon},       {"implicit", o.implicit}};
     j["curvature"] = to_string(p.curvature.method);
     j["profile_every"] = a.profile_every;
     j["iterations"] = r.iterations;
@@ -123,6 +124,8 @@ void add_smooth_command(CLI::App& app, Action& action)
     sub->add_option("--mu", o.mu, "Taubin negative step, < -lambda")->capture_default_str();
     sub->add_option("--step", o.step, "mcf / modified-mcf time step in units of the squared mean edge length")
         ->capture_default_str();
+    sub->add_flag("--implicit", o.implicit,
+                  "mcf only: backward-Euler steps (Desbrun et al.), stable for large --step (up to 1000)");
     sub->add_option("--damping", o.damping, "bilaplacian relaxation factor, in (0, 1]")->capture_default_str();
     sub->add_option("--epsilon", o.epsilon,
                     "modified-mcf: vertices whose umbrella is within acos(eps) of "

@@ -21,6 +21,11 @@
 //!   triangle's area for obtuse ones). |Hn_i| approximates |H|, and Hn points
 //!   to the inside of a convex surface, so a sphere of radius r shrinks by
 //!   about dt / r per step.
+//!   With `implicit` set, each MCF iteration is instead one backward-Euler step
+//!   of Desbrun et al.: (D - dt L) X' = D X, D = diag(4 A_i), L the cotangent
+//!   Laplacian (L_ij = cot a_ij + cot b_ij, L_ii = -sum_j L_ij), weights and
+//!   areas taken from the current positions (semi-implicit), boundary rows
+//!   fixed, solved by sparse LU; no volume rescaling. It allows large steps.
 //! - Modified mean curvature flow (Ohtake, Belyaev, Bogaevski 2000, eq. 13):
 //!   move along the umbrella direction m = U/|U| at the normal speed of mean
 //!   curvature flow. With cos t = m . Hn / |Hn|: F = |Hn| m / cos t if cos t >
@@ -70,12 +75,14 @@ struct SmoothingOptions
 {
     SmoothingMethod method = SmoothingMethod::Laplacian;
     SmoothingUpdate update = SmoothingUpdate::Post;
-    int iterations = 10;   //!< >= 0; a Taubin iteration is one lambda and one mu step
-    double lambda = 0.5;   //!< Laplacian and Taubin step, in (0, 1]
-    double mu = -0.53;     //!< Taubin's negative step, mu < -lambda and mu >= -1
-    double step = 0.1;     //!< MCF / modified MCF step, in units of the mean edge length squared; in (0, 10]
-    double damping = 1.0;  //!< bilaplacian relaxation factor, in (0, 1]
-    double epsilon = 0.1;  //!< modified MCF: |cos t| below this does not move the vertex; in [0, 1)
+    int iterations = 10;    //!< >= 0; a Taubin iteration is one lambda and one mu step
+    double lambda = 0.5;    //!< Laplacian and Taubin step, in (0, 1]
+    double mu = -0.53;      //!< Taubin's negative step, mu < -lambda and mu >= -1
+    double step = 0.1;      //!< MCF / modified MCF step, in units of the mean edge length squared; in (0, 10]
+                            //!< (implicit MCF: in (0, 1000])
+    bool implicit = false;  //!< MCF only: backward-Euler steps (post-updating only)
+    double damping = 1.0;   //!< bilaplacian relaxation factor, in (0, 1]
+    double epsilon = 0.1;   //!< modified MCF: |cos t| below this does not move the vertex; in [0, 1)
     //! Called once before the first iteration with 0 and after every iteration
     //! k = 1..iterations with the current mesh (for profiles during smoothing).
     std::function<void(int iteration, const Mesh& mesh)> callback;
@@ -87,8 +94,8 @@ struct SmoothingOptions
 //!        method is out of range.
 //! \throw InvalidMeshError if the mesh fails meshdiff::validate().
 //! \throw SolverError if an iteration produces a non-finite coordinate (an
-//!        explicit flow step too large for the mesh); the mesh then holds the
-//!        last finite state.
+//!        explicit flow step too large for the mesh) or the implicit system
+//!        cannot be factorised; the mesh then holds the last finite state.
 void smooth(Mesh& mesh, const SmoothingOptions& options);
 
 //! "laplacian", "taubin", "bilaplacian", "mcf", "modified-mcf".
