@@ -2,6 +2,8 @@
 
 #include "meshdiff/error.h"
 
+#include "detail/ply_reader.h"
+
 #include <fmt/format.h>
 #include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -140,39 +142,26 @@ public:
     CaptureOpenMeshLog& operator=(const CaptureOpenMeshLog&) = delete;
 };
 
-// Reads the declared element counts of a PLY header, to detect truncation.
-bool ply_header_counts(const std::filesystem::path& path, std::size_t& nv, std::size_t& nf, bool& binary)
+// True if an ASCII mesh file holds a "nan" or "inf" token: OpenMesh's text
+// readers stop at one without saying why, so this names the real problem.
+bool mentions_non_finite(const std::filesystem::path& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    std::string line;
-    if (!std::getline(in, line) || line.rfind("ply", 0) != 0) return false;
-    nv = nf = 0;
-    binary = false;
-    while (std::getline(in, line)) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        std::istringstream ss(line);
-        std::string word;
-        ss >> word;
-        if (word == "format") {
-            std::string fmt_name;
-            ss >> fmt_name;
-            binary = fmt_name != "ascii";
-        } else if (word == "element") {
-            std::string name;
-            std::size_t count = 0;
-            ss >> name >> count;
-            if (name == "vertex") nv = count;
-            if (name == "face") nf = count;
-        } else if (word == "end_header") {
-            return true;
-        }
+    std::ifstream in(path);
+    std::string tok;
+    while (in >> tok) {
+        std::transform(tok.begin(), tok.end(), tok.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+        const auto b = tok.find_first_not_of("+-");
+        if (b == std::string::npos) continue;
+        const std::string t = tok.substr(b);
+        if (t == "nan" || t == "inf" || t == "infinity" || t.rfind("nan(", 0) == 0) return true;
     }
     return false;
 }
 
 }  // namespace
 
-LoadedMesh read_mesh(const std::filesystem::path& path)
+namespace {
+LoadedMesh read_mesh_impl(const std::filesystem::path& path)
 {
     const std::string name = path.string();
     std::error_code ec;
@@ -191,29 +180,24 @@ LoadedMesh read_mesh(const std::filesystem::path& path)
         throw IoError(fmt::format("{}: unknown mesh format '{}' (expected .ply, .obj, .off or .stl)", name, ext));
 
     SoupImporter importer;
-    bool ok = false;
-    {
-        CaptureOpenMeshLog quiet;
-        OpenMesh::IO::Options opt;
-        ok = OpenMesh::IO::IOManager().read(name, importer, opt);
-    }
-    if (!ok)
-        throw IoError(fmt::format("{}: could not parse the file as {} (corrupt or truncated?)", name, ext.substr(1)));
-
     if (ext == ".ply") {
-        std::size_t nv = 0, nf = 0;
-        bool binary = false;
-        if (!ply_header_counts(path, nv, nf, binary)) throw IoError(fmt::format("{}: malformed PLY header", name));
-        if (importer.points.size() != nv || importer.polygons.size() != nf)
-            throw IoError(
-                fmt::format("{}: PLY header declares {} vertices and {} faces but {} and {} could be read "
-                            "(truncated file?)",
-                            name, nv, nf, importer.points.size(), importer.polygons.size()));
-        if (binary) {
-            // OpenMesh does not notice a binary file that ends early: check the
-            // size against the smallest possible body.
-            // (Checked by the counts above for the usual case; a short body
-            // makes the reader stop early.)
+        // Our own reader: double precision and strict truncation checks.
+        detail::PlySoup soup = detail::read_ply(name);
+        importer.points = std::move(soup.points);
+        importer.polygons = std::move(soup.polygons);
+    } else {
+        bool ok = false;
+        {
+            CaptureOpenMeshLog quiet;
+            OpenMesh::IO::Options opt;
+            ok = OpenMesh::IO::IOManager().read(name, importer, opt);
+        }
+        if (!ok || importer.points.empty() || importer.polygons.empty()) {
+            if (mentions_non_finite(path))
+                throw InvalidMeshError(fmt::format("{}: the file has a non-finite coordinate (nan or inf)", name));
+            if (!ok)
+                throw IoError(
+                    fmt::format("{}: could not parse the file as {} (corrupt or truncated?)", name, ext.substr(1)));
         }
     }
 
@@ -265,6 +249,22 @@ LoadedMesh read_mesh(const std::filesystem::path& path)
         for (auto& v : t) v = remap[std::size_t(v)];
     out.mesh.faces = std::move(faces);
     return out;
+}
+
+}  // namespace
+
+LoadedMesh read_mesh(const std::filesystem::path& path)
+{
+    try {
+        return read_mesh_impl(path);
+    } catch (const Error&) {
+        // OpenMesh's text readers stop at a "nan" token without saying so;
+        // the symptoms (missing vertices, bad indices) hide the cause.
+        const std::string ext = lower_extension(path);
+        if ((ext == ".obj" || ext == ".off") && mentions_non_finite(path))
+            throw InvalidMeshError(fmt::format("{}: the file has a non-finite coordinate (nan or inf)", path.string()));
+        throw;
+    }
 }
 
 void write_ply(const std::filesystem::path& path, const Mesh& mesh, const std::vector<VertexScalar>& scalars,

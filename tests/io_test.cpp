@@ -1,3 +1,148 @@
+#include "meshdiff/io.h"
+
 #include <gtest/gtest.h>
 
-#include "meshdiff/io.h"
+#include "meshdiff/error.h"
+#include "meshdiff/shapes.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+using namespace meshdiff;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string data(const std::string& name)
+{
+    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
+}
+
+fs::path temp_dir()
+{
+    const fs::path d = fs::temp_directory_path() / ("meshdiff_io_test_" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+}
+
+fs::path write_text(const std::string& name, const std::string& text)
+{
+    const fs::path p = temp_dir() / name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+}
+
+template <class E>
+std::string error_of(const fs::path& p)
+{
+    try {
+        read_mesh(p);
+    } catch (const E& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+}  // namespace
+
+TEST(ReadMesh, AsciiPlyWithExtraVertexProperties)
+{
+    const LoadedMesh m = read_mesh(data("bunny_res4_ascii.ply"));
+    EXPECT_EQ(m.input.file_vertices, 453u);
+    EXPECT_EQ(m.input.file_faces, 948u);
+    EXPECT_EQ(m.mesh.n_vertices(), 453u);
+    EXPECT_EQ(m.mesh.n_faces(), 948u);
+    // First vertex of the file: -0.0312216 0.126304 (declared float).
+    EXPECT_EQ(m.mesh.points[0].x(), -0.0312216);  // ASCII is parsed in double
+    EXPECT_EQ(m.mesh.points[0].y(), 0.126304);
+}
+
+TEST(ReadMesh, BinaryPlyObjAndDroppedUnreferencedVertices)
+{
+    const LoadedMesh sphere = read_mesh(data("sphere_ico_2562.ply"));
+    EXPECT_EQ(sphere.mesh.n_vertices(), 2562u);
+    EXPECT_EQ(sphere.mesh.n_faces(), 5120u);
+    for (const auto& p : sphere.mesh.points) EXPECT_NEAR(p.norm(), 1.0, 1e-6);
+    const LoadedMesh teapot = read_mesh(data("teapot.obj"));
+    EXPECT_EQ(teapot.mesh.n_vertices(), 3644u);
+    EXPECT_EQ(teapot.mesh.n_faces(), 6320u);
+    const LoadedMesh bunny = read_mesh(data("bunny_res3.ply"));
+    EXPECT_EQ(bunny.input.file_vertices, 1889u);
+    EXPECT_EQ(bunny.input.unreferenced_vertices, 2u);
+    EXPECT_EQ(bunny.mesh.n_vertices(), 1887u);
+}
+
+TEST(ReadMesh, OffWithPolygonsAndStlRoundTrip)
+{
+    const auto off = write_text("quad.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n9 9 9\n4 0 1 2 3\n3 0 2 1\n");
+    const LoadedMesh m = read_mesh(off);
+    EXPECT_EQ(m.input.polygons_triangulated, 1u);
+    EXPECT_EQ(m.mesh.n_faces(), 3u);
+    EXPECT_EQ(m.input.unreferenced_vertices, 1u);
+    const Shape s = icosphere(2);
+    const fs::path stl = temp_dir() / "ico.stl";
+    write_mesh(stl, s.mesh);
+    const LoadedMesh back = read_mesh(stl);
+    EXPECT_EQ(back.mesh.n_faces(), s.mesh.n_faces());
+    EXPECT_EQ(back.mesh.n_vertices(), s.mesh.n_vertices());  // the STL reader welds corners
+}
+
+TEST(WritePly, RoundTripKeepsDoublePrecisionAndProperties)
+{
+    Shape s = icosphere(2);
+    s.mesh.points[0] += Vec3(1e-13, 0, 0);
+    const fs::path p = temp_dir() / "ico.ply";
+    write_ply(p, s.mesh, {{"H", s.exact_H}}, std::vector<std::array<std::uint8_t, 3>>(s.mesh.n_vertices(), {1, 2, 3}));
+    const LoadedMesh back = read_mesh(p);
+    ASSERT_EQ(back.mesh.n_vertices(), s.mesh.n_vertices());
+    EXPECT_EQ(back.mesh.points[0], s.mesh.points[0]);
+    EXPECT_EQ(back.mesh.faces, s.mesh.faces);
+    EXPECT_THROW(write_ply(p, s.mesh, {{"H", {1.0}}}), InvalidArgumentError);
+}
+
+TEST(ReadMesh, BadInputsGiveOneClearErrorNamingTheFile)
+{
+    EXPECT_NE(error_of<IoError>("/nonexistent/x.ply").find("/nonexistent/x.ply: no such file"), std::string::npos);
+    const auto empty = write_text("empty.ply", "");
+    EXPECT_NE(error_of<IoError>(empty).find("empty.ply: file is empty"), std::string::npos);
+    const auto unknown = write_text("mesh.xyz", "1 2 3\n");
+    EXPECT_NE(error_of<IoError>(unknown).find("unknown mesh format"), std::string::npos);
+    EXPECT_NE(error_of<IoError>(temp_dir()).find("directory"), std::string::npos);
+
+    // A binary PLY cut in the middle of its face list.
+    std::ifstream in(data("sphere_ico_2562.ply"), std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto truncated = write_text("truncated.ply", bytes.substr(0, bytes.size() * 2 / 3));
+    const std::string msg = error_of<IoError>(truncated);
+    EXPECT_NE(msg.find("truncated.ply"), std::string::npos) << msg;
+
+    for (const char* name : {"nan.off", "nan.obj", "nan.ply"}) {
+        const std::string text = std::string(name) == "nan.off" ? "OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"
+                                 : std::string(name) == "nan.obj"
+                                     ? "v 0 0 0\nv 0 nan 0\nv 0 1 0\nf 1 2 3\n"
+                                     : "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty "
+                                       "float y\nproperty float z\nelement face 1\nproperty list uchar int "
+                                       "vertex_indices\nend_header\n0 0 0\n1 0 inf\n0 1 0\n3 0 1 2\n";
+        const auto p = write_text(name, text);
+        const std::string nan_msg = error_of<InvalidMeshError>(p);
+        EXPECT_NE(nan_msg.find("non-finite"), std::string::npos) << nan_msg;
+        EXPECT_NE(nan_msg.find(name), std::string::npos) << nan_msg;
+    }
+    const auto noface = write_text("noface.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+    EXPECT_NE(error_of<InvalidMeshError>(noface).find("no faces"), std::string::npos);
+    const auto badindex = write_text("badindex.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n");
+    const std::string bi = error_of<InvalidMeshError>(badindex);
+    EXPECT_NE(bi.find("badindex.off"), std::string::npos) << bi;
+    const auto garbage = write_text("garbage.ply", "ply\nformat ascii 1.0\nelement vertex 3\nend_header\nfoo\n");
+    const std::string g = error_of<Error>(garbage);
+    EXPECT_NE(g.find("garbage.ply"), std::string::npos) << g;
+}
+
+TEST(ReadMesh, RepeatedCornersAreDroppedAndCounted)
+{
+    const auto p = write_text("rep.off", "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 1 1 2\n3 1 3 2\n");
+    const LoadedMesh m = read_mesh(p);
+    EXPECT_EQ(m.input.repeated_index_faces, 1u);
+    EXPECT_EQ(m.mesh.n_faces(), 2u);
+}
