@@ -5,7 +5,8 @@
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config
       libopenmesh-dev libeigen3-dev libnanoflann-dev libfmt-dev
-      libgtest-dev nlohmann-json3-dev libcli11-dev)
+      libgtest-dev nlohmann-json3-dev libcli11-dev
+      clang-format python3)
 if [[ "${1:-}" == "--reference" ]]; then
     pkgs+=(meshlab xvfb xauth gnuplot-nox libopenmesh-apps hyperfine)
 fi
