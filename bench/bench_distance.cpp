@@ -52,6 +52,21 @@ double peak_rss_mib()
     return double(u.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
+// One-minute load average of the machine (other processes compete for cores).
+double load1()
+{
+    double l[1] = {0.0};
+    return getloadavg(l, 1) == 1 ? l[0] : -1.0;
+}
+
+// User + system CPU time of the process (all threads), in seconds.
+double cpu_seconds()
+{
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
 // Torus (axis z, centre radius R, tube radius r) on an nu x nv grid, with a
 // radial perturbation of the tube of relative amplitude `wave`.
 Mesh torus(int nu, int nv, double R, double r, double wave)
@@ -86,16 +101,19 @@ void print_stats(const char* name, const meshdiff::DistanceStats& s, double diag
 
 void run_one_sided(const Mesh& a, const Mesh& b, int runs, const meshdiff::SamplingOptions& options)
 {
-    std::vector<double> times;
+    std::vector<double> times, cpu;
     meshdiff::DistanceStats s;
     for (int k = 0; k < runs; ++k) {
+        const double c0 = cpu_seconds();
         const auto t0 = std::chrono::steady_clock::now();
         const meshdiff::ClosestPointIndex index(b);
         s = meshdiff::one_sided_distance(a, index, options);
         const auto t1 = std::chrono::steady_clock::now();
         times.push_back(std::chrono::duration<double>(t1 - t0).count());
+        cpu.push_back(cpu_seconds() - c0);
     }
     std::sort(times.begin(), times.end());
+    std::sort(cpu.begin(), cpu.end());
     fmt::print(
         "one-sided samples {} v {} e {} f {} min {:.17g} max {:.17g} mean {:.17g} rms {:.17g} time_s {:.4f} "
         "threads {} peak_rss_mib {:.1f}\n",
@@ -108,20 +126,25 @@ void run_case(const std::string& label, const Mesh& a, const Mesh& b, int runs,
 {
     fmt::print("{}: A {} vertices {} faces, B {} vertices {} faces, threads {}\n", label, a.n_vertices(), a.n_faces(),
                b.n_vertices(), b.n_faces(), omp_get_max_threads());
-    std::vector<double> times;
+    std::vector<double> times, cpu;
     meshdiff::SurfaceDistance r;
     for (int k = 0; k < runs; ++k) {
+        const double c0 = cpu_seconds();
         const auto t0 = std::chrono::steady_clock::now();
         r = meshdiff::surface_distance(a, b, options);
         const auto t1 = std::chrono::steady_clock::now();
         times.push_back(std::chrono::duration<double>(t1 - t0).count());
+        cpu.push_back(cpu_seconds() - c0);
     }
     std::sort(times.begin(), times.end());
+    std::sort(cpu.begin(), cpu.end());
     print_stats("forward", r.forward, r.diagonal);
     print_stats("backward", r.backward, r.diagonal);
     fmt::print("  hausdorff {:.6g} (diag A {:.6g}, metro diag {:.6g})\n", r.hausdorff, r.diagonal, r.metro_diagonal);
-    fmt::print("  time median {:.3f} s (min {:.3f}, max {:.3f}, {} runs)  peak RSS so far {:.1f} MiB\n",
-               times[times.size() / 2], times.front(), times.back(), runs, peak_rss_mib());
+    fmt::print(
+        "  time median {:.3f} s (min {:.3f}, max {:.3f}, {} runs), CPU median {:.3f} s, load {:.2f}"
+        "  peak RSS so far {:.1f} MiB\n",
+        times[times.size() / 2], times.front(), times.back(), runs, cpu[cpu.size() / 2], load1(), peak_rss_mib());
 }
 
 [[noreturn]] void usage()

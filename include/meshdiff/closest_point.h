@@ -9,17 +9,19 @@
 //! gets its true distance. The traversal (nearest child first, branch and
 //! bound) prunes a node only when its box is provably farther than the best
 //! triangle found, so the answer equals the brute-force minimum over all
-//! triangles.
+//! triangles (to the last bits of rounding).
 //!
 //! Degenerate triangles. A triangle whose two edges at corner 0 are (numerically)
-//! parallel, sin(angle) <= 1e-10, or that has a zero-length edge or a repeated
-//! corner, is treated as the union of its three edges, i.e. as a segment or a
-//! point; its distance is then the exact distance to that set.
+//! parallel, sin(angle) <= 1e-8, or that has a zero-length edge or a repeated
+//! corner, is treated as the union of its three edges: exact for a segment or
+//! a point, and off by at most the triangle's width (below 1e-8 of its longest
+//! edge) for a nearly flat one.
 //!
 //! Ties and determinism. Among triangles at the same computed distance the one
-//! with the lowest face index wins, so every result is a function of the query
-//! alone: batch queries give bit-identical results for any number of OpenMP
-//! threads and any order.
+//! with the lowest face index wins. Batch queries run in parallel over fixed
+//! blocks of consecutive queries (each query starting its search from the
+//! previous one's triangle), so their results are bit-identical for any number
+//! of OpenMP threads.
 #pragma once
 
 #include "meshdiff/mesh.h"

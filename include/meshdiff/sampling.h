@@ -22,6 +22,14 @@
 //! from a std::mt19937_64 seeded with `seed` (reproducible on every platform).
 //! Edge samples are the n points that cut an edge into n + 1 equal parts.
 //!
+//! Known limit of SimilarTriangles: the lattice holds interior points only (a
+//! band of width 1/(k+2) along the edges has none; Metro relies on the edge
+//! samples there), and the per-face shortfall moves samples to the next face,
+//! so face samples alone are not area-uniform. Where distances differ between
+//! face interiors and edges (a coarse mesh against a fine one), sample means
+//! from faces only differ from area-uniform (MonteCarlo) ones by a few percent
+//! (3-5% on the bunny pairs of reference/meshlab/README.md).
+//!
 //! Degenerate (zero-area, see degenerate_face_mask) faces get no face samples;
 //! their edges are sampled like any other edge. Unreferenced vertices get no
 //! sample.

@@ -3,15 +3,18 @@
 "Hausdorff Distance" filter (meshlabserver, headless under xvfb-run).
 
 For each pair (A, B) and each direction (samples on S, distances to T) it runs:
-  1. MeshLab: `xvfb-run -a meshlabserver -i S T -s hd.mlx -l log`, where hd.mlx
+  1. MeshLab: `xvfb-run -a meshlabserver -i T S -s hd.mlx -l log`, where hd.mlx
      first scales both layers by SCALE about the origin ("Transform: Scale,
      Normalize", frozen; MeshLab's log prints only 6 decimals, so this keeps
-     about 9 significant digits of small distances) and then runs "Hausdorff
-     Distance" with SampleNum = N, vertex + edge + face samples and MaxDist set
-     to 1e9 (absolute) so that no sample is dropped (the default, 5% of the
-     diagonal, silently drops far samples). MeshLab's numbers are divided by
-     SCALE. MeshLab's filter time is estimated as the wall time of this run
-     minus the wall time of a run of the scaling step alone (start-up + load).
+     about 9 significant digits of small distances), removes the unreferenced
+     vertices of S (the current layer; meshdiff drops them when reading, and
+     MeshLab would otherwise sample them) and then runs "Hausdorff Distance"
+     on SampledMesh = S, TargetMesh = T with SampleNum = N, the sample kinds of
+     the mode, and MaxDist set to 1e9 (absolute) so that no sample is dropped
+     (the default, 5% of the diagonal, silently drops far samples). MeshLab's
+     numbers are divided by SCALE. MeshLab's filter time is estimated as the
+     wall time of this run minus the wall time of a run of the same script
+     without the Hausdorff step (start-up, loading, scaling).
   2. meshdiff: `meshdiff_bench_distance --pair S T --one-sided --samples M`,
      where M is the number of samples MeshLab reports, so that both tools use
      the same total sample count. meshdiff's time is its own measurement of
@@ -31,6 +34,7 @@ import argparse
 import json
 import os
 import re
+import resource
 import subprocess
 import sys
 import tempfile
@@ -49,9 +53,13 @@ SCALE_FILTER = """ <filter name="Transform: Scale, Normalize">
  </filter>
 """
 
+# Applies to the current layer, which is the last one loaded: the sampled mesh.
+UNREFERENCED_FILTER = """ <filter name="Remove Unreferenced Vertices"/>
+"""
+
 HAUSDORFF_FILTER = """ <filter name="Hausdorff Distance">
-  <Param type="RichMesh" value="0" name="SampledMesh"/>
-  <Param type="RichMesh" value="1" name="TargetMesh"/>
+  <Param type="RichMesh" value="1" name="SampledMesh"/>
+  <Param type="RichMesh" value="0" name="TargetMesh"/>
   <Param type="RichBool" value="false" name="SaveSample"/>
   <Param type="RichBool" value="{v}" name="SampleVert"/>
   <Param type="RichBool" value="{e}" name="SampleEdge"/>
@@ -70,7 +78,10 @@ PAIRS = [
 
 
 # Sample kinds per mode: (vertices, edges, faces).
-MODES = {"all": (True, True, True), "vertices": (True, False, False), "faces": (False, False, True)}
+# faces-mc: meshdiff's Monte Carlo face scheme (MeshLab's face samples are
+# always Monte Carlo).
+MODES = {"all": (True, True, True), "vertices": (True, False, False), "faces": (False, False, True),
+         "faces-mc": (False, False, True)}
 
 
 def write_script(path, scale, samplenum, mode="all"):
@@ -78,6 +89,7 @@ def write_script(path, scale, samplenum, mode="all"):
     with open(path, "w") as f:
         f.write("<!DOCTYPE FilterScript>\n<FilterScript>\n")
         f.write(SCALE_FILTER.format(s=scale))
+        f.write(UNREFERENCED_FILTER)
         if samplenum is not None:
             f.write(HAUSDORFF_FILTER.format(n=samplenum, v=v, e=e, f=fc))
         f.write("</FilterScript>\n")
@@ -86,14 +98,18 @@ def write_script(path, scale, samplenum, mode="all"):
 def run_meshlab(sampled, target, script, log):
     if os.path.exists(log):
         os.remove(log)
-    cmd = ["xvfb-run", "-a", "meshlabserver", "-i", sampled, target, "-s", script, "-l", log]
+    # The sampled mesh is loaded last, so that it is the current layer.
+    cmd = ["xvfb-run", "-a", "meshlabserver", "-i", target, sampled, "-s", script, "-l", log]
+    c0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.monotonic()
     p = subprocess.run(cmd, capture_output=True, text=True)
     wall = time.monotonic() - t0
+    c1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (c1.ru_utime + c1.ru_stime) - (c0.ru_utime + c0.ru_stime)
     if p.returncode != 0:
         raise RuntimeError("meshlabserver failed ({}): {}".format(p.returncode, (p.stdout + p.stderr)[-2000:]))
     text = open(log).read() if os.path.exists(log) else ""
-    return wall, text, " ".join(cmd)
+    return wall, cpu, text, " ".join(cmd)
 
 
 def parse_meshlab(text, scale):
@@ -111,6 +127,8 @@ def run_meshdiff(bench, sampled, target, samples, runs, mode="all", threads=None
     cmd = [bench, "--pair", sampled, target, "--one-sided", "--samples", str(samples), "--runs", str(runs)]
     flags = dict(zip(("--no-vertices", "--no-edges", "--no-faces"), MODES[mode]))
     cmd += [k for k, on in flags.items() if not on]
+    if mode == "faces-mc":
+        cmd += ["--monte-carlo"]
     if threads:
         cmd += ["--threads", str(threads)]
     t0 = time.monotonic()
@@ -122,7 +140,7 @@ def run_meshdiff(bench, sampled, target, samples, runs, mode="all", threads=None
     r = {fields[i]: fields[i + 1] for i in range(1, len(fields) - 1, 2)}
     return {"samples": int(r["samples"]), "n_vertex": int(r["v"]), "n_edge": int(r["e"]), "n_face": int(r["f"]),
             "min": float(r["min"]), "max": float(r["max"]), "mean": float(r["mean"]), "rms": float(r["rms"]),
-            "time_s": float(r["time_s"]), "threads": int(r["threads"]), "process_wall_s": wall,
+            "time_s": float(r["time_s"]), "cpu_s": float(r["cpu_s"]), "threads": int(r["threads"]), "process_wall_s": wall,
             "command": " ".join(cmd)}
 
 
@@ -132,10 +150,12 @@ def one_direction(args, tmp, sampled, target, samplenum, mode="all", single_thre
     write_script(hd, args.scale, samplenum, mode)
     write_script(base, args.scale, None)
     log = os.path.join(tmp, "log.txt")
-    wall_base, _, _ = run_meshlab(sampled, target, base, os.path.join(tmp, "base_log.txt"))
-    wall, text, cmd = run_meshlab(sampled, target, hd, log)
+    wall_base, cpu_base, _, _ = run_meshlab(sampled, target, base, os.path.join(tmp, "base_log.txt"))
+    wall, cpu, text, cmd = run_meshlab(sampled, target, hd, log)
     ml = parse_meshlab(text, args.scale)
     ml.update({"wall_s": wall, "baseline_wall_s": wall_base, "filter_s": max(0.0, wall - wall_base),
+               "cpu_s": cpu, "baseline_cpu_s": cpu_base, "filter_cpu_s": max(0.0, cpu - cpu_base),
+               "load1": os.getloadavg()[0],
                "command": cmd, "script": open(hd).read()})
     md = run_meshdiff(args.bench, sampled, target, ml["samples"], args.runs, mode)
     r = {"sampled": os.path.basename(sampled), "target": os.path.basename(target), "mode": mode, "meshlab": ml,
@@ -155,8 +175,9 @@ def main():
     ap.add_argument("--igea-decimated", help="igea decimation for the timing case (see README.md)")
     ap.add_argument("--igea-samplenum", type=int, default=1276258,
                     help="MeshLab SampleNum for igea (134345 vertices + 2 x this = 10 x #faces of igea)")
-    ap.add_argument("--modes", default="all,vertices,faces",
-                    help="sample kinds to compare: all (V+E+F), vertices (vertices only), faces (faces only)")
+    ap.add_argument("--modes", default="all,vertices,faces,faces-mc",
+                    help="sample kinds to compare: all (V+E+F), vertices (vertices only), faces (faces only), "
+                    "faces-mc (faces only, meshdiff's Monte Carlo scheme)")
     ap.add_argument("--json", help="write all results here")
     args = ap.parse_args()
 
