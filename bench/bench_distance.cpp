@@ -24,7 +24,9 @@
 //                                 from the loaded meshes (index build, sampling,
 //                                 queries, statistics); one line
 //                                 "one-sided samples N v N e N f N min X max X
-//                                 mean X rms X time_s T" for scripts
+//                                 mean X rms X time_s T cpu_s C threads N
+//                                 peak_rss_mib M" for scripts (T: median wall
+//                                 time, C: median CPU time of all threads)
 #include "meshdiff/closest_point.h"
 #include "meshdiff/io.h"
 #include "meshdiff/surface_distance.h"
@@ -116,9 +118,9 @@ void run_one_sided(const Mesh& a, const Mesh& b, int runs, const meshdiff::Sampl
     std::sort(cpu.begin(), cpu.end());
     fmt::print(
         "one-sided samples {} v {} e {} f {} min {:.17g} max {:.17g} mean {:.17g} rms {:.17g} time_s {:.4f} "
-        "threads {} peak_rss_mib {:.1f}\n",
+        "cpu_s {:.4f} threads {} peak_rss_mib {:.1f}\n",
         s.n_samples(), s.n_vertex, s.n_edge, s.n_face, s.min, s.max, s.mean, s.rms, times[times.size() / 2],
-        omp_get_max_threads(), peak_rss_mib());
+        cpu[cpu.size() / 2], omp_get_max_threads(), peak_rss_mib());
 }
 
 void run_case(const std::string& label, const Mesh& a, const Mesh& b, int runs,
