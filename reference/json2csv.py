@@ -1,0 +1,124 @@
+#!/usr/bin/env python3
+"""Turn meshdiff JSON reports into CSV tables for gnuplot or a spreadsheet.
+
+Standard library only.
+
+  json2csv.py profiles OUT.csv NAME=PROFILE.json [NAME=PROFILE.json ...]
+      One row per level (the global level last, written as "global"), one column
+      per mesh with its sigma. When a report holds the profile computed from the
+      exact curvature (key "exact", from `meshdiff profile --exact`), a column
+      NAME_exact follows; otherwise that column is left out.
+
+  json2csv.py smoothing OUT.csv NAME=SMOOTHING.json [NAME=SMOOTHING.json ...]
+      Long table: name,iteration,level,sigma (level is a number or "global").
+
+  json2csv.py smoothing-wide OUT.csv SMOOTHING.json
+      One row per recorded iteration: iteration,L1,L5,...,global.
+
+OUT may be "-" for stdout.
+"""
+import csv
+import json
+import sys
+
+
+def load(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def split_arg(arg):
+    if "=" in arg:
+        name, path = arg.split("=", 1)
+    else:
+        path = arg
+        name = path.rsplit("/", 1)[-1].rsplit(".", 1)[0]
+    return name, path
+
+
+def profile_columns(name, d):
+    """{level: sigma} for the estimated and, if present, the exact profile."""
+    if d.get("schema", "").split("/")[0] != "meshdiff.profile":
+        raise SystemExit(f"json2csv: {name}: not a meshdiff.profile report (schema {d.get('schema')!r})")
+    est = dict(zip(d["levels"], d["sigma"]))
+    if d.get("sigma_global") is not None:
+        est["global"] = d["sigma_global"]
+    cols = [(name, est)]
+    ex = d.get("exact")
+    if isinstance(ex, dict) and "sigma" in ex:
+        exact = dict(zip(ex.get("levels", d["levels"]), ex["sigma"]))
+        if ex.get("sigma_global") is not None:
+            exact["global"] = ex["sigma_global"]
+        cols.append((name + "_exact", exact))
+    return cols
+
+
+def open_out(path):
+    return sys.stdout if path == "-" else open(path, "w", newline="")
+
+
+def fmt(v):
+    return "" if v is None else repr(float(v))
+
+
+def profiles(out, args):
+    cols = []
+    for a in args:
+        name, path = split_arg(a)
+        cols += profile_columns(name, load(path))
+    levels = sorted({k for _, c in cols for k in c if k != "global"})
+    if any("global" in c for _, c in cols):
+        levels.append("global")
+    with open_out(out) as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["level"] + [n for n, _ in cols])
+        for L in levels:
+            w.writerow([L] + [fmt(c.get(L)) for _, c in cols])
+
+
+def smoothing_records(d):
+    if d.get("schema", "").split("/")[0] != "meshdiff.smoothing":
+        raise SystemExit(f"json2csv: not a meshdiff.smoothing report (schema {d.get('schema')!r})")
+    levels = list(d["levels"])
+    glob = d.get("sigma_global")
+    for k, it in enumerate(d["iterations"]):
+        row = dict(zip(levels, d["sigma"][k]))
+        if glob is not None and glob[k] is not None:
+            row["global"] = glob[k]
+        yield it, row
+    return
+
+
+def smoothing(out, args):
+    with open_out(out) as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["name", "iteration", "level", "sigma"])
+        for a in args:
+            name, path = split_arg(a)
+            for it, row in smoothing_records(load(path)):
+                for L, s in row.items():
+                    w.writerow([name, it, L, fmt(s)])
+
+
+def smoothing_wide(out, args):
+    if len(args) != 1:
+        raise SystemExit("json2csv: smoothing-wide takes one report")
+    d = load(split_arg(args[0])[1])
+    keys = list(d["levels"]) + (["global"] if d.get("sigma_global") is not None else [])
+    with open_out(out) as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(["iteration"] + [("L%s" % k if k != "global" else k) for k in keys])
+        for it, row in smoothing_records(d):
+            w.writerow([it] + [fmt(row.get(k)) for k in keys])
+
+
+def main(argv):
+    if len(argv) < 4 or argv[1] not in ("profiles", "smoothing", "smoothing-wide"):
+        sys.stderr.write(__doc__)
+        return 2
+    {"profiles": profiles, "smoothing": smoothing, "smoothing-wide": smoothing_wide}[argv[1]](argv[2], argv[3:])
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,197 @@
+#!/usr/bin/env bash
+# Regenerate the reference studies of the paper (Kushunapally, Razdan, Bridges 2007) with
+# meshdiff's own commands: data (JSON from meshdiff, CSV from reference/json2csv.py) and
+# gnuplot plots under reference/out/. See reference/README.md.
+#
+#   reference/studies.sh            # from the repository root
+#   MESHDIFF=build/meshdiff MESHES=../shared/data/meshes reference/studies.sh
+#
+# MESHDIFF and MESHES are taken relative to the current directory. Needs bash, python3
+# (standard library) and gnuplot. Large intermediate meshes go to reference/out/work/
+# (not committed). A few minutes on 2 cores.
+set -euo pipefail
+
+MESHDIFF=${MESHDIFF:-build/meshdiff}
+MESHES=${MESHES:-../shared/data/meshes}
+MESHDIFF=$(cd "$(dirname "$MESHDIFF")" && pwd)/$(basename "$MESHDIFF")
+MESHES=$(cd "$MESHES" && pwd)
+REF=$(cd "$(dirname "$0")" && pwd)
+OUT=$REF/out
+WORK=$OUT/work
+[[ -x $MESHDIFF ]] || { echo "studies.sh: no meshdiff binary at $MESHDIFF (set MESHDIFF)" >&2; exit 2; }
+[[ -f $MESHES/bunny_closed.ply ]] || { echo "studies.sh: no meshes in $MESHES (set MESHES)" >&2; exit 2; }
+command -v gnuplot > /dev/null || { echo "studies.sh: gnuplot not found" >&2; exit 2; }
+
+md() { "$MESHDIFF" "$@"; }
+PY="python3"
+J2C="$PY $REF/json2csv.py"
+PLOTP=$REF/plot_profiles.sh
+PLOTS=$REF/plot_smoothing.sh
+PLY="$PY $REF/plytool.py"
+
+# The profile of the exact curvature beside the estimated one, when this meshdiff has it.
+EXACT=()
+if md profile --help 2>&1 | grep -q -- '--exact'; then EXACT=(--exact); fi
+
+SUBDIV=${SUBDIV:-4}        # icosphere subdivisions: 4 = 2,562 vertices, 5,120 triangles
+ITER=${ITER:-50}           # smoothing iterations
+NOISE_REAL=${NOISE_REAL:-0.5}   # noise on bunny and igea, times the mean edge length
+
+mkdir -p "$OUT" "$WORK"
+rm -f "$OUT/timing.txt"
+start_all=$SECONDS
+section() {
+    if [[ -n ${section_name:-} ]]; then
+        echo "$section_name: $((SECONDS - section_start)) s" >> "$OUT/timing.txt"
+    fi
+    section_name=$1
+    section_start=$SECONDS
+    echo "== $1" >&2
+}
+# prof NAME MESH OUT.json [options...]: profile at levels 1-20 and global.
+prof() {
+    local mesh=$1 json=$2
+    shift 2
+    md profile "$mesh" --levels 1-20 --json "$json" "$@" > /dev/null
+}
+
+# ---------------------------------------------------------------------------------------------
+section "1 noise and stretching (Fig. 5)"
+d=$OUT/1_sphere_noise_stretch
+mkdir -p "$d"
+args=()
+for n in 0 0.005 0.01 0.02 0.04; do
+    md generate noisy-sphere "$WORK/sphere_noise_$n.ply" --subdivisions "$SUBDIV" --noise "$n" --seed 1 > /dev/null
+    x=()
+    [[ $n == 0 ]] && x=("${EXACT[@]}")
+    prof "$WORK/sphere_noise_$n.ply" "$d/noise_$n.json" "${x[@]}"
+    args+=("noise $n=$d/noise_$n.json")
+done
+"$PLOTP" "$d/noise.png" "Icosphere ($SUBDIV subdivisions) with uniform radial noise (fraction of the radius)" "${args[@]}" > /dev/null
+LOGY=1 "$PLOTP" "$d/noise_log.png" "Icosphere with radial noise (log scale)" "${args[@]}" > /dev/null
+args=()
+for a in 1 1.25 1.5 2 3; do
+    md generate ellipsoid "$WORK/ellipsoid_$a.ply" --subdivisions "$SUBDIV" --axes "$a" 1 1 > /dev/null
+    prof "$WORK/ellipsoid_$a.ply" "$d/stretch_$a.json" "${EXACT[@]}"
+    args+=("axes $a,1,1=$d/stretch_$a.json")
+done
+"$PLOTP" "$d/stretch.png" "Icosphere stretched along x to semi-axes (a, 1, 1)" "${args[@]}" > /dev/null
+
+# ---------------------------------------------------------------------------------------------
+section "2 real models (Figs. 1, 4)"
+d=$OUT/2_models
+mkdir -p "$d"
+args=()
+for m in bunny_closed igea rocker_arm fandisk; do
+    prof "$MESHES/$m.ply" "$d/$m.json"
+    args+=("$m=$d/$m.json")
+done
+"$PLOTP" "$d/models.png" "Roughness profiles of real models (goldfeather)" "${args[@]}" > /dev/null
+LOGY=1 "$PLOTP" "$d/models_log.png" "Roughness profiles of real models (goldfeather, log scale)" "${args[@]}" > /dev/null
+
+# ---------------------------------------------------------------------------------------------
+section "3 smoothing (Figs. 6-9, 11-12)"
+d=$OUT/3_smoothing
+mkdir -p "$d"
+md generate noisy-sphere "$WORK/s3_noisy_sphere.ply" --subdivisions "$SUBDIV" --noise 0.02 --seed 1 > /dev/null
+md generate ellipsoid "$WORK/s3_ellipsoid.ply" --subdivisions "$SUBDIV" --axes 1.5 1 1 > /dev/null
+$PLY noise "$MESHES/bunny_closed.ply" "$WORK/s3_bunny_noisy.ply" --amplitude "$NOISE_REAL" --seed 1 > /dev/null
+$PLY noise "$MESHES/igea.ply" "$WORK/s3_igea_noisy.ply" --amplitude "$NOISE_REAL" --seed 1 > /dev/null
+METHODS="laplacian taubin bilaplacian mcf modified-mcf"
+for mesh in noisy_sphere ellipsoid bunny_noisy igea_noisy; do
+    every=5
+    [[ $mesh == igea_noisy ]] && every=10
+    args=()
+    for m in $METHODS; do
+        md smooth "$WORK/s3_$mesh.ply" "$WORK/s3_${mesh}_post_$m.ply" --method "$m" --update post \
+            --iterations "$ITER" --profile-every "$every" --json "$d/${mesh}_post_$m.json" > /dev/null
+        args+=("$m=$d/${mesh}_post_$m.json")
+    done
+    "$PLOTS" "$d/${mesh}_post.png" "$mesh: five methods, post-updating, sigma against iterations" "${args[@]}" > /dev/null
+done
+for mesh in noisy_sphere ellipsoid bunny_noisy; do
+    args=()
+    for m in laplacian mcf modified-mcf; do
+        md smooth "$WORK/s3_$mesh.ply" "$WORK/s3_${mesh}_pre_$m.ply" --method "$m" --update pre \
+            --iterations "$ITER" --profile-every 5 --json "$d/${mesh}_pre_$m.json" > /dev/null
+        args+=("$m post=$d/${mesh}_post_$m.json" "$m pre=$d/${mesh}_pre_$m.json")
+    done
+    "$PLOTS" "$d/${mesh}_pre_post.png" "$mesh: pre- against post-updating" "${args[@]}" > /dev/null
+done
+# How far each smoothed mesh moved from its input (Metro-style, original coordinates).
+for mesh in noisy_sphere ellipsoid bunny_noisy; do
+    for u in post pre; do
+        for m in $METHODS; do
+            f=$WORK/s3_${mesh}_${u}_$m.ply
+            [[ -f $f ]] || continue
+            md compare "$WORK/s3_$mesh.ply" "$f" --no-roughness --samples 200000 \
+                --json "$d/${mesh}_${u}_${m}_distance.json" > /dev/null
+        done
+    done
+done
+
+# ---------------------------------------------------------------------------------------------
+section "4 regular against irregular sampling (Figs. 13-14)"
+d=$OUT/4_sampling
+mkdir -p "$d"
+md generate torus "$WORK/torus_regular.ply" --n 96 > /dev/null
+md generate torus-irregular "$WORK/torus_irregular.ply" --vertices 2304 --seed 1 > /dev/null
+md generate heightfield "$WORK/heightfield_regular.ply" > /dev/null
+md generate heightfield-irregular "$WORK/heightfield_irregular.ply" --seed 1 > /dev/null
+for s in torus heightfield; do
+    for r in regular irregular; do
+        prof "$WORK/${s}_$r.ply" "$d/${s}_$r.json" "${EXACT[@]}"
+    done
+    "$PLOTP" "$d/$s.png" "$s: regular against irregular sampling" \
+        "regular=$d/${s}_regular.json" "irregular=$d/${s}_irregular.json" > /dev/null
+done
+prof "$MESHES/sphere_ico_2562.ply" "$d/sphere_ico_2562.json"
+prof "$MESHES/sphere_irregular_3072.ply" "$d/sphere_irregular_3072.json"
+"$PLOTP" "$d/sphere.png" "Unit sphere: regular icosphere against irregular sampling" \
+    "sphere_ico_2562=$d/sphere_ico_2562.json" "sphere_irregular_3072=$d/sphere_irregular_3072.json" > /dev/null
+
+# ---------------------------------------------------------------------------------------------
+section "5 goldfeather against meyer (Fig. 3)"
+d=$OUT/5_curvature
+mkdir -p "$d"
+md smooth "$WORK/s3_noisy_sphere.ply" "$WORK/s5_smoothed_sphere.ply" --method laplacian --iterations 10 > /dev/null
+args=()
+for mesh in s5_smoothed_sphere sphere_noise_0; do
+    for c in goldfeather quadric meyer; do
+        prof "$WORK/$mesh.ply" "$d/${mesh#s5_}_$c.json" --curvature "$c"
+    done
+done
+for c in goldfeather meyer; do
+    prof "$MESHES/sphere_irregular_3072.ply" "$d/sphere_irregular_3072_$c.json" --curvature "$c"
+done
+LOGY=1 "$PLOTP" "$d/curvature.png" "Goldfeather against Meyer curvature on spheres (log scale)" \
+    "smoothed noisy sphere, goldfeather=$d/smoothed_sphere_goldfeather.json" \
+    "smoothed noisy sphere, quadric=$d/smoothed_sphere_quadric.json" \
+    "smoothed noisy sphere, meyer=$d/smoothed_sphere_meyer.json" \
+    "clean icosphere, goldfeather=$d/sphere_noise_0_goldfeather.json" \
+    "clean icosphere, meyer=$d/sphere_noise_0_meyer.json" \
+    "irregular sphere, goldfeather=$d/sphere_irregular_3072_goldfeather.json" \
+    "irregular sphere, meyer=$d/sphere_irregular_3072_meyer.json" > /dev/null
+
+# ---------------------------------------------------------------------------------------------
+section "6 bumps on a smoothed ellipsoid (Fig. 10)"
+d=$OUT/6_bumps
+mkdir -p "$d"
+cp "$WORK/s3_ellipsoid.ply" "$WORK/s6_ellipsoid_none.ply"
+for m in none $METHODS; do
+    f=$WORK/s6_ellipsoid_$m.ply
+    [[ $m == none ]] || f=$WORK/s3_ellipsoid_post_$m.ply
+    md profile "$f" --levels 1,3,5 --json "$d/ellipsoid_$m.json" --vertex-data "$WORK/s6_vd_$m.ply" > /dev/null
+    $PLY valence-stats "$WORK/s6_vd_$m.ply" --prop H --prop D_1 --prop D_3 > "$d/ellipsoid_${m}_by_valence.json"
+    $PLY points "$WORK/s6_vd_$m.ply" "$d/ellipsoid_${m}_vertices.dat" --prop H --prop D_3
+done
+"$REF/plot_bumps.sh" "$d/bumps.png" "$d" none $METHODS > /dev/null
+
+section done
+{
+    echo "total: $((SECONDS - start_all)) s"
+    echo "machine: $(uname -sm), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
+    echo "meshdiff: $("$MESHDIFF" --version 2>&1 | head -1); exact profiles: ${EXACT[*]:-not available}"
+} >> "$OUT/timing.txt"
+$PY "$REF/summarize.py" "$OUT" > "$OUT/summary.md"
+echo "studies.sh: done in $((SECONDS - start_all)) s; see $OUT/summary.md" >&2
