@@ -8,12 +8,14 @@
 //! rho = R / A (A: area of the non-degenerate faces) and an edge density
 //! sqrt(rho) per unit length; every unique edge gets its share; what is left,
 //! R - n_e, gives the final face density (R - n_e) / A. Fractional counts carry
-//! over from one edge (face) to the next in index order, so the totals match the
-//! target up to a few samples, never above it. If the vertices alone exceed T
-//! there are no edge or face samples. With edges off, the face density is R / A;
-//! with faces off, the edge density is R / L (L: total length of the unique
-//! edges). Unlike Metro, the edge density is capped at R / L, so that a small
-//! target is not overshot by the edges (Metro then exceeds its target).
+//! over from one edge (face) to the next in index order, so the total matches
+//! the target up to a few samples and never exceeds it, except that every
+//! referenced vertex is always a sample: if the vertices alone reach T, there
+//! are no edge or face samples and the total is the vertex count. With edges
+//! off, the face density is R / A; with faces off, the edge density is R / L
+//! (L: total length of the unique edges). Unlike Metro, the edge density is
+//! capped at R / L, so that a small target is not overshot by the edges (Metro
+//! then exceeds its target).
 //!
 //! Face schemes. SimilarTriangles (Metro's default, deterministic): a face that
 //! is due n samples gets the k(k+1)/2 interior points of a lattice of triangles
