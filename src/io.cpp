@@ -180,11 +180,14 @@ LoadedMesh read_mesh_impl(const std::filesystem::path& path)
         throw IoError(fmt::format("{}: unknown mesh format '{}' (expected .ply, .obj, .off or .stl)", name, ext));
 
     SoupImporter importer;
+    std::vector<VertexScalar> scalars;
     if (ext == ".ply") {
         // Our own reader: double precision and strict truncation checks.
         detail::PlySoup soup = detail::read_ply(name);
         importer.points = std::move(soup.points);
         importer.polygons = std::move(soup.polygons);
+        for (std::size_t k = 0; k < soup.scalar_names.size(); ++k)
+            scalars.push_back({soup.scalar_names[k], std::move(soup.scalar_values[k])});
     } else {
         bool ok = false;
         {
@@ -248,6 +251,13 @@ LoadedMesh read_mesh_impl(const std::filesystem::path& path)
     for (auto& t : faces)
         for (auto& v : t) v = remap[std::size_t(v)];
     out.mesh.faces = std::move(faces);
+    for (auto& sc : scalars) {
+        VertexScalar kept{sc.name, {}};
+        kept.values.reserve(out.mesh.points.size());
+        for (std::size_t i = 0; i < remap.size(); ++i)
+            if (remap[i] >= 0) kept.values.push_back(sc.values[i]);
+        out.vertex_scalars.push_back(std::move(kept));
+    }
     return out;
 }
 

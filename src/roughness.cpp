@@ -57,7 +57,9 @@ LevelRoughness level_roughness(int level, const std::vector<double>& D, double o
     return r;
 }
 
-RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options)
+namespace {
+
+void check_options(const ProfileOptions& options)
 {
     for (int l : options.levels)
         if (l < 1) throw InvalidArgumentError(fmt::format("profile: level {} is < 1 (levels count rings)", l));
@@ -65,32 +67,22 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
         throw InvalidArgumentError("profile: no level requested (empty level list and no global level)");
     if (!(options.outlier_fraction > 0.0 && options.outlier_fraction <= 1.0))
         throw InvalidArgumentError("profile: outlier_fraction must be in (0, 1]");
+}
 
-    RoughnessProfile p;
-    p.vertices = mesh.n_vertices();
-    p.normalization = unit_normalization(mesh);
-    const Mesh unit = apply_normalization(mesh, p.normalization);
-    const Adjacency adj = vertex_adjacency(unit);
-    const std::vector<Vec3> normals = vertex_normals(unit);
-
-    p.curvature_options = options.curvature;
-    CurvatureField field = mean_curvature(unit, adj, normals, options.curvature);
-    p.curvature_undefined = field.undefined;
-    p.curvature_widened = field.widened;
-    p.curvature_fallback = field.quadric_fallback;
-    const std::vector<double>& H = field.H;
+// Levels and global level from H on the normalised mesh; fills p.
+void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj, std::vector<double> H,
+                    std::size_t undefined, const ProfileOptions& options)
+{
     const std::size_t n = H.size();
-
     const DiskMeans means = disk_means(unit, adj, H, options.levels);
     std::vector<double> D(n);
     for (std::size_t li = 0; li < options.levels.size(); ++li) {
         for (std::size_t i = 0; i < n; ++i) D[i] = H[i] - means.mean[li][i];  // NaN propagates
         LevelRoughness lr = level_roughness(options.levels[li], D, options.outlier_fraction);
-        lr.no_neighborhood = (n - field.undefined) - lr.vertices_used;
+        lr.no_neighborhood = (n - undefined) - lr.vertices_used;
         p.levels.push_back(std::move(lr));
         if (options.keep_vertex_data) p.D.push_back(D);
     }
-
     if (options.global) {
         p.has_global = true;
         // Mean over all other vertices with defined H, in O(n).
@@ -105,10 +97,56 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
             D[i] = (std::isnan(H[i]) || m < 2) ? std::numeric_limits<double>::quiet_NaN()
                                                : H[i] - double((sum - H[i]) / (long double)(m - 1));
         p.global = level_roughness(0, D, options.outlier_fraction);
-        p.global.no_neighborhood = (n - field.undefined) - p.global.vertices_used;
+        p.global.no_neighborhood = (n - undefined) - p.global.vertices_used;
         if (options.keep_vertex_data) p.D_global = D;
     }
-    if (options.keep_vertex_data) p.H = std::move(field.H);
+    if (options.keep_vertex_data) p.H = std::move(H);
+}
+
+}  // namespace
+
+RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options)
+{
+    check_options(options);
+    RoughnessProfile p;
+    p.vertices = mesh.n_vertices();
+    p.normalization = unit_normalization(mesh);
+    const Mesh unit = apply_normalization(mesh, p.normalization);
+    const Adjacency adj = vertex_adjacency(unit);
+    const std::vector<Vec3> normals = vertex_normals(unit);
+
+    p.curvature_options = options.curvature;
+    CurvatureField field = mean_curvature(unit, adj, normals, options.curvature);
+    p.curvature_undefined = field.undefined;
+    p.curvature_widened = field.widened;
+    p.curvature_fallback = field.quadric_fallback;
+    profile_from_H(p, unit, adj, std::move(field.H), field.undefined, options);
+    return p;
+}
+
+RoughnessProfile roughness_profile_from_curvature(const Mesh& mesh, const std::vector<double>& H_in,
+                                                  const ProfileOptions& options)
+{
+    check_options(options);
+    if (H_in.size() != mesh.n_vertices())
+        throw InvalidArgumentError(
+            fmt::format("profile: {} curvature values for {} vertices", H_in.size(), mesh.n_vertices()));
+    RoughnessProfile p;
+    p.vertices = mesh.n_vertices();
+    p.normalization = unit_normalization(mesh);
+    const Mesh unit = apply_normalization(mesh, p.normalization);
+    std::vector<double> H(H_in);
+    std::size_t undefined = 0;
+    for (double& h : H) {
+        if (!std::isfinite(h)) {
+            h = std::numeric_limits<double>::quiet_NaN();
+            ++undefined;
+        } else {
+            h *= p.normalization.scale;
+        }
+    }
+    p.curvature_undefined = undefined;
+    profile_from_H(p, unit, vertex_adjacency(unit), std::move(H), undefined, options);
     return p;
 }
 

@@ -271,3 +271,17 @@ TEST(LevelRoughness, TopShareFlagsOneDominantVertex)
     std::vector<double> even(2000, 0.5);
     EXPECT_NEAR(level_roughness(1, even).top_share, 2.0 / 2000.0, 1e-12);
 }
+
+TEST(RoughnessProfile, FromExactCurvatureOfASphereIsZeroEverywhere)
+{
+    const Shape s = icosphere(3, 2.5);
+    const auto p = roughness_profile_from_curvature(s.mesh, s.exact_H);
+    for (const auto& l : p.levels) EXPECT_NEAR(l.sigma, 0.0, 1e-14);
+    EXPECT_NEAR(p.global.sigma, 0.0, 1e-14);
+    // The torus has a non-constant exact H: the true profile grows with the level.
+    const Shape t = torus(64, 32);
+    const auto q = roughness_profile_from_curvature(t.mesh, t.exact_H);
+    EXPECT_LT(q.levels[0].sigma, q.levels[9].sigma);
+    EXPECT_LT(q.levels[9].sigma, q.global.sigma * 1.0001);
+    EXPECT_THROW(roughness_profile_from_curvature(t.mesh, {1.0, 2.0}), InvalidArgumentError);
+}

@@ -25,10 +25,20 @@ struct InputReport
     std::size_t repeated_index_faces = 0;   //!< dropped: a corner repeated (no area, no edges of its own)
 };
 
+//! A named per-vertex scalar (read from or written as a PLY vertex property).
+struct VertexScalar
+{
+    std::string name;
+    std::vector<double> values;  //!< one per vertex; NaN is written as NaN
+};
+
 struct LoadedMesh
 {
     Mesh mesh;
     InputReport input;
+    //! Scalar vertex properties of a PLY file other than x, y, z (for example
+    //! `exact_H` written by `meshdiff generate`), one value per kept vertex.
+    std::vector<VertexScalar> vertex_scalars;
 };
 
 //! Reads \p path. The format follows the extension (.ply .obj .off .stl).
@@ -40,13 +50,6 @@ struct LoadedMesh
 //! \throw InvalidMeshError if it has no vertices, no faces, a face index out of
 //!        range or a NaN/Inf coordinate.
 LoadedMesh read_mesh(const std::filesystem::path& path);
-
-//! A named per-vertex scalar written as a PLY `double` vertex property.
-struct VertexScalar
-{
-    std::string name;
-    std::vector<double> values;  //!< one per vertex; NaN is written as NaN
-};
 
 //! Writes a binary little-endian PLY with x y z (double), the given scalar
 //! properties, optional RGB colours (uchar red green blue) and the faces.

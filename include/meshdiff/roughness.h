@@ -72,6 +72,14 @@ struct RoughnessProfile
 //! \throw InvalidMeshError for a mesh without extent.
 RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options = {});
 
+//! The profile of \p mesh with H given per vertex (in the mesh's own units,
+//! NaN = undefined) instead of estimated: for example the exact H of an
+//! analytic surface, to set the true profile beside the estimated one. H is
+//! scaled by s to the normalised mesh. options.curvature is ignored.
+//! \throw InvalidArgumentError if H has the wrong size.
+RoughnessProfile roughness_profile_from_curvature(const Mesh& mesh, const std::vector<double>& H,
+                                                  const ProfileOptions& options = {});
+
 //! sigma of one level computed from D values (NaN skipped), with the counts
 //! and the outlier diagnostic. Exposed for tests and for other D sources.
 LevelRoughness level_roughness(int level, const std::vector<double>& D, double outlier_fraction = 0.001);

@@ -220,6 +220,15 @@ PlySoup read_ply(const std::string& path)
             if (e.name == "face" && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index"))
                 iface = int(k);
         }
+        std::vector<int> scalar_slot(e.props.size(), -1);
+        if (e.name == "vertex") {
+            for (std::size_t k = 0; k < e.props.size(); ++k)
+                if (!e.props[k].is_list && int(k) != ix && int(k) != iy && int(k) != iz) {
+                    scalar_slot[k] = int(soup.scalar_names.size());
+                    soup.scalar_names.push_back(e.props[k].name);
+                    soup.scalar_values.emplace_back();
+                }
+        }
         if (e.name == "vertex") {
             if (ix < 0 || iy < 0 || iz < 0) throw IoError(fmt::format("{}: PLY vertex element lacks x, y or z", path));
             soup.points.reserve(std::min<std::size_t>(e.count, 1u << 26));
@@ -251,6 +260,7 @@ PlySoup read_ply(const std::string& path)
                     if (int(k) == ix) xyz[0] = v;
                     if (int(k) == iy) xyz[1] = v;
                     if (int(k) == iz) xyz[2] = v;
+                    if (scalar_slot[k] >= 0) soup.scalar_values[std::size_t(scalar_slot[k])].push_back(v);
                 }
             }
             if (e.name == "vertex") soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);

@@ -16,6 +16,8 @@ struct PlySoup
 {
     std::vector<Vec3> points;
     std::vector<std::vector<int>> polygons;
+    std::vector<std::string> scalar_names;           //!< scalar vertex properties other than x, y, z
+    std::vector<std::vector<double>> scalar_values;  //!< [property][vertex]
 };
 
 //! \throw IoError naming \p path on any syntax error or truncation.
