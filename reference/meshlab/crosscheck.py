@@ -177,13 +177,13 @@ def main():
                     help="MeshLab SampleNum for igea (134345 vertices + 2 x this = 10 x #faces of igea)")
     ap.add_argument("--modes", default="all,vertices,faces,faces-mc",
                     help="sample kinds to compare: all (V+E+F), vertices (vertices only), faces (faces only), "
-                    "faces-mc (faces only, meshdiff's Monte Carlo scheme)")
+                    "faces-mc (faces only, meshdiff's Monte Carlo scheme); empty: only the igea timing case")
     ap.add_argument("--json", help="write all results here")
     args = ap.parse_args()
 
     results = []
     with tempfile.TemporaryDirectory() as tmp:
-        for mode in args.modes.split(","):
+        for mode in [m for m in args.modes.split(",") if m]:
             for a, b in PAIRS:
                 pa, pb = os.path.join(args.data, a), os.path.join(args.data, b)
                 for s, t in ((pa, pb), (pb, pa)):
