@@ -32,7 +32,7 @@ struct DiskMeans
 
 //! Computes disk means for all vertices and all \p levels at once, by
 //! bit-parallel breadth-first search from 64 spatially close centres at a
-//! time (batches follow a Morton order of the positions), up to the largest
+//! time (compact graph patches seeded in Morton order), up to the largest
 //! level. Parallel over batches with OpenMP; the result does not depend on the
 //! thread count (each centre's sums are accumulated in a fixed order).
 //! \param mesh       supplies the positions for the batch order
