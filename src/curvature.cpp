@@ -58,6 +58,9 @@ struct FitScratch
     Eigen::Matrix<double, Eigen::Dynamic, 7> M;
     Eigen::VectorXd rhs;
     Eigen::Matrix<double, Eigen::Dynamic, 3> Q;
+    // Kept between vertices: Eigen reallocates only when the row count changes.
+    Eigen::ColPivHouseholderQR<Eigen::Matrix<double, Eigen::Dynamic, 7>> qr7;
+    Eigen::ColPivHouseholderQR<Eigen::Matrix<double, Eigen::Dynamic, 3>> qr3;
     Eigen::VectorXd qrhs;
 };
 
@@ -102,8 +105,10 @@ FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& n
     const double cos_max = std::cos(opt.max_normal_angle_deg * M_PI / 180.0);
 
     if (cubic) {
-        s.M.resize(Eigen::Index(3 * m), 7);
-        s.rhs.resize(Eigen::Index(3 * m));
+        if (s.M.rows() < Eigen::Index(3 * m)) {
+            s.M.resize(Eigen::Index(3 * m), 7);
+            s.rhs.resize(Eigen::Index(3 * m));
+        }
         Eigen::Index r = 0;
         for (auto q : s.nbrs) {
             const Vec3 d = (mesh.points[q] - p) * inv_h;
@@ -125,8 +130,9 @@ FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& n
             }
         }
         if (r >= 7) {
-            Eigen::ColPivHouseholderQR<Eigen::Matrix<double, Eigen::Dynamic, 7>> qr(s.M.topRows(r));
+            auto& qr = s.qr7;
             qr.setThreshold(1e-10);
+            qr.compute(s.M.topRows(r));
             if (qr.rank() == 7) {
                 const Eigen::Matrix<double, 7, 1> X = qr.solve(s.rhs.head(r));
                 const double Hs = -(X(0) + X(2)) / 2.0;
@@ -150,8 +156,9 @@ FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& n
         s.qrhs(r++) = wt * z;
     }
     if (r < 3) return FitResult::Failed;
-    Eigen::ColPivHouseholderQR<Eigen::Matrix<double, Eigen::Dynamic, 3>> qr(s.Q);
+    auto& qr = s.qr3;
     qr.setThreshold(1e-10);
+    qr.compute(s.Q);
     if (qr.rank() < 3) return FitResult::Failed;
     const Eigen::Vector3d X = qr.solve(s.qrhs);
     const double Hs = -(X(0) + X(2)) / 2.0;
