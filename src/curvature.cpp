@@ -7,6 +7,7 @@
 #include <Eigen/QR>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -103,6 +104,14 @@ FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& n
     if (!(h > 0.0)) return FitResult::Failed;
     const double inv_h = 1.0 / h;
     const double cos_max = std::cos(opt.max_normal_angle_deg * M_PI / 180.0);
+    // Neighbour q in the scaled tangent frame, and its row weight.
+    auto local = [&](std::uint32_t q) {
+        const Vec3 d = (mesh.points[q] - p) * inv_h;
+        const double x = d.dot(u), y = d.dot(w);
+        const double wt =
+            opt.weighting == RowWeighting::InverseSquare && (x * x + y * y) > 0.0 ? 2.0 / (x * x + y * y) : 1.0;
+        return std::array<double, 4>{x, y, d.dot(N), wt};
+    };
 
     if (cubic) {
         if (s.M.rows() < Eigen::Index(3 * m)) {
@@ -111,10 +120,7 @@ FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& n
         }
         Eigen::Index r = 0;
         for (auto q : s.nbrs) {
-            const Vec3 d = (mesh.points[q] - p) * inv_h;
-            const double x = d.dot(u), y = d.dot(w), z = d.dot(N);
-            const double wt =
-                opt.weighting == RowWeighting::InverseSquare && (x * x + y * y) > 0.0 ? 2.0 / (x * x + y * y) : 1.0;
+            const auto [x, y, z, wt] = local(q);
             s.M.row(r) << x * x / 2, x * y, y * y / 2, x * x * x, x * x * y, x * y * y, y * y * y;
             s.M.row(r) *= wt;
             s.rhs(r++) = wt * z;
@@ -148,10 +154,7 @@ FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& n
     s.qrhs.resize(Eigen::Index(m));
     Eigen::Index r = 0;
     for (auto q : s.nbrs) {
-        const Vec3 d = (mesh.points[q] - p) * inv_h;
-        const double x = d.dot(u), y = d.dot(w), z = d.dot(N);
-        const double wt =
-            opt.weighting == RowWeighting::InverseSquare && (x * x + y * y) > 0.0 ? 2.0 / (x * x + y * y) : 1.0;
+        const auto [x, y, z, wt] = local(q);
         s.Q.row(r) << wt * x * x / 2, wt * x * y, wt * y * y / 2;
         s.qrhs(r++) = wt * z;
     }
