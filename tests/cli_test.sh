@@ -76,6 +76,11 @@ expect 0 "$bin" profile "$tmp/torus.ply" --exact --levels 1,5 --json "$tmp/t.jso
 json_check "$tmp/t.json" 'j["exact"]["property"] == "exact_H" and len(j["exact"]["sigma"]) == 2 and j["exact"]["h_error"]["rms"] < 0.1 and finite(j)'
 expect 2 "$bin" profile "$data/fandisk.ply" --exact
 
+# --- smoothing records profiles and the distance to the input
+expect 0 "$bin" generate noisy-sphere "$tmp/ns.ply" --subdivisions 3
+expect 0 "$bin" smooth "$tmp/ns.ply" "$tmp/ns_s.ply" --method laplacian --iterations 6 --profile-every 3 --json "$tmp/sm.json"
+json_check "$tmp/sm.json" 'j["iterations"] == [0, 3, 6] and len(j["distance_to_input"]) == 3 and j["distance_to_input"][0]["hausdorff"] == 0 and j["distance_to_input"][2]["hausdorff"] > 0 and j["sigma"][2][0] < j["sigma"][0][0] and finite(j)'
+
 # --- dirty and open meshes run to a report with their defects counted
 for m in teapot.obj bunny_res3.ply bunny_res4_ascii.ply hemisphere.ply; do
     expect 0 "$bin" profile "$data/$m" --json "$tmp/d.json" || continue

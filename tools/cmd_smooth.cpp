@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "meshdiff/surface_distance.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
 #include "meshdiff/roughness.h"
@@ -30,6 +31,7 @@ struct SmoothArgs
     std::string json;          // profile recording target ("-" for stdout)
     ProfileCliOptions profile;
     int threads = 0;
+    bool no_distance = false;  // do not record the surface distance to the input
 };
 
 // Roughness profiles recorded during smoothing, as the JSON document
@@ -40,6 +42,7 @@ struct Recording
     std::vector<std::vector<double>> sigma;  // per recorded iteration, per level
     std::vector<double> sigma_global;
     std::vector<std::size_t> undefined;  // vertices with undefined H
+    nlohmann::json distance = nlohmann::json::array();  // surface distance to the input, per record
 };
 
 nlohmann::json recording_json(const SmoothArgs& a, const SmoothingOptions& o, const ProfileOptions& p,
@@ -61,6 +64,7 @@ nlohmann::json recording_json(const SmoothArgs& a, const SmoothingOptions& o, co
     j["sigma"] = r.sigma;
     j["sigma_global"] = r.sigma_global;
     j["curvature_undefined"] = r.undefined;
+    if (!r.distance.empty()) j["distance_to_input"] = r.distance;
     return j;
 }
 
@@ -93,6 +97,23 @@ int run_smooth(const SmoothArgs& a)
         };
     }
     LoadedMesh loaded = read_mesh(a.in);
+    if (record && !a.no_distance) {
+        // Metro-style distance of each recorded state to the input surface.
+        auto profile_callback = options.callback;
+        const Mesh input = loaded.mesh;
+        const int every = a.profile_every > 0 ? a.profile_every : std::max(1, options.iterations);
+        const int last = options.iterations;
+        options.callback = [&recording, profile_callback, input, every, last](int k, const Mesh& mesh) {
+            profile_callback(k, mesh);
+            if (k % every != 0 && k != last) return;
+            const SurfaceDistance d = surface_distance(input, mesh);
+            recording.distance.push_back({{"hausdorff", d.hausdorff},
+                                          {"hausdorff_relative", d.hausdorff / d.diagonal},
+                                          {"forward", {{"max", d.forward.max}, {"mean", d.forward.mean}, {"rms", d.forward.rms}}},
+                                          {"backward", {{"max", d.backward.max}, {"mean", d.backward.mean}, {"rms", d.backward.rms}}},
+                                          {"diagonal", d.diagonal}});
+        };
+    }
     smooth(loaded.mesh, options);
     write_mesh(a.out, loaded.mesh);
     if (record) write_json(a.json, recording_json(a, options, profile_options, recording));
@@ -131,6 +152,8 @@ void add_smooth_command(CLI::App& app, Action& action)
                     "modified-mcf: vertices whose umbrella is within acos(eps) of "
                     "perpendicular to the curvature normal do not move")
         ->capture_default_str();
+    sub->add_flag("--no-distance", args->no_distance,
+                  "do not record the surface distance to the input beside each recorded profile");
     sub->add_option("--profile-every", args->profile_every,
                     "record the roughness profile at iteration 0 and every K iterations (and the last); needs --json");
     sub->add_option("--json", args->json,
