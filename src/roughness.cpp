@@ -75,14 +75,24 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
 {
     const std::size_t n = H.size();
     const DiskMeans means = disk_means(unit, adj, H, options.levels);
-    std::vector<double> D(n);
-    for (std::size_t li = 0; li < options.levels.size(); ++li) {
-        for (std::size_t i = 0; i < n; ++i) D[i] = H[i] - means.mean[li][i];  // NaN propagates
-        LevelRoughness lr = level_roughness(options.levels[li], D, options.outlier_fraction);
-        lr.no_neighborhood = (n - undefined) - lr.vertices_used;
-        p.levels.push_back(std::move(lr));
-        if (options.keep_vertex_data) p.D.push_back(D);
+    // Levels are independent: one per thread, each result in its own slot.
+    const std::size_t n_levels = options.levels.size();
+    p.levels.resize(n_levels);
+    if (options.keep_vertex_data) p.D.resize(n_levels);
+#pragma omp parallel
+    {
+        std::vector<double> Dl(n);
+#pragma omp for schedule(dynamic, 1)
+        for (std::ptrdiff_t il = 0; il < std::ptrdiff_t(n_levels); ++il) {
+            const auto li = std::size_t(il);
+            for (std::size_t i = 0; i < n; ++i) Dl[i] = H[i] - means.mean[li][i];  // NaN propagates
+            LevelRoughness lr = level_roughness(options.levels[li], Dl, options.outlier_fraction);
+            lr.no_neighborhood = (n - undefined) - lr.vertices_used;
+            p.levels[li] = std::move(lr);
+            if (options.keep_vertex_data) p.D[li] = Dl;
+        }
     }
+    std::vector<double> D(n);
     if (options.global) {
         p.has_global = true;
         // Mean over all other vertices with defined H, in O(n).
