@@ -1,9 +1,9 @@
 #include "commands.h"
-#include "meshdiff/surface_distance.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/smoothing.h"
+#include "meshdiff/surface_distance.h"
 #include "options.h"
 
 #include <nlohmann/json.hpp>
@@ -41,7 +41,7 @@ struct Recording
     std::vector<int> iterations;
     std::vector<std::vector<double>> sigma;  // per recorded iteration, per level
     std::vector<double> sigma_global;
-    std::vector<std::size_t> undefined;  // vertices with undefined H
+    std::vector<std::size_t> undefined;                 // vertices with undefined H
     nlohmann::json distance = nlohmann::json::array();  // surface distance to the input, per record
 };
 
@@ -107,11 +107,12 @@ int run_smooth(const SmoothArgs& a)
             profile_callback(k, mesh);
             if (k % every != 0 && k != last) return;
             const SurfaceDistance d = surface_distance(input, mesh);
-            recording.distance.push_back({{"hausdorff", d.hausdorff},
-                                          {"hausdorff_relative", d.hausdorff / d.diagonal},
-                                          {"forward", {{"max", d.forward.max}, {"mean", d.forward.mean}, {"rms", d.forward.rms}}},
-                                          {"backward", {{"max", d.backward.max}, {"mean", d.backward.mean}, {"rms", d.backward.rms}}},
-                                          {"diagonal", d.diagonal}});
+            recording.distance.push_back(
+                {{"hausdorff", d.hausdorff},
+                 {"hausdorff_relative", d.hausdorff / d.diagonal},
+                 {"forward", {{"max", d.forward.max}, {"mean", d.forward.mean}, {"rms", d.forward.rms}}},
+                 {"backward", {{"max", d.backward.max}, {"mean", d.backward.mean}, {"rms", d.backward.rms}}},
+                 {"diagonal", d.diagonal}});
         };
     }
     smooth(loaded.mesh, options);
