@@ -7,7 +7,8 @@ Standard library only.
       One row per level (the global level last, written as "global"), one column
       per mesh with its sigma. When a report holds the profile computed from the
       exact curvature (key "exact", from `meshdiff profile --exact`), a column
-      NAME_exact follows; otherwise that column is left out.
+      NAME_exact follows; otherwise that column is left out. PROFILE.json#original or
+      COMPARE.json#processed picks the profile of one side of a `meshdiff compare` report.
 
   json2csv.py smoothing OUT.csv NAME=SMOOTHING.json [NAME=SMOOTHING.json ...]
       Long table: name,iteration,level,sigma (level is a number or "global").
@@ -23,8 +24,14 @@ import sys
 
 
 def load(path):
+    """PATH or PATH#KEY: KEY selects a member, e.g. compare.json#processed (the processed
+    mesh's profile inside a meshdiff.compare report)."""
+    key = None
+    if "#" in path:
+        path, key = path.rsplit("#", 1)
     with open(path) as f:
-        return json.load(f)
+        d = json.load(f)
+    return d[key] if key else d
 
 
 def split_arg(arg):

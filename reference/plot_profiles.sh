@@ -26,7 +26,7 @@ gnuplot -e "set terminal" 2>&1 | grep -qw pngcairo || term=png
 size=${SIZE:-900,600}
 
 # Header: level,name1[,name1_exact],name2,...
-IFS=, read -r -a cols < "$csv"
+mapfile -t cols < <(python3 -c 'import csv, sys; print("\n".join(next(csv.reader(open(sys.argv[1])))))' "$csv")
 # Largest numeric level decides where the global level is drawn.
 lmax=$(awk -F, 'NR > 1 && $1 != "global" { if ($1 + 0 > m) m = $1 + 0 } END { print m + 0 }' "$csv")
 gx=$(awk -v m="$lmax" 'BEGIN { d = int(m / 10); if (d < 1) d = 1; print m + d + 1 }')
@@ -36,7 +36,7 @@ plot=""
 color=0
 declare -A colour_of
 for ((i = 1; i < ${#cols[@]}; i++)); do
-    name=${cols[$i]}
+    name=${cols[$i]//\"/\'}
     x='(strcol(1) eq "global" ? GX : $1)'
     if [[ $name == *_exact && -n ${colour_of[${name%_exact}]:-} ]]; then
         c=${colour_of[${name%_exact}]}

@@ -35,6 +35,7 @@ if md profile --help 2>&1 | grep -q -- '--exact'; then EXACT=(--exact); fi
 
 SUBDIV=${SUBDIV:-4}        # icosphere subdivisions: 4 = 2,562 vertices, 5,120 triangles
 ITER=${ITER:-50}           # smoothing iterations
+SHORT=${SHORT:-20}         # shorter smoothing of the real meshes, compared with the clean originals
 NOISE_REAL=${NOISE_REAL:-0.5}   # noise on bunny and igea, times the mean edge length
 
 mkdir -p "$OUT" "$WORK"
@@ -58,6 +59,7 @@ prof() {
 # ---------------------------------------------------------------------------------------------
 section "1 noise and stretching (Fig. 5)"
 d=$OUT/1_sphere_noise_stretch
+rm -rf "$d"
 mkdir -p "$d"
 args=()
 for n in 0 0.005 0.01 0.02 0.04; do
@@ -73,13 +75,14 @@ args=()
 for a in 1 1.25 1.5 2 3; do
     md generate ellipsoid "$WORK/ellipsoid_$a.ply" --subdivisions "$SUBDIV" --axes "$a" 1 1 > /dev/null
     prof "$WORK/ellipsoid_$a.ply" "$d/stretch_$a.json" "${EXACT[@]}"
-    args+=("axes $a,1,1=$d/stretch_$a.json")
+    args+=("axes $a x 1 x 1=$d/stretch_$a.json")
 done
 "$PLOTP" "$d/stretch.png" "Icosphere stretched along x to semi-axes (a, 1, 1)" "${args[@]}" > /dev/null
 
 # ---------------------------------------------------------------------------------------------
 section "2 real models (Figs. 1, 4)"
 d=$OUT/2_models
+rm -rf "$d"
 mkdir -p "$d"
 args=()
 for m in bunny_closed igea rocker_arm fandisk; do
@@ -92,6 +95,7 @@ LOGY=1 "$PLOTP" "$d/models_log.png" "Roughness profiles of real models (goldfeat
 # ---------------------------------------------------------------------------------------------
 section "3 smoothing (Figs. 6-9, 11-12)"
 d=$OUT/3_smoothing
+rm -rf "$d"
 mkdir -p "$d"
 md generate noisy-sphere "$WORK/s3_noisy_sphere.ply" --subdivisions "$SUBDIV" --noise 0.02 --seed 1 > /dev/null
 md generate ellipsoid "$WORK/s3_ellipsoid.ply" --subdivisions "$SUBDIV" --axes 1.5 1 1 > /dev/null
@@ -118,21 +122,47 @@ for mesh in noisy_sphere ellipsoid bunny_noisy; do
     done
     "$PLOTS" "$d/${mesh}_pre_post.png" "$mesh: pre- against post-updating" "${args[@]}" > /dev/null
 done
-# How far each smoothed mesh moved from its input (Metro-style, original coordinates).
-for mesh in noisy_sphere ellipsoid bunny_noisy; do
+# Each final result against the clean surface (the noise-free sphere, the ellipsoid itself, the
+# original bunny and igea): roughness distance per level and Metro-style surface distance.
+clean_of() {
+    case $1 in
+        noisy_sphere) echo "$WORK/sphere_noise_0.ply" ;;
+        ellipsoid) echo "$WORK/s3_ellipsoid.ply" ;;
+        bunny_noisy) echo "$MESHES/bunny_closed.ply" ;;
+        igea_noisy) echo "$MESHES/igea.ply" ;;
+    esac
+}
+vs_clean() { # MESH RESULT.ply OUT.json
+    md compare "$(clean_of "$1")" "$2" --levels 1,5,10,20 --samples 200000 --json "$3" > /dev/null
+}
+for mesh in noisy_sphere ellipsoid bunny_noisy igea_noisy; do
+    vs_clean "$mesh" "$WORK/s3_$mesh.ply" "$d/${mesh}_input_vs_clean.json"
     for u in post pre; do
         for m in $METHODS; do
             f=$WORK/s3_${mesh}_${u}_$m.ply
-            [[ -f $f ]] || continue
-            md compare "$WORK/s3_$mesh.ply" "$f" --no-roughness --samples 200000 \
-                --json "$d/${mesh}_${u}_${m}_distance.json" > /dev/null
+            [[ -f $f ]] && vs_clean "$mesh" "$f" "$d/${mesh}_${u}_${m}_vs_clean.json"
         done
     done
+    # Explicit MCF runs away on the noisy real meshes after about 25 iterations (see README), so the
+    # real meshes are also compared after SHORT iterations.
+    if [[ $mesh == *_noisy ]]; then
+        for m in $METHODS; do
+            md smooth "$WORK/s3_$mesh.ply" "$WORK/s3_${mesh}_short_$m.ply" --method "$m" --update post \
+                --iterations "$SHORT" > /dev/null
+            vs_clean "$mesh" "$WORK/s3_${mesh}_short_$m.ply" "$d/${mesh}_short_${m}_vs_clean.json"
+        done
+        args=("clean=$d/${mesh}_input_vs_clean.json#original" "noisy input=$d/${mesh}_input_vs_clean.json#processed")
+        for m in $METHODS; do args+=("$m=$d/${mesh}_short_${m}_vs_clean.json#processed"); done
+        LOGY=1 "$PLOTP" "$d/${mesh}_short_profiles.png" \
+            "$mesh: profiles after $SHORT post-updating iterations, beside the clean and the noisy mesh" \
+            "${args[@]}" > /dev/null
+    fi
 done
 
 # ---------------------------------------------------------------------------------------------
 section "4 regular against irregular sampling (Figs. 13-14)"
 d=$OUT/4_sampling
+rm -rf "$d"
 mkdir -p "$d"
 md generate torus "$WORK/torus_regular.ply" --n 96 > /dev/null
 md generate torus-irregular "$WORK/torus_irregular.ply" --vertices 2304 --seed 1 > /dev/null
@@ -153,6 +183,7 @@ prof "$MESHES/sphere_irregular_3072.ply" "$d/sphere_irregular_3072.json"
 # ---------------------------------------------------------------------------------------------
 section "5 goldfeather against meyer (Fig. 3)"
 d=$OUT/5_curvature
+rm -rf "$d"
 mkdir -p "$d"
 md smooth "$WORK/s3_noisy_sphere.ply" "$WORK/s5_smoothed_sphere.ply" --method laplacian --iterations 10 > /dev/null
 args=()
@@ -176,6 +207,7 @@ LOGY=1 "$PLOTP" "$d/curvature.png" "Goldfeather against Meyer curvature on spher
 # ---------------------------------------------------------------------------------------------
 section "6 bumps on a smoothed ellipsoid (Fig. 10)"
 d=$OUT/6_bumps
+rm -rf "$d"
 mkdir -p "$d"
 cp "$WORK/s3_ellipsoid.ply" "$WORK/s6_ellipsoid_none.ply"
 for m in none $METHODS; do

@@ -62,14 +62,18 @@ def profile_rows(items, with_exact=False):
             continue
         r = [name] + [f(sig(d, L)) for L in LV] + [f(sig(d, "G") / sig(d, 1) if sig(d, 1) else None, 3)]
         if with_exact:
-            r.append(" / ".join(f(exact(d, L), 3) for L in (1, "G")) if exact(d, 1) is not None else "n/a")
+            if exact(d, 1) is not None:
+                r.append(" / ".join(f(exact(d, L), 3) for L in (1, "G")))
+                r.append(f(d["exact"].get("h_error", {}).get("rms"), 3))
+            else:
+                r += ["n/a", "n/a"]
         rows.append(r)
     return rows
 
 
 def head(with_exact=False):
     h = ["mesh", "s1", "s2", "s5", "s10", "s20", "sG", "sG/s1"]
-    return h + (["exact s1 / sG"] if with_exact else [])
+    return h + (["exact s1 / sG", "H error RMS"] if with_exact else [])
 
 
 print("# Numbers of the reference studies\n")
@@ -102,12 +106,29 @@ table(head() + ["top-0.1% share of s1^2"], [r + [f(d["level_details"][0]["top_sh
                                              for r, (_, d) in zip(profile_rows(items), items) if d])
 
 print("## 3. Smoothing (Figs. 6-9, 11-12)\n")
-print("Ratio final/initial of sigma at levels 1, 5, 20 and global after the last iteration, and how far the")
-print("result moved from its input (forward RMS surface distance and Hausdorff, relative to the input's")
-print("bounding-box diagonal; bunny_noisy and igea_noisy: igea has no distance run).\n")
+print("Per run: sigma_1 at the start, the ratio end/start of sigma at levels 1, 5, 20 and global after the")
+print("last iteration, the smallest sigma_1 over the recorded iterations (ratio to the start, and where), and the")
+print("final mesh against the *clean* surface (noise-free sphere; the ellipsoid itself; bunny_closed; igea):")
+print("signed relative change of sigma_20 and sigma_G ((result - clean)/clean), and the forward RMS surface")
+print("distance relative to the clean mesh's bounding-box diagonal.\n")
 methods = ("laplacian", "taubin", "bilaplacian", "mcf", "modified-mcf")
+
+
+def vs_clean_cols(c):
+    if not c:
+        return ["n/a"] * 4
+    rd, sd = c["roughness_distance"], c["surface_distance"]
+    rc = dict(zip(rd["levels"], rd["relative_change"]))
+    return [f(rc.get(1), 3), f(rc.get(20), 3), f(rd["global"]["relative_change"], 3),
+            f(sd["forward"]["relative"]["rms"], 3)]
+
+
+VSH = ["vs clean: s1 change", "s20 change", "sG change", "RMS dist / diag"]
 for mesh in ("noisy_sphere", "ellipsoid", "bunny_noisy", "igea_noisy"):
     rows = []
+    c = load("3_smoothing", f"{mesh}_input_vs_clean.json")
+    if c:
+        rows.append(["input (not smoothed)", 0, "", "", "", "", "", ""] + vs_clean_cols(c))
     for u in ("post", "pre"):
         for m in methods:
             d = load("3_smoothing", f"{mesh}_{u}_{m}.json")
@@ -120,19 +141,23 @@ for mesh in ("noisy_sphere", "ellipsoid", "bunny_noisy", "igea_noisy"):
                 k = lv.index(L) if L in lv else None
                 r.append(f(s1[k] / s0[k], 3) if k is not None and s0[k] else "n/a")
             g0, g1 = d["sigma_global"][0], d["sigma_global"][-1]
-            r.append(f(g0, 3))
             r.append(f(g1 / g0 if g0 else None, 3))
-            c = load("3_smoothing", f"{mesh}_{u}_{m}_distance.json")
-            if c:
-                sd = c["surface_distance"]
-                r += [f(sd["forward"]["relative"]["rms"], 3), f(sd["hausdorff_relative"], 3)]
-            else:
-                r += ["n/a", "n/a"]
+            kmin = min(range(len(d["iterations"])), key=lambda k: d["sigma"][k][0])
+            r.append(f"{f(d['sigma'][kmin][0] / s0[0], 3)} @ {d['iterations'][kmin]}")
+            r += vs_clean_cols(load("3_smoothing", f"{mesh}_{u}_{m}_vs_clean.json"))
             rows.append(r)
     if rows:
         print(f"### {mesh}\n")
-        table(["method", "iterations", "s1 start", "s1 end/start", "s5 end/start", "s20 end/start", "sG start",
-               "sG end/start", "RMS dist / diag", "Hausdorff / diag"], rows)
+        table(["run", "iterations", "s1 start", "s1 end/start", "s5 end/start", "s20 end/start", "sG end/start",
+               "min s1/start @ it"] + VSH, rows)
+    rows = []
+    for m in methods:
+        c = load("3_smoothing", f"{mesh}_short_{m}_vs_clean.json")
+        if c:
+            rows.append([m] + vs_clean_cols(c))
+    if rows:
+        print(f"{mesh} after the shorter post-updating run, against the clean mesh:\n")
+        table(["method"] + VSH, rows)
 
 print("## 4. Regular against irregular sampling (Figs. 13-14)\n")
 items = []
