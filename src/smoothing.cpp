@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -41,6 +42,9 @@ void validate_options(const SmoothingOptions& o)
     if (o.method == SmoothingMethod::ModifiedMeanCurvatureFlow)
         require(std::isfinite(o.epsilon) && o.epsilon >= 0 && o.epsilon < 1, "epsilon",
                 fmt::format("must be in [0, 1) (got {})", o.epsilon));
+    if (flow && !o.implicit)
+        require(std::isfinite(o.stability) && o.stability > 0 && o.stability <= 1, "stability",
+                fmt::format("must be in (0, 1] (got {})", o.stability));
     if (flow) {
         const double max_step = o.implicit ? 1000.0 : 10.0;
         require(std::isfinite(o.step) && o.step > 0 && o.step <= max_step, "step",
@@ -80,11 +84,21 @@ double mixed_area_part(const Vec3& eij, const Vec3& eik, const Vec3& ejk, double
     return (eij.squaredNorm() * cot_k + eik.squaredNorm() * cot_j) / 8;
 }
 
-// Mean-curvature normal Hn_i = 1/(4 A_mixed) sum (cot a + cot b)(x_j - x_i),
-// from the faces around i. Zero where the mixed area vanishes.
-Vec3 curvature_normal(const Mesh& mesh, const Adjacency& vf, const std::vector<Vec3>& p, std::size_t i)
+// Cotangent sums around vertex i: sum = sum_j (cot a_ij + cot b_ij)(x_j - x_i),
+// area4 = 4 A_mixed, abs_weights = sum_j |cot a_ij| + |cot b_ij|.
+struct CotangentSums
 {
     Vec3 sum = Vec3::Zero();
+    double area4 = 0.0;
+    double abs_weights = 0.0;
+
+    //! Mean-curvature normal Hn_i = sum / (4 A_mixed); zero without area.
+    Vec3 curvature_normal() const { return area4 > 0 ? Vec3(sum / area4) : Vec3::Zero(); }
+};
+
+CotangentSums cotangent_sums(const Mesh& mesh, const Adjacency& vf, const std::vector<Vec3>& p, std::size_t i)
+{
+    CotangentSums c;
     double area = 0.0;
     for (auto f = vf.begin(i); f != vf.end(i); ++f) {
         const Face& t = mesh.faces[*f];
@@ -97,11 +111,19 @@ Vec3 curvature_normal(const Mesh& mesh, const Adjacency& vf, const std::vector<V
         const Vec3 eij = xj - xi, eik = xk - xi, ejk = xk - xj;
         const double cot_j = cot(-eij, ejk);   // angle at j, opposite edge (i, k)
         const double cot_k = cot(-eik, -ejk);  // angle at k, opposite edge (i, j)
-        sum += cot_k * eij + cot_j * eik;
+        c.sum += cot_k * eij + cot_j * eik;
+        c.abs_weights += std::abs(cot_j) + std::abs(cot_k);
         area += mixed_area_part(eij, eik, ejk, cot_j, cot_k);
     }
-    if (!(area > 0)) return Vec3::Zero();
-    return sum / (4 * area);
+    c.area4 = area > 0 ? 4 * area : 0.0;
+    return c;
+}
+
+// Mean-curvature normal Hn_i = 1/(4 A_mixed) sum (cot a + cot b)(x_j - x_i),
+// from the faces around i. Zero where the mixed area vanishes.
+Vec3 curvature_normal(const Mesh& mesh, const Adjacency& vf, const std::vector<Vec3>& p, std::size_t i)
+{
+    return cotangent_sums(mesh, vf, p, i).curvature_normal();
 }
 
 // One backward-Euler MCF step (Desbrun et al. 1999): (D - dt L) X' = D X with
@@ -196,7 +218,8 @@ public:
         if (o.method == SmoothingMethod::MeanCurvatureFlow || o.method == SmoothingMethod::ModifiedMeanCurvatureFlow) {
             vf_ = vertex_faces(mesh);
             const double e = mean_edge_length(adj_, mesh.points);
-            dt_ = o.step * e * e;
+            e2_ = e * e;
+            dt_ = o.step * e2_;
         }
         if (o.method == SmoothingMethod::Bilaplacian) {
             inv_nu_.assign(mesh.n_vertices(), 0.0);
@@ -213,7 +236,9 @@ public:
             if (adj_.degree(i) == 0) fixed_[i] = 1;
     }
 
-    void iterate()
+    //! Runs one iteration; returns the step taken (units of e^2) and its
+    //! ratio to the stability bound for the explicit flows, zeros otherwise.
+    std::pair<double, double> iterate()
     {
         switch (o_.method) {
             case SmoothingMethod::Laplacian:
@@ -243,25 +268,61 @@ public:
                     });
                 }
                 break;
-            case SmoothingMethod::MeanCurvatureFlow:
+            case SmoothingMethod::MeanCurvatureFlow: {
                 if (o_.implicit) {
                     implicit_mcf_step(mesh_, vf_, fixed_, dt_, mesh_.points);
-                    break;
+                    return {o_.step, 0.0};
                 }
+                const FlowStep s = flow_step();
                 sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 {
-                    return Vec3(dt_ * curvature_normal(mesh_, vf_, p, i));
+                    return Vec3(s.dt * curvature_normal(mesh_, vf_, p, i));
                 });
-                break;
-            case SmoothingMethod::ModifiedMeanCurvatureFlow:
+                return {s.dt == dt_ ? o_.step : s.dt / e2_, s.dt / s.stable};
+            }
+            case SmoothingMethod::ModifiedMeanCurvatureFlow: {
+                const FlowStep s = flow_step();
                 sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 {
-                    return Vec3(dt_ *
+                    return Vec3(s.dt *
                                 modified_flow(curvature_normal(mesh_, vf_, p, i), umbrella(adj_, p, i), o_.epsilon));
                 });
-                break;
+                return {s.dt == dt_ ? o_.step : s.dt / e2_, s.dt / s.stable};
+            }
         }
+        return {0.0, 0.0};
+    }
+
+    double mean_edge() const
+    {
+        return std::sqrt(e2_);
     }
 
 private:
+    struct FlowStep
+    {
+        double dt;      // the step to take
+        double stable;  // the sufficient stability bound min_i 4 A_i / sum_j |w_ij|
+    };
+
+    // The time step of an explicit flow iteration from the current positions:
+    // the nominal dt, or with adaptive control at most `stability` times the
+    // stability bound (see smoothing.h).
+    FlowStep flow_step() const
+    {
+        const std::vector<Vec3>& p = mesh_.points;
+        const auto n = std::ptrdiff_t(p.size());
+        double bound = std::numeric_limits<double>::infinity();
+        // min is exact and order-independent: the result does not depend on the thread count.
+#pragma omp parallel for schedule(static) reduction(min : bound)
+        for (std::ptrdiff_t k = 0; k < n; ++k) {
+            const auto i = std::size_t(k);
+            if (fixed_[i]) continue;
+            const CotangentSums c = cotangent_sums(mesh_, vf_, p, i);
+            if (c.area4 > 0 && c.abs_weights > 0) bound = std::min(bound, c.area4 / c.abs_weights);
+        }
+        if (o_.step_control == StepControl::Fixed) return {dt_, bound};
+        return {std::min(dt_, o_.stability * bound), bound};
+    }
+
     template <class UmbrellaOf>
     Vec3 umbrella2(std::size_t i, UmbrellaOf&& u) const
     {
@@ -307,6 +368,7 @@ private:
     std::vector<double> inv_nu_;
     std::vector<Vec3> u_, delta_;
     double dt_ = 0.0;
+    double e2_ = 1.0;
     bool pre_;
 };
 
@@ -319,17 +381,29 @@ bool all_finite(const std::vector<Vec3>& p)
 
 }  // namespace
 
-void smooth(Mesh& mesh, const SmoothingOptions& options)
+SmoothingReport smooth(Mesh& mesh, const SmoothingOptions& options)
 {
     validate_options(options);
     validate(mesh, "smooth");
+    SmoothingReport report;
     if (options.callback) options.callback(0, mesh);
-    if (options.iterations == 0) return;
+    if (options.iterations == 0) return report;
     Smoother smoother(mesh, options);
+    const bool flow = (options.method == SmoothingMethod::MeanCurvatureFlow && !options.implicit) ||
+                      options.method == SmoothingMethod::ModifiedMeanCurvatureFlow;
+    if (options.method == SmoothingMethod::MeanCurvatureFlow ||
+        options.method == SmoothingMethod::ModifiedMeanCurvatureFlow)
+        report.mean_edge = smoother.mean_edge();
     std::vector<Vec3> previous;
     for (int k = 1; k <= options.iterations; ++k) {
         previous = mesh.points;
-        smoother.iterate();
+        const auto [step, ratio] = smoother.iterate();
+        if (flow) {
+            report.steps.push_back(step);
+            report.stability_ratio.push_back(ratio);
+            report.time += step;
+            if (ratio > 1) ++report.unstable_iterations;
+        }
         if (!all_finite(mesh.points)) {
             mesh.points = std::move(previous);
             throw SolverError(fmt::format(
@@ -338,6 +412,7 @@ void smooth(Mesh& mesh, const SmoothingOptions& options)
         }
         if (options.callback) options.callback(k, mesh);
     }
+    return report;
 }
 
 std::string smoothing_method_name(SmoothingMethod method)
@@ -376,6 +451,18 @@ SmoothingUpdate parse_smoothing_update(const std::string& name)
     if (name == "post") return SmoothingUpdate::Post;
     if (name == "pre") return SmoothingUpdate::Pre;
     throw InvalidArgumentError(fmt::format("smooth: update '{}' is unknown (expected post or pre)", name));
+}
+
+std::string step_control_name(StepControl control)
+{
+    return control == StepControl::Fixed ? "fixed" : "adaptive";
+}
+
+StepControl parse_step_control(const std::string& name)
+{
+    if (name == "adaptive") return StepControl::Adaptive;
+    if (name == "fixed") return StepControl::Fixed;
+    throw InvalidArgumentError(fmt::format("smooth: step control '{}' is unknown (expected adaptive or fixed)", name));
 }
 
 }  // namespace meshdiff

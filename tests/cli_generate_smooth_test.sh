@@ -99,6 +99,23 @@ grep -q '"sigma_global"' "$tmp/stdout" || fail "smooth --json -: no JSON on stdo
 expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --profile-every 2
 expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --json "$tmp/bad.json" --levels 0
 
+# --- smooth: stability of the explicit flows ----------------------------
+# Step 1.5 is three times the stability bound of a good mesh: warned, recorded, and avoided by adaptive control.
+expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/unstable.ply" --method mcf --step 1.5 --iterations 3 --json "$tmp/unstable.json"
+grep -q "exceeded the stability bound" "$tmp/stderr" || fail "smooth: no stability warning for step 1.5"
+grep -q "noisy.ply" "$tmp/stderr" || fail "smooth: the stability warning does not name the input"
+tr -d ' \n' <"$tmp/unstable.json" | grep -q '"unstable_iterations":3' || fail "smooth --json: unstable_iterations"
+expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/stable.ply" --method mcf --step 1.5 --iterations 3 --step-control adaptive \
+    --json "$tmp/stable.json"
+if grep -q "exceeded the stability bound" "$tmp/stderr"; then fail "smooth: adaptive control still warns"; fi
+grep -q "flow time" "$tmp/stdout" || fail "smooth: no flow time reported"
+tr -d ' \n' <"$tmp/stable.json" | grep -q '"unstable_iterations":0' || fail "smooth --json: adaptive unstable"
+tr -d ' \n' <"$tmp/stable.json" | grep -q '"step_control":"adaptive"' || fail "smooth --json: step_control"
+expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/small.ply" --method modified-mcf --step 0.05 --iterations 2
+if grep -q "exceeded the stability bound" "$tmp/stderr"; then fail "smooth: warning for a stable step"; fi
+expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method mcf --step-control sometimes
+expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method mcf --step-control adaptive --stability 1.5
+
 # --- smooth: usage errors (exit 2), missing input (exit 3) ----------------
 expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method gauss
 expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --update sideways

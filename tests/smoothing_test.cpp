@@ -177,6 +177,78 @@ TEST(Smoothing, MeanCurvatureFlowMovesASphereInwardAtSpeedH)
     }
 }
 
+TEST(Smoothing, ExplicitFlowsReportTheirStabilityRatio)
+{
+    // On an icosphere the triangles are near-equilateral, where the bound S =
+    // min 4 A / sum |w| is about e^2 / 2: step 0.1 is a ratio of about 0.2.
+    const Mesh sphere = icosphere(3).mesh;
+    for (auto m : {SmoothingMethod::MeanCurvatureFlow, SmoothingMethod::ModifiedMeanCurvatureFlow}) {
+        Mesh mesh = sphere;
+        SmoothingOptions o = options(m, SmoothingUpdate::Post, 3);
+        const SmoothingReport r = smooth(mesh, o);
+        ASSERT_EQ(r.steps.size(), 3u);
+        ASSERT_EQ(r.stability_ratio.size(), 3u);
+        EXPECT_NEAR(r.mean_edge, mean_edge_length(sphere), 1e-12);
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_EQ(r.steps[std::size_t(k)], o.step);
+            EXPECT_GT(r.stability_ratio[std::size_t(k)], 0.15);
+            EXPECT_LT(r.stability_ratio[std::size_t(k)], 0.3);
+        }
+        EXPECT_DOUBLE_EQ(r.time, 3 * o.step);
+        EXPECT_EQ(r.unstable_iterations, 0);
+        // Adaptive control leaves a stable step alone: bitwise the same result.
+        Mesh adaptive = sphere;
+        o.step_control = StepControl::Adaptive;
+        smooth(adaptive, o);
+        EXPECT_EQ(adaptive.points, mesh.points) << smoothing_method_name(m);
+    }
+    // The umbrella methods and implicit MCF have no step limit to report.
+    Mesh mesh = sphere;
+    EXPECT_TRUE(smooth(mesh, options(SmoothingMethod::Taubin, SmoothingUpdate::Post, 2)).steps.empty());
+    SmoothingOptions o = options(SmoothingMethod::MeanCurvatureFlow, SmoothingUpdate::Post, 2);
+    o.implicit = true;
+    EXPECT_TRUE(smooth(mesh, o).stability_ratio.empty());
+}
+
+TEST(Smoothing, AdaptiveStepControlKeepsAnUnstableFlowStable)
+{
+    // A step of 1.5 e^2 is three times the stability bound of an equilateral
+    // mesh: the fixed-step flow amplifies the noise of a noisy sphere, the
+    // adaptive one takes at most half the bound and makes it rounder.
+    const Shape s = noisy_sphere(3, 0.02, 5);
+    for (auto m : {SmoothingMethod::MeanCurvatureFlow, SmoothingMethod::ModifiedMeanCurvatureFlow})
+        for (auto u : kUpdates) {
+            SmoothingOptions o = options(m, u, 20);
+            o.step = 1.5;
+            Mesh fixed = s.mesh, adaptive = s.mesh;
+            SmoothingReport rf;
+            try {
+                rf = smooth(fixed, o);
+            } catch (const SolverError&) {
+                rf.unstable_iterations = 1;  // diverged to infinity: also unstable
+            }
+            EXPECT_GT(rf.unstable_iterations, 0) << label(m, u);
+            const bool fixed_worse = !all_finite(fixed) || radial_spread(fixed) > radial_spread(s.mesh);
+            EXPECT_TRUE(fixed_worse) << label(m, u) << " fixed spread " << radial_spread(fixed);
+
+            o.step_control = StepControl::Adaptive;
+            std::vector<double> spread;
+            o.callback = [&](int, const Mesh& current) { spread.push_back(radial_spread(current)); };
+            const SmoothingReport ra = smooth(adaptive, o);
+            ASSERT_TRUE(all_finite(adaptive)) << label(m, u);
+            EXPECT_EQ(ra.unstable_iterations, 0) << label(m, u);
+            double time = 0;
+            for (std::size_t k = 0; k < ra.steps.size(); ++k) {
+                EXPECT_LE(ra.stability_ratio[k], o.stability * (1 + 1e-12)) << label(m, u) << " " << k;
+                EXPECT_LE(ra.steps[k], o.step) << label(m, u);
+                EXPECT_GT(ra.steps[k], 0.0) << label(m, u);
+                time += ra.steps[k];
+            }
+            EXPECT_DOUBLE_EQ(ra.time, time);
+            EXPECT_LT(spread.back(), 0.5 * spread.front()) << label(m, u);
+        }
+}
+
 TEST(Smoothing, BoundaryVerticesStayFixed)
 {
     const Shape s = heightfield_irregular(400, 2);
@@ -361,15 +433,22 @@ TEST(Smoothing, InvalidOptionsThrowNamingTheField)
     o.method = SmoothingMethod::MeanCurvatureFlow;
     o.update = SmoothingUpdate::Pre;
     EXPECT_NE(message(o).find("implicit"), std::string::npos);
+    o = SmoothingOptions{};
+    o.method = SmoothingMethod::MeanCurvatureFlow;
+    o.stability = 0;
+    EXPECT_NE(message(o).find("stability"), std::string::npos);
     // Fields of other methods are not checked.
     o = SmoothingOptions{};
     o.mu = 0.7;
+    o.stability = 2;
     EXPECT_EQ(message(o), "no throw");
 
     EXPECT_THROW(parse_smoothing_method("gauss"), InvalidArgumentError);
     EXPECT_THROW(parse_smoothing_update("sideways"), InvalidArgumentError);
     for (auto m : kMethods) EXPECT_EQ(parse_smoothing_method(smoothing_method_name(m)), m);
     for (auto u : kUpdates) EXPECT_EQ(parse_smoothing_update(smoothing_update_name(u)), u);
+    EXPECT_THROW(parse_step_control("sometimes"), InvalidArgumentError);
+    for (auto c : {StepControl::Fixed, StepControl::Adaptive}) EXPECT_EQ(parse_step_control(step_control_name(c)), c);
 }
 
 TEST(Smoothing, HugeFlowStepLeavesOnlyFiniteCoordinates)

@@ -26,6 +26,7 @@ struct SmoothArgs
     std::string out;
     std::string method = "laplacian";
     std::string update = "post";
+    std::string step_control = "fixed";
     SmoothingOptions options;  // numeric fields bound to the options below
     int profile_every = 0;     // 0: no profile recording
     std::string json;          // profile recording target ("-" for stdout)
@@ -46,7 +47,7 @@ struct Recording
 };
 
 nlohmann::json recording_json(const SmoothArgs& a, const SmoothingOptions& o, const ProfileOptions& p,
-                              const Recording& r)
+                              const Recording& r, const SmoothingReport& report)
 {
     nlohmann::json j;
     j["schema"] = "meshdiff.smoothing/1";
@@ -54,9 +55,15 @@ nlohmann::json recording_json(const SmoothArgs& a, const SmoothingOptions& o, co
     j["output"] = a.out;
     j["method"] = smoothing_method_name(o.method);
     j["update"] = smoothing_update_name(o.update);
-    j["parameters"] = {
-        {"iterations", o.iterations}, {"lambda", o.lambda},    {"mu", o.mu}, {"step", o.step}, {"damping", o.damping},
-        {"epsilon", o.epsilon},       {"implicit", o.implicit}};
+    j["parameters"] = {{"iterations", o.iterations},
+                       {"lambda", o.lambda},
+                       {"mu", o.mu},
+                       {"step", o.step},
+                       {"damping", o.damping},
+                       {"epsilon", o.epsilon},
+                       {"implicit", o.implicit},
+                       {"step_control", step_control_name(o.step_control)},
+                       {"stability", o.stability}};
     j["curvature"] = to_string(p.curvature.method);
     j["profile_every"] = a.profile_every;
     j["iterations"] = r.iterations;
@@ -65,6 +72,20 @@ nlohmann::json recording_json(const SmoothArgs& a, const SmoothingOptions& o, co
     j["sigma_global"] = r.sigma_global;
     j["curvature_undefined"] = r.undefined;
     if (!r.distance.empty()) j["distance_to_input"] = r.distance;
+    if (!report.steps.empty()) {
+        // Flow time at each recorded iteration, in units of the initial mean edge length squared.
+        std::vector<double> time;
+        for (int k : r.iterations) {
+            double t = 0;
+            for (std::size_t i = 0; i < std::size_t(k) && i < report.steps.size(); ++i) t += report.steps[i];
+            time.push_back(t);
+        }
+        j["flow"] = {{"mean_edge", report.mean_edge},
+                     {"time", time},
+                     {"steps", report.steps},
+                     {"stability_ratio", report.stability_ratio},
+                     {"unstable_iterations", report.unstable_iterations}};
+    }
     return j;
 }
 
@@ -73,6 +94,7 @@ int run_smooth(const SmoothArgs& a)
     SmoothingOptions options = a.options;
     options.method = parse_smoothing_method(a.method);
     options.update = parse_smoothing_update(a.update);
+    options.step_control = parse_step_control(a.step_control);
     if (a.profile_every < 0)
         throw InvalidArgumentError(fmt::format("--profile-every must be >= 1 (got {})", a.profile_every));
     if (a.profile_every > 0 && a.json.empty()) throw InvalidArgumentError("--profile-every needs --json FILE");
@@ -115,12 +137,23 @@ int run_smooth(const SmoothArgs& a)
                  {"diagonal", d.diagonal}});
         };
     }
-    smooth(loaded.mesh, options);
+    const SmoothingReport report = smooth(loaded.mesh, options);
     write_mesh(a.out, loaded.mesh);
-    if (record) write_json(a.json, recording_json(a, options, profile_options, recording));
-    if (a.json != "-")
+    if (record) write_json(a.json, recording_json(a, options, profile_options, recording, report));
+    if (a.json != "-") {
         std::cout << fmt::format("{}: {} {}-updating, {} iterations, {} vertices\n", a.out, a.method, a.update,
                                  options.iterations, loaded.mesh.n_vertices());
+        if (!report.steps.empty()) {
+            const double worst = *std::max_element(report.stability_ratio.begin(), report.stability_ratio.end());
+            std::cout << fmt::format("flow time {:.6g} e^2 (e = {:.6g}, the initial mean edge length)\n", report.time,
+                                     report.mean_edge);
+            if (report.unstable_iterations > 0)
+                std::cerr << fmt::format(
+                    "warning: {}: {} of {} explicit steps exceeded the stability bound (up to {:.3g} times); the flow "
+                    "may diverge: use a smaller --step, --step-control adaptive or --implicit (mcf)\n",
+                    a.in, report.unstable_iterations, options.iterations, worst);
+        }
+    }
     return 0;
 }
 
@@ -145,6 +178,13 @@ void add_smooth_command(CLI::App& app, Action& action)
     sub->add_option("--lambda", o.lambda, "Laplacian / Taubin step, in (0, 1]")->capture_default_str();
     sub->add_option("--mu", o.mu, "Taubin negative step, < -lambda")->capture_default_str();
     sub->add_option("--step", o.step, "mcf / modified-mcf time step in units of the squared mean edge length")
+        ->capture_default_str();
+    sub->add_option("--step-control", args->step_control,
+                    "explicit mcf / modified-mcf: fixed (always --step, the paper's scheme; may diverge) | adaptive "
+                    "(shorten a step beyond the stability bound)")
+        ->capture_default_str();
+    sub->add_option("--stability", o.stability,
+                    "adaptive step control: fraction of the largest stable explicit step, in (0, 1]")
         ->capture_default_str();
     sub->add_flag("--implicit", o.implicit,
                   "mcf only: backward-Euler steps (Desbrun et al.), stable for large --step (up to 1000)");
