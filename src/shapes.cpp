@@ -1,5 +1,6 @@
 #include "meshdiff/shapes.h"
 
+#include "detail/random.h"
 #include "meshdiff/error.h"
 
 #include <fmt/format.h>
@@ -16,17 +17,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Uniform in [0, 1) from the raw 64-bit output: the top 53 bits, scaled.
-double uniform01(std::mt19937_64& rng)
-{
-    return double(rng() >> 11) * (1.0 / 9007199254740992.0);
-}
-
-// Uniform in [-1, 1).
-double uniform_pm1(std::mt19937_64& rng)
-{
-    return 2.0 * uniform01(rng) - 1.0;
-}
+// Uniform in [-1, 1) from one raw output (detail/random.h, shared with noise.cpp).
+using detail::uniform_pm1;
 
 void require(bool ok, const char* function, const char* field, const std::string& what)
 {
@@ -85,6 +77,61 @@ Mesh unit_icosphere(int subdivisions)
             faces.push_back({ab, bc, ca});
         }
         m.faces = std::move(faces);
+    }
+    return m;
+}
+
+// Unit geodesic sphere of class I and the given frequency f: every face of
+// the icosahedron of unit_icosphere(0) is cut into f^2 triangles by a regular
+// barycentric grid whose points are projected onto the sphere. Edge points are
+// shared between the two faces of an edge, so the mesh is closed.
+Mesh unit_geodesic_sphere(int f)
+{
+    const Mesh ico = unit_icosphere(0);
+    Mesh m;
+    m.points = ico.points;
+    // Points inside the icosahedron's edges: f - 1 per edge, from the lower index to the higher.
+    std::unordered_map<std::uint64_t, std::int32_t> edge_base;
+    auto key = [](std::int32_t a, std::int32_t b) {
+        return (std::uint64_t(std::min(a, b)) << 32) | std::uint64_t(std::max(a, b));
+    };
+    for (const Face& t : ico.faces)
+        for (int k = 0; k < 3; ++k) {
+            const std::int32_t a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)];
+            if (!edge_base.emplace(key(a, b), std::int32_t(m.points.size())).second) continue;
+            const std::int32_t lo = std::min(a, b), hi = std::max(a, b);
+            for (int i = 1; i < f; ++i)
+                m.points.push_back(
+                    ((f - i) * ico.points[std::size_t(lo)] + i * ico.points[std::size_t(hi)]).normalized());
+        }
+    // Index of the point i steps from u towards v on edge (u, v).
+    auto on_edge = [&](std::int32_t u, std::int32_t v, int i) -> std::int32_t {
+        if (i == 0) return u;
+        if (i == f) return v;
+        const std::int32_t base = edge_base.at(key(u, v));
+        return u < v ? base + i - 1 : base + (f - i) - 1;
+    };
+    for (const Face& t : ico.faces) {
+        const Vec3 &A = ico.points[std::size_t(t[0])], &B = ico.points[std::size_t(t[1])],
+                   &C = ico.points[std::size_t(t[2])];
+        // Grid point (i, j) = ((f - i - j) A + i B + j C) / f.
+        std::vector<std::int32_t> interior(std::size_t(f + 1) * std::size_t(f + 1), -1);
+        auto id = [&](int i, int j) -> std::int32_t {
+            if (j == 0) return on_edge(t[0], t[1], i);
+            if (i == 0) return on_edge(t[0], t[2], j);
+            if (i + j == f) return on_edge(t[1], t[2], j);
+            std::int32_t& slot = interior[std::size_t(i) * std::size_t(f + 1) + std::size_t(j)];
+            if (slot < 0) {
+                slot = std::int32_t(m.points.size());
+                m.points.push_back(((f - i - j) * A + i * B + j * C).normalized());
+            }
+            return slot;
+        };
+        for (int i = 0; i < f; ++i)
+            for (int j = 0; i + j < f; ++j) {
+                m.faces.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+                if (i + j + 2 <= f) m.faces.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+            }
     }
     return m;
 }
@@ -215,6 +262,18 @@ Shape icosphere(int subdivisions, double radius)
     return s;
 }
 
+Shape geodesic_sphere(int frequency, double radius)
+{
+    require(frequency >= 1 && frequency <= 1024, "geodesic_sphere", "frequency",
+            fmt::format("must be in 1..1024 (got {})", frequency));
+    require_positive(radius, "geodesic_sphere", "radius");
+    Shape s;
+    s.mesh = unit_geodesic_sphere(frequency);
+    for (auto& p : s.mesh.points) p *= radius;
+    s.exact_H.assign(s.mesh.n_vertices(), 1.0 / radius);
+    return s;
+}
+
 Shape uv_sphere(int n_longitude, int n_latitude, double radius)
 {
     require(n_longitude >= 3, "uv_sphere", "n_longitude", fmt::format("must be >= 3 (got {})", n_longitude));
@@ -270,11 +329,16 @@ Shape torus(int n_major, int n_minor, double R, double r)
 Shape ellipsoid(int subdivisions, double a, double b, double c)
 {
     require_subdivisions(subdivisions, "ellipsoid");
+    return ellipsoid(unit_icosphere(subdivisions), a, b, c);
+}
+
+Shape ellipsoid(const Mesh& unit_sphere, double a, double b, double c)
+{
     require_positive(a, "ellipsoid", "a");
     require_positive(b, "ellipsoid", "b");
     require_positive(c, "ellipsoid", "c");
     Shape s;
-    s.mesh = unit_icosphere(subdivisions);
+    s.mesh = unit_sphere;
     const double a2 = a * a, b2 = b * b, c2 = c * c;
     s.exact_H.reserve(s.mesh.n_vertices());
     for (auto& p : s.mesh.points) {
@@ -308,12 +372,16 @@ Shape noisy_sphere(int subdivisions, double noise_fraction, std::uint64_t seed, 
 {
     require_subdivisions(subdivisions, "noisy_sphere");
     require_positive(radius, "noisy_sphere", "radius");
+    return noisy_sphere(icosphere(subdivisions, radius), noise_fraction, seed);
+}
+
+Shape noisy_sphere(Shape sphere, double noise_fraction, std::uint64_t seed)
+{
     require(std::isfinite(noise_fraction) && noise_fraction >= 0 && noise_fraction < 1, "noisy_sphere",
             "noise_fraction", fmt::format("must be in [0, 1) (got {})", noise_fraction));
-    Shape s = icosphere(subdivisions, radius);
     std::mt19937_64 rng(seed);
-    for (auto& p : s.mesh.points) p *= 1.0 + noise_fraction * uniform_pm1(rng);
-    return s;
+    for (auto& p : sphere.mesh.points) p *= 1.0 + noise_fraction * uniform_pm1(rng);
+    return sphere;
 }
 
 Shape torus_irregular(std::size_t approx_vertices, double R, double r, std::uint64_t seed)

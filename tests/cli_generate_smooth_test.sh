@@ -56,6 +56,15 @@ expect_exit 0 generate heightfield-irregular "$tmp/hf_irr.ply" --vertices 500 --
 expect_ply_with_exact_h "$tmp/hf_irr.ply"
 expect_exit 0 generate plane "$tmp/plane.ply" --n 9 --spacing 0.5
 expect_ply_with_exact_h "$tmp/plane.ply"
+expect_exit 0 generate sphere "$tmp/geo.ply" --frequency 20
+head -c 400 "$tmp/geo.ply" | grep -a -q "element face 8000" || fail "sphere --frequency 20: expected 8000 faces"
+expect_exit 0 generate ellipsoid "$tmp/geo_ell.ply" --frequency 5 --axes 1.5 1 1
+head -c 400 "$tmp/geo_ell.ply" | grep -a -q "element vertex 252" || fail "ellipsoid --frequency 5: 252 vertices"
+expect_exit 0 generate noisy-sphere "$tmp/geo_noisy.ply" --frequency 5 --noise 0.02 --seed 4
+expect_ply_with_exact_h "$tmp/geo_noisy.ply"
+expect_exit 2 generate sphere "$tmp/bad.ply" --frequency 5 --subdivisions 2
+expect_exit 2 generate sphere "$tmp/bad.ply" --frequency 0
+expect_exit 2 generate torus "$tmp/bad.ply" --frequency 5
 expect_exit 0 generate sphere "$tmp/sphere.obj" --subdivisions 1
 [ -s "$tmp/sphere.obj" ] || fail "sphere.obj missing"
 

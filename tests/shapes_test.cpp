@@ -112,6 +112,62 @@ TEST(Shapes, IcosphereIsAClosedOutwardSphereWithValenceFiveAndSix)
     EXPECT_GT(signed_volume(s.mesh), 0.98 * ball);
 }
 
+TEST(Shapes, GeodesicSphereHasTwentyFSquaredFacesValenceFiveAndSixAndMatchesTheIcosphere)
+{
+    for (int f : {1, 2, 3, 7, 20}) {
+        const double r = 1.5;
+        const Shape s = geodesic_sphere(f, r);
+        SCOPED_TRACE(f);
+        EXPECT_EQ(s.mesh.n_faces(), 20u * std::size_t(f * f));
+        EXPECT_EQ(s.mesh.n_vertices(), 10u * std::size_t(f * f) + 2);
+        expect_clean_closed(s.mesh, 2);
+        expect_faces_outward(s.mesh, [](const Vec3&) { return Vec3(0, 0, 0); });
+        double worst = 0;
+        for (const auto& p : s.mesh.points) worst = std::max(worst, std::abs(p.norm() - r));
+        EXPECT_LT(worst, 1e-14 * r);
+        EXPECT_EQ(s.exact_H, std::vector<double>(s.mesh.n_vertices(), 1 / r));
+        const auto h = valence_histogram(s.mesh);
+        EXPECT_EQ(h.at(5), 12u);
+        if (f > 1) {
+            EXPECT_EQ(h.at(6), s.mesh.n_vertices() - 12);
+        }
+        // Central projection of the flat grid stretches the middle of each face: the
+        // longest edge is at most 1.5 times the shortest (1.44 at f = 20).
+        const Adjacency adj = vertex_adjacency(s.mesh);
+        double lo = 1e300, hi = 0;
+        for (std::size_t i = 0; i < adj.size(); ++i)
+            for (auto j = adj.begin(i); j != adj.end(i); ++j) {
+                const double e = (s.mesh.points[i] - s.mesh.points[*j]).norm();
+                lo = std::min(lo, e);
+                hi = std::max(hi, e);
+            }
+        EXPECT_LT(hi / lo, 1.5);
+    }
+    // Frequency 2 is one midpoint subdivision: the same point set as icosphere(1).
+    auto sorted = [](std::vector<Vec3> p) {
+        std::sort(p.begin(), p.end(), [](const Vec3& a, const Vec3& b) {
+            return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+        });
+        return p;
+    };
+    const auto g = sorted(geodesic_sphere(2).mesh.points), ico = sorted(icosphere(1).mesh.points);
+    ASSERT_EQ(g.size(), ico.size());
+    for (std::size_t i = 0; i < g.size(); ++i) EXPECT_LT((g[i] - ico[i]).norm(), 1e-15) << i;
+    // Stretching and noise work on it as on the icosphere.
+    const Shape e = ellipsoid(geodesic_sphere(20).mesh, 1.5, 1, 1);
+    EXPECT_EQ(e.mesh.n_faces(), 8000u);
+    for (std::size_t i = 0; i < e.mesh.n_vertices(); ++i) {
+        const Vec3& p = e.mesh.points[i];
+        EXPECT_NEAR(p.x() * p.x() / 2.25 + p.y() * p.y() + p.z() * p.z(), 1.0, 1e-13);
+    }
+    const Shape n1 = noisy_sphere(geodesic_sphere(20), 0.02, 3), n2 = noisy_sphere(geodesic_sphere(20), 0.02, 3);
+    EXPECT_EQ(n1.mesh.points, n2.mesh.points);
+    EXPECT_NE(n1.mesh.points, geodesic_sphere(20).mesh.points);
+    for (const auto& p : n1.mesh.points) EXPECT_NEAR(p.norm(), 1.0, 0.02 + 1e-15);
+    EXPECT_THROW(geodesic_sphere(0), InvalidArgumentError);
+    EXPECT_THROW(geodesic_sphere(2, -1), InvalidArgumentError);
+}
+
 TEST(Shapes, UvSphereHasSinglePolesAndIsClosed)
 {
     const double r = 0.7;

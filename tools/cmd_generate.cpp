@@ -26,6 +26,7 @@ struct GenerateArgs
     std::string kind;
     std::string out;
     int subdivisions = 4;
+    int frequency = 0;  // geodesic sphere frequency; 0: use the icosphere subdivisions
     double radius = 1.0;
     double noise = 0.02;
     std::vector<double> axes = {1.5, 1.0, 1.0};
@@ -51,9 +52,9 @@ const std::vector<std::string>& kinds()
 const std::set<std::string>& applicable(const std::string& kind)
 {
     static const std::map<std::string, std::set<std::string>> table = {
-        {"sphere", {"--subdivisions", "--radius"}},
-        {"noisy-sphere", {"--subdivisions", "--radius", "--noise", "--seed"}},
-        {"ellipsoid", {"--subdivisions", "--axes"}},
+        {"sphere", {"--subdivisions", "--frequency", "--radius"}},
+        {"noisy-sphere", {"--subdivisions", "--frequency", "--radius", "--noise", "--seed"}},
+        {"ellipsoid", {"--subdivisions", "--frequency", "--axes"}},
         {"torus", {"--major", "--minor", "--n"}},
         {"torus-irregular", {"--major", "--minor", "--vertices", "--seed"}},
         {"heightfield", {"--n", "--amplitude"}},
@@ -66,22 +67,27 @@ const std::set<std::string>& applicable(const std::string& kind)
 Shape make_shape(const GenerateArgs& a, std::string& description)
 {
     const std::string& k = a.kind;
+    // The sphere tessellation: the icosphere, or with --frequency the geodesic sphere.
+    const bool geodesic = a.frequency > 0;
+    const std::string base = geodesic ? fmt::format("geodesic sphere frequency={}", a.frequency)
+                                      : fmt::format("icosphere subdivisions={}", a.subdivisions);
     if (k == "sphere") {
-        description = fmt::format("icosphere subdivisions={} radius={}", a.subdivisions, a.radius);
-        return icosphere(a.subdivisions, a.radius);
+        description = fmt::format("{} radius={}", base, a.radius);
+        return geodesic ? geodesic_sphere(a.frequency, a.radius) : icosphere(a.subdivisions, a.radius);
     }
     if (k == "noisy-sphere") {
         description = fmt::format(
-            "icosphere subdivisions={} radius={} with uniform radial noise +-{} of the radius, "
-            "seed={}; exact_H is the noise-free sphere's 1/radius",
-            a.subdivisions, a.radius, a.noise, a.seed);
-        return noisy_sphere(a.subdivisions, a.noise, a.seed, a.radius);
+            "{} radius={} with uniform radial noise +-{} of the radius, seed={}; exact_H is the noise-free sphere's "
+            "1/radius",
+            base, a.radius, a.noise, a.seed);
+        return geodesic ? noisy_sphere(geodesic_sphere(a.frequency, a.radius), a.noise, a.seed)
+                        : noisy_sphere(a.subdivisions, a.noise, a.seed, a.radius);
     }
     if (k == "ellipsoid") {
         if (a.axes.size() != 3) throw InvalidArgumentError("generate: --axes takes three semi-axes A B C");
-        description = fmt::format("ellipsoid: icosphere subdivisions={} scaled by a={} b={} c={}", a.subdivisions,
-                                  a.axes[0], a.axes[1], a.axes[2]);
-        return ellipsoid(a.subdivisions, a.axes[0], a.axes[1], a.axes[2]);
+        description = fmt::format("ellipsoid: {} scaled by a={} b={} c={}", base, a.axes[0], a.axes[1], a.axes[2]);
+        return geodesic ? ellipsoid(geodesic_sphere(a.frequency).mesh, a.axes[0], a.axes[1], a.axes[2])
+                        : ellipsoid(a.subdivisions, a.axes[0], a.axes[1], a.axes[2]);
     }
     if (k == "torus") {
         const int n_major = a.n > 0 ? a.n : 64;
@@ -125,6 +131,11 @@ int run_generate(const GenerateArgs& a)
     for (const auto& [name, opt] : a.given)
         if (opt->count() > 0 && ok.count(name) == 0)
             throw InvalidArgumentError(fmt::format("generate: {} does not apply to {}", name, a.kind));
+    if (a.given.at("--frequency")->count() > 0 && a.given.at("--subdivisions")->count() > 0)
+        throw InvalidArgumentError(
+            "generate: give --subdivisions (icosphere) or --frequency (geodesic sphere), not both");
+    if (a.given.at("--frequency")->count() > 0 && (a.frequency < 1 || a.frequency > 1024))
+        throw InvalidArgumentError(fmt::format("generate: --frequency must be in 1..1024 (got {})", a.frequency));
     if (a.given.at("--n")->count() > 0 && a.n < 2)
         throw InvalidArgumentError(fmt::format("generate: --n must be >= 2 (got {})", a.n));
 
@@ -162,6 +173,9 @@ void add_generate_command(CLI::App& app, Action& action)
     g["--subdivisions"] =
         sub->add_option("--subdivisions", args->subdivisions, "icosphere subdivisions, 0..8 (sphere, ellipsoid)")
             ->capture_default_str();
+    g["--frequency"] = sub->add_option("--frequency", args->frequency,
+                                       "instead of --subdivisions: geodesic sphere of frequency F, 20 F^2 faces (F = "
+                                       "20: 8000 faces, the paper's size) (sphere, noisy-sphere, ellipsoid)");
     g["--radius"] = sub->add_option("--radius", args->radius, "sphere radius")->capture_default_str();
     g["--noise"] =
         sub->add_option("--noise", args->noise, "noisy-sphere: radial noise, uniform in [-F, F) times the radius")

@@ -41,6 +41,17 @@ struct Shape
 //! \throw InvalidArgumentError if an argument is out of range.
 Shape icosphere(int subdivisions, double radius = 1.0);
 
+//! Geodesic sphere of class I: every face of the icosahedron of icosphere(0)
+//! is cut by a regular barycentric grid of \p frequency f into f^2 triangles,
+//! whose points are projected onto the sphere: 20 f^2 faces and 10 f^2 + 2
+//! vertices (f = 20: 8000 faces, the size of the paper's spheres); twelve
+//! vertices of valence 5, the rest valence 6. Frequencies 1 and 2 give the
+//! same meshes as icosphere(0) and icosphere(1). exact_H = 1 / radius.
+//! \param frequency 1..1024
+//! \param radius > 0
+//! \throw InvalidArgumentError if an argument is out of range.
+Shape geodesic_sphere(int frequency, double radius = 1.0);
+
 //! Latitude-longitude sphere with single-vertex poles: \p n_longitude vertices
 //! per ring, \p n_latitude bands between the poles (n_latitude - 1 rings), so
 //! n_longitude * (n_latitude - 1) + 2 vertices. Ring k sits at polar angle
@@ -71,6 +82,8 @@ Shape torus(int n_major, int n_minor, double R = 1.0, double r = 0.25);
 //! \param a, b, c > 0 (semi-axes along x, y, z)
 //! \throw InvalidArgumentError if an argument is out of range.
 Shape ellipsoid(int subdivisions, double a, double b, double c);
+//! The same, stretching any mesh of the unit sphere (e.g. geodesic_sphere(20).mesh).
+Shape ellipsoid(const Mesh& unit_sphere, double a, double b, double c);
 
 //! Flat regular grid in z = 0 with \p nx by \p ny vertices, \p spacing apart,
 //! centred on the origin; every quad is split along the same diagonal, so
@@ -88,6 +101,9 @@ Shape plane_grid(int nx, int ny, double spacing = 1.0);
 //! \param noise_fraction in [0, 1)
 //! \throw InvalidArgumentError if an argument is out of range.
 Shape noisy_sphere(int subdivisions, double noise_fraction, std::uint64_t seed, double radius = 1.0);
+//! The same radial noise on any \p sphere centred at the origin (e.g.
+//! geodesic_sphere(20)); exact_H is kept.
+Shape noisy_sphere(Shape sphere, double noise_fraction, std::uint64_t seed);
 
 //! The torus of torus() sampled irregularly: a periodic grid in (u, v) of about
 //! \p approx_vertices points (n_minor = round(sqrt(N r / R)), n_major =
