@@ -17,7 +17,7 @@ namespace {
 
 bool is_subcommand(const std::string& word)
 {
-    static const std::array<const char*, 5> names = {"profile", "compare", "batch", "generate", "smooth"};
+    static const std::array<const char*, 6> names = {"profile", "compare", "batch", "generate", "smooth", "noise"};
     return std::any_of(names.begin(), names.end(), [&](const char* n) { return word == n; });
 }
 
@@ -45,6 +45,7 @@ int run(const std::vector<std::string>& raw_args)
     add_batch_command(app, action);
     add_generate_command(app, action);
     add_smooth_command(app, action);
+    add_noise_command(app, action);
 
     std::vector<std::string> reversed(args.rbegin(), args.rend() - 1);
     try {

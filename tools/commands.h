@@ -18,5 +18,6 @@ void add_compare_command(CLI::App& app, Action& action);   // tools/cmd_compare.
 void add_batch_command(CLI::App& app, Action& action);     // tools/cmd_batch.cpp
 void add_generate_command(CLI::App& app, Action& action);  // tools/cmd_generate.cpp
 void add_smooth_command(CLI::App& app, Action& action);    // tools/cmd_smooth.cpp
+void add_noise_command(CLI::App& app, Action& action);     // tools/cmd_noise.cpp
 
 }  // namespace meshdiff::cli

@@ -1,0 +1,176 @@
+#include "meshdiff/noise.h"
+
+#include "detail/random.h"
+#include "meshdiff/error.h"
+#include "meshdiff/normals.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace meshdiff {
+
+namespace {
+
+void require(bool ok, const char* field, const std::string& what)
+{
+    if (!ok) throw InvalidArgumentError(fmt::format("noise: {} {}", field, what));
+}
+
+void validate_options(const NoiseOptions& o)
+{
+    require(std::isfinite(o.amplitude) && o.amplitude >= 0, "amplitude",
+            fmt::format("must be finite and >= 0 (got {})", o.amplitude));
+    require(o.unit == NoiseUnit::MeanEdge || o.unit == NoiseUnit::BBoxDiagonal || o.unit == NoiseUnit::Absolute, "unit",
+            fmt::format("is not a NoiseUnit (got {})", int(o.unit)));
+    require(o.direction == NoiseDirection::Normal || o.direction == NoiseDirection::Random, "direction",
+            fmt::format("is not a NoiseDirection (got {})", int(o.direction)));
+    require(o.distribution == NoiseDistribution::Uniform || o.distribution == NoiseDistribution::Gaussian,
+            "distribution", fmt::format("is not a NoiseDistribution (got {})", int(o.distribution)));
+}
+
+// Mean length over the edges of the mesh, each edge counted once.
+double mean_edge_length(const Mesh& mesh)
+{
+    const Adjacency adj = vertex_adjacency(mesh);
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < adj.size(); ++i)
+        for (auto j = adj.begin(i); j != adj.end(i); ++j)
+            if (*j > i) {
+                sum += (mesh.points[*j] - mesh.points[i]).norm();
+                ++n;
+            }
+    return n ? sum / double(n) : 0.0;
+}
+
+}  // namespace
+
+NoiseReport add_noise(Mesh& mesh, const NoiseOptions& options)
+{
+    validate_options(options);
+    validate(mesh, "noise");
+
+    NoiseReport report;
+    report.mean_edge = mean_edge_length(mesh);
+    report.diagonal = bounding_box(mesh).diagonal();
+    switch (options.unit) {
+        case NoiseUnit::MeanEdge:
+            report.unit_length = report.mean_edge;
+            break;
+        case NoiseUnit::BBoxDiagonal:
+            report.unit_length = report.diagonal;
+            break;
+        case NoiseUnit::Absolute:
+            report.unit_length = 1.0;
+            break;
+    }
+    report.amplitude = options.amplitude * report.unit_length;
+    require(std::isfinite(report.amplitude), "amplitude",
+            fmt::format("times the unit ({} x {}) is not finite", options.amplitude, report.unit_length));
+    const double a = report.amplitude;
+
+    std::vector<char> in_face(mesh.n_vertices(), 0);
+    for (const Face& f : mesh.faces)
+        for (auto v : f) in_face[std::size_t(v)] = 1;
+    const std::vector<char> boundary = boundary_vertex_mask(mesh);
+    const bool along_normal = options.direction == NoiseDirection::Normal;
+    const std::vector<Vec3> normals = along_normal ? vertex_normals(mesh) : std::vector<Vec3>();
+
+    // Serial and in vertex order: every vertex consumes the same raw outputs
+    // (noise.h), whether it moves or not.
+    std::mt19937_64 rng(options.seed);
+    for (std::size_t i = 0; i < mesh.n_vertices(); ++i) {
+        Vec3 d = Vec3::Zero();
+        if (along_normal) {
+            d = normals[i];
+        } else {
+            const auto [g0, g1] = detail::gaussian_pair(rng);
+            const double g2 = detail::gaussian_pair(rng).first;
+            const Vec3 g(g0, g1, g2);
+            const double len = g.norm();
+            if (len > 0) d = g / len;
+        }
+        double t = 0.0;
+        if (options.distribution == NoiseDistribution::Uniform)
+            t = a * detail::uniform_pm1(rng);
+        else
+            t = a * detail::gaussian_pair(rng).first;
+
+        if (!in_face[i]) {
+            ++report.skipped_isolated;
+        } else if (boundary[i] && !options.move_boundary) {
+            ++report.skipped_boundary;
+        } else if (d == Vec3::Zero()) {
+            ++report.skipped_no_direction;
+        } else {
+            ++report.moved;
+            // t = 0 leaves the point bitwise unchanged (adding -0.0 or +0.0 could flip the sign of a zero).
+            if (t != 0.0) mesh.points[i] += t * d;
+            report.max_displacement = std::max(report.max_displacement, std::abs(t));
+        }
+    }
+    return report;
+}
+
+std::string noise_unit_name(NoiseUnit unit)
+{
+    switch (unit) {
+        case NoiseUnit::MeanEdge:
+            return "edge";
+        case NoiseUnit::BBoxDiagonal:
+            return "diagonal";
+        case NoiseUnit::Absolute:
+            return "absolute";
+    }
+    return "?";
+}
+
+NoiseUnit parse_noise_unit(const std::string& name)
+{
+    for (NoiseUnit u : {NoiseUnit::MeanEdge, NoiseUnit::BBoxDiagonal, NoiseUnit::Absolute})
+        if (name == noise_unit_name(u)) return u;
+    throw InvalidArgumentError(fmt::format("noise: unit '{}' is unknown (expected edge, diagonal or absolute)", name));
+}
+
+std::string noise_direction_name(NoiseDirection direction)
+{
+    switch (direction) {
+        case NoiseDirection::Normal:
+            return "normal";
+        case NoiseDirection::Random:
+            return "random";
+    }
+    return "?";
+}
+
+NoiseDirection parse_noise_direction(const std::string& name)
+{
+    for (NoiseDirection d : {NoiseDirection::Normal, NoiseDirection::Random})
+        if (name == noise_direction_name(d)) return d;
+    throw InvalidArgumentError(fmt::format("noise: direction '{}' is unknown (expected normal or random)", name));
+}
+
+std::string noise_distribution_name(NoiseDistribution distribution)
+{
+    switch (distribution) {
+        case NoiseDistribution::Uniform:
+            return "uniform";
+        case NoiseDistribution::Gaussian:
+            return "gaussian";
+    }
+    return "?";
+}
+
+NoiseDistribution parse_noise_distribution(const std::string& name)
+{
+    for (NoiseDistribution d : {NoiseDistribution::Uniform, NoiseDistribution::Gaussian})
+        if (name == noise_distribution_name(d)) return d;
+    throw InvalidArgumentError(fmt::format("noise: distribution '{}' is unknown (expected uniform or gaussian)", name));
+}
+
+}  // namespace meshdiff
