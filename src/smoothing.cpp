@@ -4,9 +4,11 @@
 
 #include <fmt/format.h>
 #include <Eigen/Geometry>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -128,56 +130,92 @@ Vec3 curvature_normal(const Mesh& mesh, const Adjacency& vf, const std::vector<V
 
 // One backward-Euler MCF step (Desbrun et al. 1999): (D - dt L) X' = D X with
 // D = diag(4 A_mixed), L the cotangent Laplacian; fixed vertices keep their
-// positions (identity rows), as do vertices without area.
+// positions, as do vertices without area. Their columns move to the right-hand
+// side, so the matrix of the free vertices is symmetric positive definite
+// (L is symmetric negative semidefinite).
 void implicit_mcf_step(const Mesh& mesh, const Adjacency& vf, const std::vector<char>& fixed, double dt,
                        std::vector<Vec3>& p)
 {
     const std::size_t n = p.size();
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(7 * n);
-    Eigen::MatrixXd rhs(Eigen::Index(n), 3);
-    std::vector<std::pair<std::size_t, double>> w;
+    // Vertices without mixed area are held too.
+    std::vector<double> area4(n, 0.0);
+    std::vector<char> held(fixed);
     for (std::size_t i = 0; i < n; ++i) {
-        const auto row = Eigen::Index(i);
-        rhs.row(row) = p[i].transpose();
+        if (held[i]) continue;
         double area = 0.0;
-        w.clear();
-        if (!fixed[i]) {
-            for (auto f = vf.begin(i); f != vf.end(i); ++f) {
-                const Face& tri = mesh.faces[*f];
-                int k = 0;
-                while (k < 3 && std::size_t(tri[std::size_t(k)]) != i) ++k;
-                if (k == 3) continue;
-                const auto j = std::size_t(tri[std::size_t((k + 1) % 3)]);
-                const auto l = std::size_t(tri[std::size_t((k + 2) % 3)]);
-                const Vec3 eij = p[j] - p[i], eil = p[l] - p[i], ejl = p[l] - p[j];
-                const double cot_j = cot(-eij, ejl), cot_l = cot(-eil, -ejl);
-                w.emplace_back(j, cot_l);
-                w.emplace_back(l, cot_j);
-                area += mixed_area_part(eij, eil, ejl, cot_j, cot_l);
+        for (auto f = vf.begin(i); f != vf.end(i); ++f) {
+            const Face& tri = mesh.faces[*f];
+            int k = 0;
+            while (k < 3 && std::size_t(tri[std::size_t(k)]) != i) ++k;
+            if (k == 3) continue;
+            const Vec3 eij = p[std::size_t(tri[std::size_t((k + 1) % 3)])] - p[i];
+            const Vec3 eil = p[std::size_t(tri[std::size_t((k + 2) % 3)])] - p[i];
+            const Vec3 ejl = eil - eij;
+            area += mixed_area_part(eij, eil, ejl, cot(-eij, ejl), cot(-eil, -ejl));
+        }
+        if (area > 0)
+            area4[i] = 4 * area;
+        else
+            held[i] = 1;
+    }
+    std::vector<Eigen::Index> index(n, -1);
+    Eigen::Index free = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!held[i]) index[i] = free++;
+    if (free == 0) return;
+    std::vector<Eigen::Triplet<double>> t;
+    t.reserve(7 * std::size_t(free));
+    Eigen::MatrixXd rhs(free, 3);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (held[i]) continue;
+        const Eigen::Index row = index[i];
+        rhs.row(row) = area4[i] * p[i].transpose();
+        double diagonal = area4[i];
+        for (auto f = vf.begin(i); f != vf.end(i); ++f) {
+            const Face& tri = mesh.faces[*f];
+            int k = 0;
+            while (k < 3 && std::size_t(tri[std::size_t(k)]) != i) ++k;
+            if (k == 3) continue;
+            const auto j = std::size_t(tri[std::size_t((k + 1) % 3)]);
+            const auto l = std::size_t(tri[std::size_t((k + 2) % 3)]);
+            const Vec3 eij = p[j] - p[i], eil = p[l] - p[i], ejl = p[l] - p[j];
+            // Edge (i, j) is opposite the corner at l, edge (i, l) opposite the corner at j.
+            for (const auto& [v, w] : {std::pair{j, cot(-eil, -ejl)}, std::pair{l, cot(-eij, ejl)}}) {
+                diagonal += dt * w;
+                if (held[v])
+                    rhs.row(row) += dt * w * p[v].transpose();
+                else
+                    t.emplace_back(row, index[v], -dt * w);
             }
         }
-        if (fixed[i] || !(area > 0)) {
-            t.emplace_back(row, row, 1.0);
-            continue;
-        }
-        double diagonal = 4 * area;
-        for (const auto& [j, wij] : w) {
-            t.emplace_back(row, Eigen::Index(j), -dt * wij);
-            diagonal += dt * wij;
-        }
         t.emplace_back(row, row, diagonal);
-        rhs.row(row) *= 4 * area;
     }
-    const auto size = Eigen::Index(n);
-    Eigen::SparseMatrix<double> a(size, size);
+    Eigen::SparseMatrix<double> a(free, free);
     a.setFromTriplets(t.begin(), t.end());
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-    lu.compute(a);
-    if (lu.info() != Eigen::Success) throw SolverError("smooth: implicit mcf: the system could not be factorised");
-    const Eigen::MatrixXd x = lu.solve(rhs);
-    if (lu.info() != Eigen::Success) throw SolverError("smooth: implicit mcf: the solve failed");
-    for (std::size_t i = 0; i < n; ++i) p[i] = x.row(Eigen::Index(i)).transpose();
+    // Conjugate gradients (Jacobi preconditioner) from the current positions:
+    // for the usual steps the system is dominated by D and converges in tens
+    // of iterations, far faster than a factorisation of a large mesh; single
+    // threaded, so the result does not depend on the thread count. Sparse
+    // Cholesky is the fallback.
+    Eigen::MatrixXd guess(free, 3);
+    for (std::size_t i = 0; i < n; ++i)
+        if (!held[i]) guess.row(index[i]) = p[i].transpose();
+    Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
+    cg.setTolerance(1e-13);
+    cg.setMaxIterations(std::max<Eigen::Index>(1000, free / 10));
+    cg.compute(a);
+    Eigen::MatrixXd x = cg.solveWithGuess(rhs, guess);
+    if (cg.info() != Eigen::Success || !x.allFinite()) {
+        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+        ldlt.compute(a);
+        if (ldlt.info() != Eigen::Success)
+            throw SolverError("smooth: implicit mcf: the system could not be factorised");
+        x = ldlt.solve(rhs);
+        if (ldlt.info() != Eigen::Success || !x.allFinite())
+            throw SolverError("smooth: implicit mcf: the solve failed");
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        if (!held[i]) p[i] = x.row(index[i]).transpose();
 }
 
 // Ohtake et al. (2000) eq. 13: move along the umbrella at MCF normal speed.

@@ -32,7 +32,8 @@ struct SmoothArgs
     std::string json;          // profile recording target ("-" for stdout)
     ProfileCliOptions profile;
     int threads = 0;
-    bool no_distance = false;  // do not record the surface distance to the input
+    bool no_distance = false;          // do not record the surface distance to the input
+    std::size_t distance_samples = 0;  // samples per direction of the recorded distance; 0: compare's default
 };
 
 // Roughness profiles recorded during smoothing, as the JSON document
@@ -125,16 +126,19 @@ int run_smooth(const SmoothArgs& a)
         const Mesh input = loaded.mesh;
         const int every = a.profile_every > 0 ? a.profile_every : std::max(1, options.iterations);
         const int last = options.iterations;
-        options.callback = [&recording, profile_callback, input, every, last](int k, const Mesh& mesh) {
+        SamplingOptions sampling;
+        if (a.distance_samples > 0) sampling.samples = a.distance_samples;
+        options.callback = [&recording, profile_callback, input, every, last, sampling](int k, const Mesh& mesh) {
             profile_callback(k, mesh);
             if (k % every != 0 && k != last) return;
-            const SurfaceDistance d = surface_distance(input, mesh);
+            const SurfaceDistance d = surface_distance(input, mesh, sampling);
             recording.distance.push_back(
                 {{"hausdorff", d.hausdorff},
                  {"hausdorff_relative", d.hausdorff / d.diagonal},
                  {"forward", {{"max", d.forward.max}, {"mean", d.forward.mean}, {"rms", d.forward.rms}}},
                  {"backward", {{"max", d.backward.max}, {"mean", d.backward.mean}, {"rms", d.backward.rms}}},
-                 {"diagonal", d.diagonal}});
+                 {"diagonal", d.diagonal},
+                 {"samples", d.forward.n_samples()}});
         };
     }
     const SmoothingReport report = smooth(loaded.mesh, options);
@@ -195,6 +199,9 @@ void add_smooth_command(CLI::App& app, Action& action)
         ->capture_default_str();
     sub->add_flag("--no-distance", args->no_distance,
                   "do not record the surface distance to the input beside each recorded profile");
+    sub->add_option("--distance-samples", args->distance_samples,
+                    "samples per direction of the recorded surface distance (default: 10 x the face count, as "
+                    "compare)");
     sub->add_option("--profile-every", args->profile_every,
                     "record the roughness profile at iteration 0 and every K iterations (and the last); needs --json");
     sub->add_option("--json", args->json,

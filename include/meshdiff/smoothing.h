@@ -24,8 +24,12 @@
 //!   With `implicit` set, each MCF iteration is instead one backward-Euler step
 //!   of Desbrun et al.: (D - dt L) X' = D X, D = diag(4 A_i), L the cotangent
 //!   Laplacian (L_ij = cot a_ij + cot b_ij, L_ii = -sum_j L_ij), weights and
-//!   areas taken from the current positions (semi-implicit), boundary rows
-//!   fixed, solved by sparse LU; no volume rescaling. It allows large steps.
+//!   areas taken from the current positions (semi-implicit), boundary vertices
+//!   (and vertices without area) held, their columns moved to the right-hand
+//!   side so that the system is symmetric positive definite; solved by
+//!   conjugate gradients from the current positions to a relative residual of
+//!   1e-13 (sparse LDL^T if that fails); no volume rescaling. It allows large
+//!   steps.
 //! - Modified mean curvature flow (Ohtake, Belyaev, Bogaevski 2000, eq. 13):
 //!   move along the umbrella direction m = U/|U| at the normal speed of mean
 //!   curvature flow. With cos t = m . Hn / |Hn|: F = |Hn| m / cos t if cos t >
