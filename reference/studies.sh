@@ -33,10 +33,11 @@ PLY="$PY $REF/plytool.py"
 EXACT=()
 if md profile --help 2>&1 | grep -q -- '--exact'; then EXACT=(--exact); fi
 
-SUBDIV=${SUBDIV:-4}        # icosphere subdivisions: 4 = 2,562 vertices, 5,120 triangles
+FREQ=${FREQ:-20}           # geodesic sphere frequency: 20 = 4,002 vertices, 8,000 triangles (the paper's size)
 ITER=${ITER:-50}           # smoothing iterations
 SHORT=${SHORT:-20}         # shorter smoothing of the real meshes, compared with the clean originals
 NOISE_REAL=${NOISE_REAL:-0.5}   # noise on bunny and igea, times the mean edge length
+DSAMPLES=${DSAMPLES:-100000}    # samples per direction of the distance to the input recorded while smoothing
 
 mkdir -p "$OUT" "$WORK"
 rm -f "$OUT/timing.txt"
@@ -63,21 +64,21 @@ rm -rf "$d"
 mkdir -p "$d"
 args=()
 for n in 0 0.005 0.01 0.02 0.04; do
-    md generate noisy-sphere "$WORK/sphere_noise_$n.ply" --subdivisions "$SUBDIV" --noise "$n" --seed 1 > /dev/null
+    md generate noisy-sphere "$WORK/sphere_noise_$n.ply" --frequency "$FREQ" --noise "$n" --seed 1 > /dev/null
     x=()
     [[ $n == 0 ]] && x=("${EXACT[@]}")
     prof "$WORK/sphere_noise_$n.ply" "$d/noise_$n.json" "${x[@]}"
     args+=("noise $n=$d/noise_$n.json")
 done
-"$PLOTP" "$d/noise.png" "Icosphere ($SUBDIV subdivisions) with uniform radial noise (fraction of the radius)" "${args[@]}" > /dev/null
-LOGY=1 "$PLOTP" "$d/noise_log.png" "Icosphere with radial noise (log scale)" "${args[@]}" > /dev/null
+"$PLOTP" "$d/noise.png" "Geodesic sphere (frequency $FREQ, 8000 triangles) with uniform radial noise (fraction of the radius)" "${args[@]}" > /dev/null
+LOGY=1 "$PLOTP" "$d/noise_log.png" "Geodesic sphere with radial noise (log scale)" "${args[@]}" > /dev/null
 args=()
 for a in 1 1.25 1.5 2 3; do
-    md generate ellipsoid "$WORK/ellipsoid_$a.ply" --subdivisions "$SUBDIV" --axes "$a" 1 1 > /dev/null
+    md generate ellipsoid "$WORK/ellipsoid_$a.ply" --frequency "$FREQ" --axes "$a" 1 1 > /dev/null
     prof "$WORK/ellipsoid_$a.ply" "$d/stretch_$a.json" "${EXACT[@]}"
     args+=("axes $a x 1 x 1=$d/stretch_$a.json")
 done
-"$PLOTP" "$d/stretch.png" "Icosphere stretched along x to semi-axes (a, 1, 1)" "${args[@]}" > /dev/null
+"$PLOTP" "$d/stretch.png" "Geodesic sphere stretched along x to semi-axes (a, 1, 1)" "${args[@]}" > /dev/null
 
 # ---------------------------------------------------------------------------------------------
 section "2 real models (Figs. 1, 4)"
@@ -97,26 +98,56 @@ section "3 smoothing (Figs. 6-9, 11-12)"
 d=$OUT/3_smoothing
 rm -rf "$d"
 mkdir -p "$d"
-md generate noisy-sphere "$WORK/s3_noisy_sphere.ply" --subdivisions "$SUBDIV" --noise 0.02 --seed 1 > /dev/null
-md generate ellipsoid "$WORK/s3_ellipsoid.ply" --subdivisions "$SUBDIV" --axes 1.5 1 1 > /dev/null
-$PLY noise "$MESHES/bunny_closed.ply" "$WORK/s3_bunny_noisy.ply" --amplitude "$NOISE_REAL" --seed 1 > /dev/null
-$PLY noise "$MESHES/igea.ply" "$WORK/s3_igea_noisy.ply" --amplitude "$NOISE_REAL" --seed 1 > /dev/null
+md generate noisy-sphere "$WORK/s3_noisy_sphere.ply" --frequency "$FREQ" --noise 0.02 --seed 1 > /dev/null
+md generate ellipsoid "$WORK/s3_ellipsoid.ply" --frequency "$FREQ" --axes 1.5 1 1 > /dev/null
+# Noise along the vertex normals, uniform in +-NOISE_REAL mean edge lengths (meshdiff noise; plytool.py
+# is the stand-in for a meshdiff without that command).
+noise() {
+    if md noise --help > /dev/null 2>&1; then
+        md noise "$1" "$2" --amplitude "$NOISE_REAL" --seed 1 > /dev/null
+    else
+        $PLY noise "$1" "$2" --amplitude "$NOISE_REAL" --seed 1 > /dev/null
+    fi
+}
+noise "$MESHES/bunny_closed.ply" "$WORK/s3_bunny_noisy.ply"
+noise "$MESHES/igea.ply" "$WORK/s3_igea_noisy.ply"
 METHODS="laplacian taubin bilaplacian mcf modified-mcf"
 for mesh in noisy_sphere ellipsoid bunny_noisy igea_noisy; do
     every=5
     [[ $mesh == igea_noisy ]] && every=10
     args=()
     for m in $METHODS; do
-        md smooth "$WORK/s3_$mesh.ply" "$WORK/s3_${mesh}_post_$m.ply" --method "$m" --update post \
+        md smooth "$WORK/s3_$mesh.ply" "$WORK/s3_${mesh}_post_$m.ply" --method "$m" --update post --distance-samples "$DSAMPLES" \
             --iterations "$ITER" --profile-every "$every" --json "$d/${mesh}_post_$m.json" > /dev/null
         args+=("$m=$d/${mesh}_post_$m.json")
     done
     "$PLOTS" "$d/${mesh}_post.png" "$mesh: five methods, post-updating, sigma against iterations" "${args[@]}" > /dev/null
 done
+# The explicit flows with the paper's fixed step exceed their stability bound on the noisy scans
+# (see README): the same flows with adaptive step control, and implicit MCF, beside them.
+for mesh in bunny_noisy igea_noisy; do
+    every=5
+    [[ $mesh == igea_noisy ]] && every=10
+    args=()
+    for run in mcf modified-mcf mcf-adaptive modified-mcf-adaptive mcf-implicit; do
+        opts=(--method "${run%%-adaptive}")
+        case $run in
+            *-adaptive) opts+=(--step-control adaptive) ;;
+            mcf-implicit) opts=(--method mcf --implicit --step 0.1) ;;
+        esac
+        if [[ $run != mcf && $run != modified-mcf ]]; then
+            md smooth "$WORK/s3_$mesh.ply" "$WORK/s3_${mesh}_post_$run.ply" "${opts[@]}" --update post --distance-samples "$DSAMPLES" \
+                --iterations "$ITER" --profile-every "$every" --json "$d/${mesh}_post_$run.json" > /dev/null
+        fi
+        args+=("$run=$d/${mesh}_post_$run.json")
+    done
+    "$PLOTS" "$d/${mesh}_flows.png" "$mesh: explicit flows with fixed and adaptive steps, and implicit MCF" \
+        "${args[@]}" > /dev/null
+done
 for mesh in noisy_sphere ellipsoid bunny_noisy; do
     args=()
     for m in laplacian mcf modified-mcf; do
-        md smooth "$WORK/s3_$mesh.ply" "$WORK/s3_${mesh}_pre_$m.ply" --method "$m" --update pre \
+        md smooth "$WORK/s3_$mesh.ply" "$WORK/s3_${mesh}_pre_$m.ply" --method "$m" --update pre --distance-samples "$DSAMPLES" \
             --iterations "$ITER" --profile-every 5 --json "$d/${mesh}_pre_$m.json" > /dev/null
         args+=("$m post=$d/${mesh}_post_$m.json" "$m pre=$d/${mesh}_pre_$m.json")
     done
@@ -138,7 +169,7 @@ vs_clean() { # MESH RESULT.ply OUT.json
 for mesh in noisy_sphere ellipsoid bunny_noisy igea_noisy; do
     vs_clean "$mesh" "$WORK/s3_$mesh.ply" "$d/${mesh}_input_vs_clean.json"
     for u in post pre; do
-        for m in $METHODS; do
+        for m in $METHODS mcf-adaptive modified-mcf-adaptive mcf-implicit; do
             f=$WORK/s3_${mesh}_${u}_$m.ply
             [[ -f $f ]] && vs_clean "$mesh" "$f" "$d/${mesh}_${u}_${m}_vs_clean.json"
         done

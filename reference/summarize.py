@@ -112,6 +112,19 @@ print("final mesh against the *clean* surface (noise-free sphere; the ellipsoid 
 print("signed relative change of sigma_20 and sigma_G ((result - clean)/clean), and the forward RMS surface")
 print("distance relative to the clean mesh's bounding-box diagonal.\n")
 methods = ("laplacian", "taubin", "bilaplacian", "mcf", "modified-mcf")
+# Extra runs of the flows on the noisy scans: adaptive step control and implicit MCF.
+flow_runs = ("mcf-adaptive", "modified-mcf-adaptive", "mcf-implicit")
+
+
+def flow_cols(d):
+    """Explicit flows: the largest dt/S over the iterations, the first iteration above 1, the flow time."""
+    fl = d.get("flow")
+    if not fl:
+        return ["", ""]
+    ratio = fl["stability_ratio"]
+    first = next((k + 1 for k, r in enumerate(ratio) if r > 1), None)
+    worst = f(max(ratio), 3) + (f" (>1 from it {first})" if first else "")
+    return [worst, f(fl["time"][-1], 3)]
 
 
 def vs_clean_cols(c):
@@ -128,9 +141,9 @@ for mesh in ("noisy_sphere", "ellipsoid", "bunny_noisy", "igea_noisy"):
     rows = []
     c = load("3_smoothing", f"{mesh}_input_vs_clean.json")
     if c:
-        rows.append(["input (not smoothed)", 0, "", "", "", "", "", ""] + vs_clean_cols(c))
+        rows.append(["input (not smoothed)", 0, "", "", "", "", "", ""] + vs_clean_cols(c) + ["", ""])
     for u in ("post", "pre"):
-        for m in methods:
+        for m in methods + flow_runs:
             d = load("3_smoothing", f"{mesh}_{u}_{m}.json")
             if d is None:
                 continue
@@ -145,11 +158,12 @@ for mesh in ("noisy_sphere", "ellipsoid", "bunny_noisy", "igea_noisy"):
             kmin = min(range(len(d["iterations"])), key=lambda k: d["sigma"][k][0])
             r.append(f"{f(d['sigma'][kmin][0] / s0[0], 3)} @ {d['iterations'][kmin]}")
             r += vs_clean_cols(load("3_smoothing", f"{mesh}_{u}_{m}_vs_clean.json"))
+            r += flow_cols(d)
             rows.append(r)
     if rows:
         print(f"### {mesh}\n")
         table(["run", "iterations", "s1 start", "s1 end/start", "s5 end/start", "s20 end/start", "sG end/start",
-               "min s1/start @ it"] + VSH, rows)
+               "min s1/start @ it"] + VSH + ["max dt/S", "flow time / e^2"], rows)
     rows = []
     for m in methods:
         c = load("3_smoothing", f"{mesh}_short_{m}_vs_clean.json")

@@ -122,6 +122,10 @@ tr -d ' \n' <"$tmp/stable.json" | grep -q '"unstable_iterations":0' || fail "smo
 tr -d ' \n' <"$tmp/stable.json" | grep -q '"step_control":"adaptive"' || fail "smooth --json: step_control"
 expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/small.ply" --method modified-mcf --step 0.05 --iterations 2
 if grep -q "exceeded the stability bound" "$tmp/stderr"; then fail "smooth: warning for a stable step"; fi
+expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/ds.ply" --iterations 2 --json "$tmp/ds.json" --distance-samples 5000
+tr -d ' \n' <"$tmp/ds.json" | grep -Eq '"samples":(49[5-9][0-9]|50[0-4][0-9])[,}]' || fail "smooth --distance-samples: not about 5000 samples"
+expect_exit 0 smooth "$tmp/noisy.ply" "$tmp/imp2.ply" --method mcf --implicit --step 0.5 --iterations 2
+if grep -q "exceeded the stability bound" "$tmp/stderr"; then fail "smooth: implicit mcf warned about stability"; fi
 expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method mcf --step-control sometimes
 expect_exit 2 smooth "$tmp/noisy.ply" "$tmp/bad.ply" --method mcf --step-control adaptive --stability 1.5
 

@@ -15,10 +15,15 @@ For each pair (A, B) and each direction (samples on S, distances to T) it runs:
      numbers are divided by SCALE. MeshLab's filter time is estimated as the
      wall time of this run minus the wall time of a run of the same script
      without the Hausdorff step (start-up, loading, scaling).
-  2. meshdiff: `meshdiff_bench_distance --pair S T --one-sided --samples M`,
-     where M is the number of samples MeshLab reports, so that both tools use
-     the same total sample count. meshdiff's time is its own measurement of
-     index build + sampling + queries + statistics (files already loaded).
+  2. meshdiff, the command users run: `meshdiff compare S T --no-roughness
+     --samples M --json -` (plus the sample-kind flags of the mode), where M is
+     the number of samples MeshLab reports, so that both tools use the same
+     total sample count; the forward direction (samples on S, distances to T)
+     is compared. The time is measured separately with
+     `meshdiff_bench_distance --pair S T --one-sided --samples M` (index build +
+     sampling + queries + statistics of that one direction, files already
+     loaded, as MeshLab's filter time), which must give the same numbers: the
+     script checks that it does.
 
 MeshLab's sample count is not N: its filter takes min(N, #vertices) vertex
 samples, N edge samples and N Monte Carlo face samples (MeshLab 2020.09).
@@ -26,7 +31,7 @@ meshdiff splits the same total as Metro does (all vertices, then edges at
 sqrt of the face density, then similar-triangles face samples).
 
 Only the Python standard library is used. Usage:
-  reference/meshlab/crosscheck.py --bench build/meshdiff_bench_distance \
+  reference/meshlab/crosscheck.py --meshdiff build/meshdiff --bench build/meshdiff_bench_distance \
       [--data /work/shared/data/meshes] [--samplenum 1000000] \
       [--igea-decimated /tmp/igea_dec10.ply] [--json results.json]
 """
@@ -144,6 +149,22 @@ def run_meshdiff(bench, sampled, target, samples, runs, mode="all", threads=None
             "command": " ".join(cmd)}
 
 
+def run_meshdiff_cli(meshdiff, sampled, target, samples, mode="all"):
+    """The forward distance (samples on `sampled`) from `meshdiff compare`."""
+    cmd = [meshdiff, "compare", sampled, target, "--no-roughness", "--samples", str(samples), "--json", "-"]
+    flags = dict(zip(("--no-vertex-samples", "--no-edge-samples", "--no-face-samples"), MODES[mode]))
+    cmd += [k for k, on in flags.items() if not on]
+    if mode == "faces-mc":
+        cmd += ["--face-sampling", "montecarlo"]
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    if p.returncode != 0:
+        raise RuntimeError("meshdiff compare failed: " + p.stderr)
+    fw = json.loads(p.stdout)["surface_distance"]["forward"]
+    kinds = fw["samples_by_kind"]
+    return {"samples": fw["samples"], "n_vertex": kinds["vertex"], "n_edge": kinds["edge"], "n_face": kinds["face"],
+            "min": fw["min"], "max": fw["max"], "mean": fw["mean"], "rms": fw["rms"], "command": " ".join(cmd)}
+
+
 def one_direction(args, tmp, sampled, target, samplenum, mode="all", single_thread=False):
     hd = os.path.join(tmp, "hd.mlx")
     base = os.path.join(tmp, "base.mlx")
@@ -157,7 +178,14 @@ def one_direction(args, tmp, sampled, target, samplenum, mode="all", single_thre
                "cpu_s": cpu, "baseline_cpu_s": cpu_base, "filter_cpu_s": max(0.0, cpu - cpu_base),
                "load1": os.getloadavg()[0],
                "command": cmd, "script": open(hd).read()})
-    md = run_meshdiff(args.bench, sampled, target, ml["samples"], args.runs, mode)
+    md = run_meshdiff_cli(args.meshdiff, sampled, target, ml["samples"], mode)
+    timing = run_meshdiff(args.bench, sampled, target, ml["samples"], args.runs, mode)
+    # The timing program runs the same library code: its numbers must be the CLI's.
+    for k in ("samples", "n_vertex", "n_edge", "n_face", "max"):
+        if timing[k] != md[k] and abs(timing[k] - md[k]) > 1e-9 * max(abs(md[k]), 1e-300):
+            raise RuntimeError(f"meshdiff CLI and timing program disagree on {k}: {md[k]} vs {timing[k]}")
+    md.update({"time_s": timing["time_s"], "cpu_s": timing["cpu_s"], "threads": timing["threads"],
+               "process_wall_s": timing["process_wall_s"], "timing_command": timing["command"]})
     r = {"sampled": os.path.basename(sampled), "target": os.path.basename(target), "mode": mode, "meshlab": ml,
          "meshdiff": md}
     if single_thread:
@@ -167,7 +195,8 @@ def one_direction(args, tmp, sampled, target, samplenum, mode="all", single_thre
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--bench", required=True, help="path of meshdiff_bench_distance")
+    ap.add_argument("--meshdiff", required=True, help="path of the meshdiff tool (the numbers)")
+    ap.add_argument("--bench", required=True, help="path of meshdiff_bench_distance (the timing)")
     ap.add_argument("--data", default="/work/shared/data/meshes")
     ap.add_argument("--samplenum", type=int, default=1000000, help="MeshLab SampleNum")
     ap.add_argument("--scale", type=float, default=1000.0, help="scale applied inside MeshLab")
