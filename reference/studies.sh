@@ -230,8 +230,8 @@ LOGY=1 "$PLOTP" "$d/curvature.png" "Goldfeather against Meyer curvature on spher
     "smoothed noisy sphere, goldfeather=$d/smoothed_sphere_goldfeather.json" \
     "smoothed noisy sphere, quadric=$d/smoothed_sphere_quadric.json" \
     "smoothed noisy sphere, meyer=$d/smoothed_sphere_meyer.json" \
-    "clean icosphere, goldfeather=$d/sphere_noise_0_goldfeather.json" \
-    "clean icosphere, meyer=$d/sphere_noise_0_meyer.json" \
+    "clean geodesic sphere, goldfeather=$d/sphere_noise_0_goldfeather.json" \
+    "clean geodesic sphere, meyer=$d/sphere_noise_0_meyer.json" \
     "irregular sphere, goldfeather=$d/sphere_irregular_3072_goldfeather.json" \
     "irregular sphere, meyer=$d/sphere_irregular_3072_meyer.json" > /dev/null
 

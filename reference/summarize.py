@@ -88,7 +88,7 @@ rows = []
 for name, d in items[1:]:
     if d and base:
         rows.append([name] + [f(sig(d, L) - sig(base, L)) for L in LV])
-print("Increase over the clean icosphere, sigma_L(noisy) - sigma_L(clean):\n")
+print("Increase over the clean geodesic sphere, sigma_L(noisy) - sigma_L(clean):\n")
 table(["mesh", "d1", "d2", "d5", "d10", "d20", "dG"], rows)
 items = [(f"axes {a},1,1", load("1_sphere_noise_stretch", f"stretch_{a}.json")) for a in ("1", "1.25", "1.5", "2", "3")]
 table(head(True), profile_rows(items, True))
@@ -183,7 +183,7 @@ table(head(True), profile_rows(items, True))
 
 print("## 5. Goldfeather against Meyer (Fig. 3)\n")
 items = []
-for mesh, label in (("smoothed_sphere", "noisy sphere + 10 Laplacian"), ("sphere_noise_0", "clean icosphere"),
+for mesh, label in (("smoothed_sphere", "noisy sphere + 10 Laplacian"), ("sphere_noise_0", "clean geodesic sphere"),
                     ("sphere_irregular_3072", "sphere_irregular_3072")):
     for c in ("goldfeather", "quadric", "meyer"):
         items.append((f"{label}, {c}", load("5_curvature", f"{mesh}_{c}.json")))
