@@ -320,4 +320,17 @@ TopologyReport topology_report(const Mesh& mesh)
     return r;
 }
 
+double mean_edge_length(const Mesh& mesh, const Adjacency& adj)
+{
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < adj.size(); ++i)
+        for (auto j = adj.begin(i); j != adj.end(i); ++j)
+            if (*j > i) {
+                sum += (mesh.points[*j] - mesh.points[i]).norm();
+                ++n;
+            }
+    return n ? sum / double(n) : 0.0;
+}
+
 }  // namespace meshdiff

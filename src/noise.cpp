@@ -33,21 +33,6 @@ void validate_options(const NoiseOptions& o)
             "distribution", fmt::format("is not a NoiseDistribution (got {})", int(o.distribution)));
 }
 
-// Mean length over the edges of the mesh, each edge counted once.
-double mean_edge_length(const Mesh& mesh)
-{
-    const Adjacency adj = vertex_adjacency(mesh);
-    double sum = 0.0;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < adj.size(); ++i)
-        for (auto j = adj.begin(i); j != adj.end(i); ++j)
-            if (*j > i) {
-                sum += (mesh.points[*j] - mesh.points[i]).norm();
-                ++n;
-            }
-    return n ? sum / double(n) : 0.0;
-}
-
 }  // namespace
 
 NoiseReport add_noise(Mesh& mesh, const NoiseOptions& options)
@@ -56,7 +41,7 @@ NoiseReport add_noise(Mesh& mesh, const NoiseOptions& options)
     validate(mesh, "noise");
 
     NoiseReport report;
-    report.mean_edge = mean_edge_length(mesh);
+    report.mean_edge = mean_edge_length(mesh, vertex_adjacency(mesh));
     report.diagonal = bounding_box(mesh).diagonal();
     switch (options.unit) {
         case NoiseUnit::MeanEdge:

@@ -230,19 +230,6 @@ Vec3 modified_flow(const Vec3& hn, const Vec3& u, double epsilon)
     return Vec3::Zero();
 }
 
-double mean_edge_length(const Adjacency& adj, const std::vector<Vec3>& p)
-{
-    double sum = 0.0;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < adj.size(); ++i)
-        for (auto j = adj.begin(i); j != adj.end(i); ++j)
-            if (*j > i) {
-                sum += (p[*j] - p[i]).norm();
-                ++n;
-            }
-    return n ? sum / double(n) : 0.0;
-}
-
 class Smoother
 {
 public:
@@ -255,7 +242,7 @@ public:
     {
         if (o.method == SmoothingMethod::MeanCurvatureFlow || o.method == SmoothingMethod::ModifiedMeanCurvatureFlow) {
             vf_ = vertex_faces(mesh);
-            const double e = mean_edge_length(adj_, mesh.points);
+            const double e = mean_edge_length(mesh, adj_);
             e2_ = e * e;
             dt_ = o.step * e2_;
         }
@@ -312,16 +299,13 @@ public:
                     return {o_.step, 0.0};
                 }
                 const FlowStep s = flow_step();
-                sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 {
-                    return Vec3(s.dt * curvature_normal(mesh_, vf_, p, i));
-                });
+                sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 { return Vec3(s.dt * hn(p, i)); });
                 return {s.dt == dt_ ? o_.step : s.dt / e2_, s.dt / s.stable};
             }
             case SmoothingMethod::ModifiedMeanCurvatureFlow: {
                 const FlowStep s = flow_step();
                 sweep([&](const std::vector<Vec3>& p, std::size_t i) -> Vec3 {
-                    return Vec3(s.dt *
-                                modified_flow(curvature_normal(mesh_, vf_, p, i), umbrella(adj_, p, i), o_.epsilon));
+                    return Vec3(s.dt * modified_flow(hn(p, i), umbrella(adj_, p, i), o_.epsilon));
                 });
                 return {s.dt == dt_ ? o_.step : s.dt / e2_, s.dt / s.stable};
             }
@@ -344,9 +328,10 @@ private:
     // The time step of an explicit flow iteration from the current positions:
     // the nominal dt, or with adaptive control at most `stability` times the
     // stability bound (see smoothing.h).
-    FlowStep flow_step() const
+    FlowStep flow_step()
     {
         const std::vector<Vec3>& p = mesh_.points;
+        if (!pre_) hn_.assign(p.size(), Vec3::Zero());
         const auto n = std::ptrdiff_t(p.size());
         double bound = std::numeric_limits<double>::infinity();
         // min is exact and order-independent: the result does not depend on the thread count.
@@ -356,9 +341,17 @@ private:
             if (fixed_[i]) continue;
             const CotangentSums c = cotangent_sums(mesh_, vf_, p, i);
             if (c.area4 > 0 && c.abs_weights > 0) bound = std::min(bound, c.area4 / c.abs_weights);
+            if (!pre_) hn_[i] = c.curvature_normal();  // the post-updating sweep reads these positions' Hn
         }
         if (o_.step_control == StepControl::Fixed) return {dt_, bound};
         return {std::min(dt_, o_.stability * bound), bound};
+    }
+
+    // Hn of vertex i at positions p: kept by flow_step() when post-updating
+    // (p are then the positions it saw), computed in place when pre-updating.
+    Vec3 hn(const std::vector<Vec3>& p, std::size_t i) const
+    {
+        return pre_ ? curvature_normal(mesh_, vf_, p, i) : hn_[i];
     }
 
     template <class UmbrellaOf>
@@ -404,7 +397,7 @@ private:
     Adjacency vf_;
     std::vector<char> fixed_;
     std::vector<double> inv_nu_;
-    std::vector<Vec3> u_, delta_;
+    std::vector<Vec3> u_, delta_, hn_;
     double dt_ = 0.0;
     double e2_ = 1.0;
     bool pre_;

@@ -69,6 +69,10 @@ struct Adjacency
 //! edges; edges shared by several faces appear once).
 Adjacency vertex_adjacency(const Mesh& mesh);
 
+//! Mean length over the edges of \p adj (vertex_adjacency() of \p mesh), each
+//! edge counted once; 0 without edges.
+double mean_edge_length(const Mesh& mesh, const Adjacency& adj);
+
 //! Vertex-face incidence: the faces around vertex i, ascending.
 Adjacency vertex_faces(const Mesh& mesh);
 
