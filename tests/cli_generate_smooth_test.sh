@@ -10,21 +10,7 @@ if [ -z "$bin" ] || [ -z "$tmp" ]; then
 fi
 mkdir -p "$tmp"
 
-fail() {
-    echo "FAIL: $*" >&2
-    exit 1
-}
-
-# Runs the tool, expects exit code $1 (the rest are the arguments).
-expect_exit() {
-    want="$1"
-    shift
-    set +e
-    "$bin" "$@" >"$tmp/stdout" 2>"$tmp/stderr"
-    got=$?
-    set -e
-    [ "$got" -eq "$want" ] || fail "meshdiff $* exited $got, expected $want: $(cat "$tmp/stderr")"
-}
+. "$(dirname "$0")/cli_lib.sh"
 
 # PLY header check: the file exists, is a PLY and carries exact_H.
 expect_ply_with_exact_h() {

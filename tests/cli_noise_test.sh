@@ -11,21 +11,7 @@ fi
 mkdir -p "$tmp"
 rm -f "$tmp"/*.ply "$tmp"/*.off
 
-fail() {
-    echo "FAIL: $*" >&2
-    exit 1
-}
-
-# Runs the tool, expects exit code $1 (the rest are the arguments).
-expect_exit() {
-    want="$1"
-    shift
-    set +e
-    "$bin" "$@" >"$tmp/stdout" 2>"$tmp/stderr"
-    got=$?
-    set -e
-    [ "$got" -eq "$want" ] || fail "meshdiff $* exited $got, expected $want: $(cat "$tmp/stderr")"
-}
+. "$(dirname "$0")/cli_lib.sh"
 
 expect_exit 0 generate sphere "$tmp/sphere.ply" --subdivisions 3
 expect_exit 0 generate plane "$tmp/plane.ply" --n 9
