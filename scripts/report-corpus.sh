@@ -71,8 +71,8 @@ run compare_map_range "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-r
     --distance-map map_range.ply --color-range 0 0.001
 
 printf 'original,processed,id\n%s,%s,bunny\n%s,%s,broken\n' "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" \
-    "$data/fandisk.ply" "$out/missing.ply" > pairs.csv
-run batch batch pairs.csv --out batch.jsonl --levels 1,2 -n 20000
+    "$data/fandisk.ply" "$out/missing.ply" > "$out.pairs.csv"
+run batch batch "$out.pairs.csv" --out batch.jsonl --levels 1,2 -n 20000
 
 for shape in sphere noisy-sphere ellipsoid torus torus-irregular heightfield heightfield-irregular plane; do
     run "generate_$shape" generate "$shape" "gen_$shape.ply"
@@ -111,5 +111,5 @@ run err_k "$data/fandisk.ply" "$data/fandisk.ply" -k 0
 run err_method smooth "$data/fandisk.ply" x.ply --method nope
 run err_lambda smooth "$data/fandisk.ply" x.ply --lambda 2
 # Paths of this run's directory are not part of the comparison (binary files too: LC_ALL=C).
-find . -type f ! -name pairs.csv -print0 | LC_ALL=C xargs -0 sed -i "s#$out#OUT#g; s#$data#DATA#g"
+find . -type f -print0 | LC_ALL=C xargs -0 sed -i "s#$out#OUT#g; s#$data#DATA#g"
 echo "report-corpus: $(find . -type f | wc -l) files in $out"

@@ -2,6 +2,8 @@
 
 #include "meshdiff/error.h"
 
+#include "detail/point_triangle.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -16,90 +18,16 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::uint32_t kNoFace = std::numeric_limits<std::uint32_t>::max();
-// sin^2 of the angle at corner 0 below which a triangle is treated as the
-// union of its edges (see the header).
-constexpr double kDegenerateSin2 = 1e-16;
-
-bool is_degenerate(const Vec3& a, const Vec3& b, const Vec3& c)
-{
-    const Vec3 ab = b - a;
-    const Vec3 ac = c - a;
-    return !(ab.cross(ac).squaredNorm() > kDegenerateSin2 * ab.squaredNorm() * ac.squaredNorm());
-}
-
-Vec3 segment_point(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-    const Vec3 ab = b - a;
-    const double len2 = ab.squaredNorm();
-    if (!(len2 > 0.0)) return a;
-    const double t = ab.dot(p - a) / len2;
-    if (t <= 0.0) return a;
-    if (t >= 1.0) return b;
-    return a + t * ab;
-}
-
-// Closest point of the union of the three edges (exact for a collinear or
-// point-like triangle). Ties: the first edge in the order ab, bc, ca.
-Vec3 degenerate_triangle_point(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
-{
-    Vec3 best = segment_point(p, a, b);
-    double best_d2 = (p - best).squaredNorm();
-    for (const auto& [u, v] : {std::pair<const Vec3*, const Vec3*>{&b, &c}, {&c, &a}}) {
-        const Vec3 q = segment_point(p, *u, *v);
-        const double d2 = (p - q).squaredNorm();
-        if (d2 < best_d2) {
-            best_d2 = d2;
-            best = q;
-        }
-    }
-    return best;
-}
-
-// Ericson, Real-Time Collision Detection, 5.1.5, for a non-degenerate
-// triangle; the face region projects onto the plane (stable for thin
-// triangles, unlike the barycentric combination).
-Vec3 triangle_point(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
-{
-    const Vec3 ab = b - a;
-    const Vec3 ac = c - a;
-    const Vec3 ap = p - a;
-    const double d1 = ab.dot(ap);
-    const double d2 = ac.dot(ap);
-    if (d1 <= 0.0 && d2 <= 0.0) return a;
-
-    const Vec3 bp = p - b;
-    const double d3 = ab.dot(bp);
-    const double d4 = ac.dot(bp);
-    if (d3 >= 0.0 && d4 <= d3) return b;
-
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + (d1 / (d1 - d3)) * ab;
-
-    const Vec3 cp = p - c;
-    const double d5 = ab.dot(cp);
-    const double d6 = ac.dot(cp);
-    if (d6 >= 0.0 && d5 <= d6) return c;
-
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + (d2 / (d2 - d6)) * ac;
-
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-
-    const Vec3 n = ab.cross(ac);
-    return p - (n.dot(ap) / n.squaredNorm()) * n;
-}
-
 struct Tri
 {
     Vec3 a, b, c;
     std::uint32_t face;
-    bool degenerate;
+    bool thin;  // see detail::is_thin_triangle
 };
 
 inline Vec3 tri_point(const Vec3& p, const Tri& t)
 {
-    return t.degenerate ? degenerate_triangle_point(p, t.a, t.b, t.c) : triangle_point(p, t.a, t.b, t.c);
+    return t.thin ? detail::thin_triangle_point(p, t.a, t.b, t.c) : detail::triangle_point(p, t.a, t.b, t.c);
 }
 
 struct Node
@@ -146,44 +74,6 @@ constexpr std::size_t kBlock = 2048;  // queries per parallel block (fixed: resu
 
 }  // namespace
 
-ClosestPoint closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-    ClosestPoint r;
-    r.point = segment_point(p, a, b);
-    r.distance = (p - r.point).norm();
-    return r;
-}
-
-ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
-{
-    ClosestPoint r;
-    r.point = is_degenerate(a, b, c) ? degenerate_triangle_point(p, a, b, c) : triangle_point(p, a, b, c);
-    r.distance = (p - r.point).norm();
-    return r;
-}
-
-ClosestPoint closest_point_brute_force(const Mesh& mesh, const Vec3& p)
-{
-    validate(mesh, "closest_point_brute_force");
-    double best_d2 = kInf;
-    ClosestPoint best;
-    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
-        const Face& t = mesh.faces[f];
-        const Vec3& a = mesh.points[std::size_t(t[0])];
-        const Vec3& b = mesh.points[std::size_t(t[1])];
-        const Vec3& c = mesh.points[std::size_t(t[2])];
-        const Vec3 q = is_degenerate(a, b, c) ? degenerate_triangle_point(p, a, b, c) : triangle_point(p, a, b, c);
-        const double d2 = (p - q).squaredNorm();
-        if (d2 < best_d2) {
-            best_d2 = d2;
-            best.point = q;
-            best.face = std::uint32_t(f);
-        }
-    }
-    best.distance = std::sqrt(best_d2);
-    return best;
-}
-
 struct ClosestPointIndex::Impl
 {
     std::vector<Tri> tris;  // in leaf order
@@ -211,7 +101,7 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
         tri.b = mesh.points[std::size_t(t[1])];
         tri.c = mesh.points[std::size_t(t[2])];
         tri.face = std::uint32_t(f);
-        tri.degenerate = is_degenerate(tri.a, tri.b, tri.c);
+        tri.thin = detail::is_thin_triangle(tri.a, tri.b, tri.c);
 
         boxes[f].grow(tri.a);
         boxes[f].grow(tri.b);

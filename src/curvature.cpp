@@ -1,5 +1,6 @@
 #include "meshdiff/curvature.h"
 
+#include "meshdiff/cotangent.h"
 #include "meshdiff/error.h"
 #include "meshdiff/normals.h"
 
@@ -208,55 +209,19 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
     return field;
 }
 
-double cot(const Vec3& a, const Vec3& b)
-{
-    const double s = a.cross(b).norm();
-    return s > 0.0 ? a.dot(b) / s : 0.0;
-}
-
 CurvatureField meyer_curvature(const Mesh& mesh, const std::vector<Vec3>& normals)
 {
+    // H = -Hn . n with the mean-curvature normal of cotangent.h.
     const std::size_t n = mesh.n_vertices();
-    std::vector<Vec3> K(n, Vec3::Zero());
-    std::vector<double> area(n, 0.0);
-    const auto degenerate = degenerate_face_mask(mesh);
-    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
-        if (degenerate[f]) continue;
-        const Face& t = mesh.faces[f];
-        const Vec3* P[3] = {&mesh.points[std::size_t(t[0])], &mesh.points[std::size_t(t[1])],
-                            &mesh.points[std::size_t(t[2])]};
-        double cots[3];
-        bool obtuse_at[3];
-        for (int k = 0; k < 3; ++k) {
-            const Vec3 e1 = *P[(k + 1) % 3] - *P[k];
-            const Vec3 e2 = *P[(k + 2) % 3] - *P[k];
-            cots[k] = cot(e1, e2);
-            obtuse_at[k] = e1.dot(e2) < 0.0;
-        }
-        const double tri_area = 0.5 * (*P[1] - *P[0]).cross(*P[2] - *P[0]).norm();
-        const bool obtuse = obtuse_at[0] || obtuse_at[1] || obtuse_at[2];
-        for (int k = 0; k < 3; ++k) {
-            const int j = (k + 1) % 3, l = (k + 2) % 3;
-            const Vec3 eij = *P[k] - *P[j];
-            const Vec3 eil = *P[k] - *P[l];
-            // Edge (k, j) is opposite l; edge (k, l) is opposite j.
-            K[std::size_t(t[k])] += cots[l] * eij + cots[j] * eil;
-            double a;
-            if (!obtuse)
-                a = (eij.squaredNorm() * cots[l] + eil.squaredNorm() * cots[j]) / 8.0;
-            else
-                a = obtuse_at[k] ? tri_area / 2.0 : tri_area / 4.0;
-            area[std::size_t(t[k])] += a;
-        }
-    }
+    const std::vector<CotangentSums> sums = cotangent_sums_by_face(mesh, degenerate_face_mask(mesh));
     const auto boundary = boundary_vertex_mask(mesh);
     CurvatureField field;
     field.H.assign(n, kNaN);
     for (std::size_t v = 0; v < n; ++v) {
         if (normals[v].squaredNorm() == 0.0) ++field.no_normal;
-        if (boundary[v] || !(area[v] > 0.0) || normals[v].squaredNorm() == 0.0) continue;
-        const Vec3 Kv = K[v] / (2.0 * area[v]);
-        field.H[v] = 0.5 * Kv.dot(normals[v]);
+        if (boundary[v] || normals[v].squaredNorm() == 0.0) continue;
+        if (!(sums[v].area4 > 0.0)) continue;
+        field.H[v] = -sums[v].curvature_normal().dot(normals[v]);
     }
     for (double h : field.H)
         if (std::isnan(h)) ++field.undefined;

@@ -16,35 +16,6 @@ namespace meshdiff {
 
 namespace {
 
-struct Edge
-{
-    std::uint32_t a, b, face;
-};
-
-// Unique undirected edges (a < b), sorted by (a, b); each with the lowest face
-// that has it. Edges of faces with a repeated corner are skipped if a == b.
-std::vector<Edge> unique_edges(const Mesh& mesh)
-{
-    std::vector<Edge> edges;
-    edges.reserve(3 * mesh.n_faces());
-    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
-        const Face& t = mesh.faces[f];
-        for (int k = 0; k < 3; ++k) {
-            auto a = std::uint32_t(t[std::size_t(k)]);
-            auto b = std::uint32_t(t[std::size_t((k + 1) % 3)]);
-            if (a == b) continue;
-            if (a > b) std::swap(a, b);
-            edges.push_back({a, b, std::uint32_t(f)});
-        }
-    }
-    std::sort(edges.begin(), edges.end(),
-              [](const Edge& x, const Edge& y) { return std::tie(x.a, x.b, x.face) < std::tie(y.a, y.b, y.face); });
-    edges.erase(
-        std::unique(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) { return x.a == y.a && x.b == y.b; }),
-        edges.end());
-    return edges;
-}
-
 // Uniform double in [0, 1) from the top 53 bits (the same on every platform,
 // unlike std::uniform_real_distribution).
 double unit_double(std::mt19937_64& rng)

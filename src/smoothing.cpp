@@ -1,5 +1,6 @@
 #include "meshdiff/smoothing.h"
 
+#include "meshdiff/cotangent.h"
 #include "meshdiff/error.h"
 
 #include <fmt/format.h>
@@ -64,70 +65,6 @@ Vec3 umbrella(const Adjacency& adj, const std::vector<Vec3>& p, std::size_t i)
     return sum / double(n) - p[i];
 }
 
-// cot of the angle between a and b; 0 for a (near-)degenerate corner.
-double cot(const Vec3& a, const Vec3& b)
-{
-    const double cross = a.cross(b).norm();
-    const double scale = a.norm() * b.norm();
-    if (!(cross > 1e-12 * scale)) return 0.0;
-    return a.dot(b) / cross;
-}
-
-// The part of vertex i's mixed area (Meyer et al. 2002) in triangle (i, j, k),
-// given its edges from i and the cotangents at j and k: the Voronoi part for a
-// non-obtuse triangle, half the area if the angle at i is obtuse, a quarter if
-// another angle is.
-double mixed_area_part(const Vec3& eij, const Vec3& eik, const Vec3& ejk, double cot_j, double cot_k)
-{
-    const double tri = 0.5 * eij.cross(eik).norm();
-    if (!(tri > 0)) return 0.0;
-    if (eij.dot(eik) < 0) return tri / 2;
-    if ((-eij).dot(ejk) < 0 || eik.dot(ejk) < 0) return tri / 4;
-    return (eij.squaredNorm() * cot_k + eik.squaredNorm() * cot_j) / 8;
-}
-
-// Cotangent sums around vertex i: sum = sum_j (cot a_ij + cot b_ij)(x_j - x_i),
-// area4 = 4 A_mixed, abs_weights = sum_j |cot a_ij| + |cot b_ij|.
-struct CotangentSums
-{
-    Vec3 sum = Vec3::Zero();
-    double area4 = 0.0;
-    double abs_weights = 0.0;
-
-    //! Mean-curvature normal Hn_i = sum / (4 A_mixed); zero without area.
-    Vec3 curvature_normal() const { return area4 > 0 ? Vec3(sum / area4) : Vec3::Zero(); }
-};
-
-CotangentSums cotangent_sums(const Mesh& mesh, const Adjacency& vf, const std::vector<Vec3>& p, std::size_t i)
-{
-    CotangentSums c;
-    double area = 0.0;
-    for (auto f = vf.begin(i); f != vf.end(i); ++f) {
-        const Face& t = mesh.faces[*f];
-        int k = 0;
-        while (k < 3 && std::size_t(t[std::size_t(k)]) != i) ++k;
-        if (k == 3) continue;
-        const Vec3& xi = p[i];
-        const Vec3& xj = p[std::size_t(t[std::size_t((k + 1) % 3)])];
-        const Vec3& xk = p[std::size_t(t[std::size_t((k + 2) % 3)])];
-        const Vec3 eij = xj - xi, eik = xk - xi, ejk = xk - xj;
-        const double cot_j = cot(-eij, ejk);   // angle at j, opposite edge (i, k)
-        const double cot_k = cot(-eik, -ejk);  // angle at k, opposite edge (i, j)
-        c.sum += cot_k * eij + cot_j * eik;
-        c.abs_weights += std::abs(cot_j) + std::abs(cot_k);
-        area += mixed_area_part(eij, eik, ejk, cot_j, cot_k);
-    }
-    c.area4 = area > 0 ? 4 * area : 0.0;
-    return c;
-}
-
-// Mean-curvature normal Hn_i = 1/(4 A_mixed) sum (cot a + cot b)(x_j - x_i),
-// from the faces around i. Zero where the mixed area vanishes.
-Vec3 curvature_normal(const Mesh& mesh, const Adjacency& vf, const std::vector<Vec3>& p, std::size_t i)
-{
-    return cotangent_sums(mesh, vf, p, i).curvature_normal();
-}
-
 // One backward-Euler MCF step (Desbrun et al. 1999): (D - dt L) X' = D X with
 // D = diag(4 A_mixed), L the cotangent Laplacian; fixed vertices keep their
 // positions, as do vertices without area. Their columns move to the right-hand
@@ -136,75 +73,21 @@ Vec3 curvature_normal(const Mesh& mesh, const Adjacency& vf, const std::vector<V
 void implicit_mcf_step(const Mesh& mesh, const Adjacency& vf, const std::vector<char>& fixed, double dt,
                        std::vector<Vec3>& p)
 {
-    const std::size_t n = p.size();
-    // Vertices without mixed area are held too.
-    std::vector<double> area4(n, 0.0);
-    std::vector<char> held(fixed);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (held[i]) continue;
-        double area = 0.0;
-        for (auto f = vf.begin(i); f != vf.end(i); ++f) {
-            const Face& tri = mesh.faces[*f];
-            int k = 0;
-            while (k < 3 && std::size_t(tri[std::size_t(k)]) != i) ++k;
-            if (k == 3) continue;
-            const Vec3 eij = p[std::size_t(tri[std::size_t((k + 1) % 3)])] - p[i];
-            const Vec3 eil = p[std::size_t(tri[std::size_t((k + 2) % 3)])] - p[i];
-            const Vec3 ejl = eil - eij;
-            area += mixed_area_part(eij, eil, ejl, cot(-eij, ejl), cot(-eil, -ejl));
-        }
-        if (area > 0)
-            area4[i] = 4 * area;
-        else
-            held[i] = 1;
-    }
-    std::vector<Eigen::Index> index(n, -1);
-    Eigen::Index free = 0;
-    for (std::size_t i = 0; i < n; ++i)
-        if (!held[i]) index[i] = free++;
+    const CotangentSystem system = backward_euler_system(mesh, vf, fixed, dt, p);
+    const Eigen::Index free = system.free();
     if (free == 0) return;
-    std::vector<Eigen::Triplet<double>> t;
-    t.reserve(7 * std::size_t(free));
-    Eigen::MatrixXd rhs(free, 3);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (held[i]) continue;
-        const Eigen::Index row = index[i];
-        rhs.row(row) = area4[i] * p[i].transpose();
-        double diagonal = area4[i];
-        for (auto f = vf.begin(i); f != vf.end(i); ++f) {
-            const Face& tri = mesh.faces[*f];
-            int k = 0;
-            while (k < 3 && std::size_t(tri[std::size_t(k)]) != i) ++k;
-            if (k == 3) continue;
-            const auto j = std::size_t(tri[std::size_t((k + 1) % 3)]);
-            const auto l = std::size_t(tri[std::size_t((k + 2) % 3)]);
-            const Vec3 eij = p[j] - p[i], eil = p[l] - p[i], ejl = p[l] - p[j];
-            // Edge (i, j) is opposite the corner at l, edge (i, l) opposite the corner at j.
-            for (const auto& [v, w] : {std::pair{j, cot(-eil, -ejl)}, std::pair{l, cot(-eij, ejl)}}) {
-                diagonal += dt * w;
-                if (held[v])
-                    rhs.row(row) += dt * w * p[v].transpose();
-                else
-                    t.emplace_back(row, index[v], -dt * w);
-            }
-        }
-        t.emplace_back(row, row, diagonal);
-    }
-    Eigen::SparseMatrix<double> a(free, free);
-    a.setFromTriplets(t.begin(), t.end());
+    const Eigen::SparseMatrix<double>& a = system.matrix;
+    const Eigen::MatrixXd& rhs = system.rhs;
     // Conjugate gradients (Jacobi preconditioner) from the current positions:
     // for the usual steps the system is dominated by D and converges in tens
     // of iterations, far faster than a factorisation of a large mesh; single
     // threaded, so the result does not depend on the thread count. Sparse
     // Cholesky is the fallback.
-    Eigen::MatrixXd guess(free, 3);
-    for (std::size_t i = 0; i < n; ++i)
-        if (!held[i]) guess.row(index[i]) = p[i].transpose();
     Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper> cg;
     cg.setTolerance(1e-13);
     cg.setMaxIterations(std::max<Eigen::Index>(1000, free / 10));
     cg.compute(a);
-    Eigen::MatrixXd x = cg.solveWithGuess(rhs, guess);
+    Eigen::MatrixXd x = cg.solveWithGuess(rhs, system.positions);
     if (cg.info() != Eigen::Success || !x.allFinite()) {
         Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
         ldlt.compute(a);
@@ -214,8 +97,8 @@ void implicit_mcf_step(const Mesh& mesh, const Adjacency& vf, const std::vector<
         if (ldlt.info() != Eigen::Success || !x.allFinite())
             throw SolverError("smooth: implicit mcf: the solve failed");
     }
-    for (std::size_t i = 0; i < n; ++i)
-        if (!held[i]) p[i] = x.row(index[i]).transpose();
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if (system.index[i] >= 0) p[i] = x.row(system.index[i]).transpose();
 }
 
 // Ohtake et al. (2000) eq. 13: move along the umbrella at MCF normal speed.

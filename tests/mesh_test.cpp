@@ -1,4 +1,5 @@
 #include "meshdiff/mesh.h"
+#include "meshdiff/topology.h"
 
 #include <gtest/gtest.h>
 

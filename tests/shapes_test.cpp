@@ -1,4 +1,5 @@
 #include "meshdiff/shapes.h"
+#include "meshdiff/topology.h"
 
 #include "meshdiff/error.h"
 #include "support/analytic.h"

@@ -11,11 +11,8 @@
 //! triangle found, so the answer equals the brute-force minimum over all
 //! triangles (to the last bits of rounding).
 //!
-//! Degenerate triangles. A triangle whose two edges at corner 0 are (numerically)
-//! parallel, sin(angle) <= 1e-8, or that has a zero-length edge or a repeated
-//! corner, is treated as the union of its three edges: exact for a segment or
-//! a point, and off by at most the triangle's width (below 1e-8 of its longest
-//! edge) for a nearly flat one.
+//! Thin and degenerate triangles are handled as in point_triangle.h, whose
+//! closest_point_on_triangle() is the exact per-triangle query the index runs.
 //!
 //! Ties and determinism. Among triangles at the same computed distance the one
 //! with the lowest face index wins. Batch queries run in parallel over fixed
@@ -25,31 +22,13 @@
 #pragma once
 
 #include "meshdiff/mesh.h"
+#include "meshdiff/point_triangle.h"
 
 #include <cstdint>
 #include <memory>
 #include <vector>
 
 namespace meshdiff {
-
-//! The closest point of a mesh (or triangle) to a query point.
-struct ClosestPoint
-{
-    double distance = 0.0;      //!< Euclidean distance, in the mesh's length unit
-    Vec3 point = Vec3::Zero();  //!< the closest point on the surface
-    std::uint32_t face = 0;     //!< the face it lies on (lowest index on ties)
-};
-
-//! Closest point of triangle (a, b, c) to \p p (Ericson's Voronoi-region
-//! method); degenerate triangles as described in the file comment. `face` is 0.
-ClosestPoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
-
-//! Closest point of segment [a, b] to \p p (a point if a == b). `face` is 0.
-ClosestPoint closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b);
-
-//! Reference implementation: the minimum of closest_point_on_triangle over all
-//! faces of \p mesh, O(#faces). Meant for tests.
-ClosestPoint closest_point_brute_force(const Mesh& mesh, const Vec3& p);
 
 //! Bounding-volume hierarchy over the triangles of a mesh, built once (binned
 //! SAH split, at most 4 triangles per leaf) and queried many times. The index

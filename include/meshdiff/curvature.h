@@ -28,6 +28,7 @@
 #pragma once
 
 #include "meshdiff/mesh.h"
+#include "meshdiff/topology.h"
 
 #include <string>
 #include <vector>

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "meshdiff/mesh.h"
+#include "meshdiff/topology.h"
 
 #include <cstdint>
 #include <vector>

@@ -35,6 +35,7 @@
 #pragma once
 
 #include "meshdiff/mesh.h"
+#include "meshdiff/topology.h"
 
 #include <cstddef>
 #include <cstdint>

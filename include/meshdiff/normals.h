@@ -5,6 +5,7 @@
 #pragma once
 
 #include "meshdiff/mesh.h"
+#include "meshdiff/topology.h"
 
 #include <vector>
 

@@ -8,6 +8,7 @@
 #include "meshdiff/mesh.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/roughness_distance.h"
+#include "meshdiff/topology.h"
 
 #include <nlohmann/json.hpp>
 

@@ -38,6 +38,7 @@
 #pragma once
 
 #include "meshdiff/mesh.h"
+#include "meshdiff/topology.h"
 
 #include <cstddef>
 #include <cstdint>

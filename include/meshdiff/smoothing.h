@@ -68,6 +68,7 @@
 #pragma once
 
 #include "meshdiff/mesh.h"
+#include "meshdiff/topology.h"
 
 #include <cstddef>
 #include <functional>
