@@ -2,9 +2,12 @@
 """Small PLY helpers for the reference studies (standard library only).
 
   plytool.py noise IN.ply OUT.ply --amplitude A [--seed S]
-      Move every vertex along its (area-weighted) normal by a uniform random amount in
-      [-A, A) times the mean edge length. Connectivity and vertex order are unchanged.
-      meshdiff has no noise command for arbitrary meshes; this is the stand-in.
+      Superseded by `meshdiff noise`; kept only as the fallback that studies.sh uses with a
+      meshdiff build that lacks the noise command. Moves every vertex with a normal,
+      boundary vertices included, along its area-weighted normal (meshdiff noise:
+      angle-weighted, boundary fixed) by a uniform random amount in [-A, A) times the mean
+      edge length, drawn with Python's random (not meshdiff's numbers for the same seed).
+      Connectivity and vertex order are unchanged.
 
   plytool.py points IN.ply OUT.dat [--prop NAME ...]
       One line per vertex: x y z valence [props...], for gnuplot.
@@ -203,16 +206,16 @@ def cmd_valence_stats(a):
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     s = p.add_subparsers(dest="cmd", required=True)
-    n = s.add_parser("noise")
+    n = s.add_parser("noise", help="superseded by `meshdiff noise` (fallback for studies.sh)")
     n.add_argument("input"); n.add_argument("output")
     n.add_argument("--amplitude", type=float, required=True)
     n.add_argument("--seed", type=int, default=1)
     n.set_defaults(func=cmd_noise)
-    q = s.add_parser("points")
+    q = s.add_parser("points", help="x y z valence [props] per vertex, for gnuplot")
     q.add_argument("input"); q.add_argument("output")
     q.add_argument("--prop", action="append")
     q.set_defaults(func=cmd_points)
-    v = s.add_parser("valence-stats")
+    v = s.add_parser("valence-stats", help="per-valence count, RMS and mean |.| of properties (JSON)")
     v.add_argument("input")
     v.add_argument("--prop", action="append", required=True)
     v.set_defaults(func=cmd_valence_stats)
