@@ -4,7 +4,6 @@
 
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
-#include "meshdiff/normals.h"
 #include "meshdiff/shapes.h"
 
 #include <cmath>
@@ -181,16 +180,4 @@ TEST(MeanCurvature, RejectsBadOptions)
     EXPECT_THROW(mean_curvature(s.mesh, o), InvalidArgumentError);
     EXPECT_THROW(parse_curvature_method("rusinkiewicz"), InvalidArgumentError);
     EXPECT_EQ(parse_curvature_method("meyer"), CurvatureMethod::MeyerCotangent);
-}
-
-TEST(VertexNormals, OutwardOnTheSphereAndZeroWhereFacesCancel)
-{
-    const Shape s = icosphere(3);
-    const auto n = vertex_normals(s.mesh);
-    for (std::size_t i = 0; i < n.size(); ++i) EXPECT_GT(n[i].dot(s.mesh.points[i].normalized()), 0.999);
-    // Two copies of a triangle with opposite orientation: normals cancel.
-    Mesh m;
-    m.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
-    m.faces = {{0, 1, 2}, {0, 2, 1}};
-    for (const auto& v : vertex_normals(m)) EXPECT_EQ(v.squaredNorm(), 0.0);
 }

@@ -116,55 +116,6 @@ TEST(RoughnessProfile, LevelsBeyondTheDiameterEqualGlobal)
     EXPECT_GT(p.global.sigma, 0.0);
 }
 
-TEST(RingNeighborhood, RegularGridHas3LLPlus1Vertices)
-{
-    const Shape grid = plane_grid(61, 61);
-    const Adjacency adj = vertex_adjacency(grid.mesh);
-    std::vector<double> ones(grid.mesh.n_vertices(), 1.0);
-    const std::vector<int> levels = {1, 2, 3, 5, 10};
-    const DiskMeans dm = disk_means(grid.mesh, adj, ones, levels, true);
-    const std::size_t centre = 30 * 61 + 30;
-    for (std::size_t k = 0; k < levels.size(); ++k) {
-        const int L = levels[k];
-        EXPECT_EQ(dm.size[k][centre], std::uint32_t(3 * L * (L + 1))) << "L = " << L;
-        const auto dist = ring_distances(adj, centre, L);
-        const auto reached = std::count_if(dist.begin(), dist.end(), [](int d) { return d > 0; });
-        EXPECT_EQ(reached, 3 * L * (L + 1)) << "L = " << L;
-    }
-}
-
-TEST(RingNeighborhood, DiskMeansMatchBruteForceWithUndefinedValues)
-{
-    const Shape s = torus(24, 12);
-    const Adjacency adj = vertex_adjacency(s.mesh);
-    std::mt19937_64 rng(7);
-    std::vector<double> values(s.mesh.n_vertices());
-    for (auto& v : values) v = double(rng() % 1000) / 7.0;
-    for (std::size_t i = 0; i < values.size(); i += 13) values[i] = std::nan("");
-    const std::vector<int> levels = {4, 1, 7};
-    const DiskMeans dm = disk_means(s.mesh, adj, values, levels, true);
-    for (std::size_t k = 0; k < levels.size(); ++k)
-        for (std::size_t i = 0; i < values.size(); ++i) {
-            if (std::isnan(values[i])) {
-                EXPECT_TRUE(std::isnan(dm.mean[k][i]));
-                continue;
-            }
-            const auto dist = ring_distances(adj, i, levels[k]);
-            double sum = 0;
-            int cnt = 0, size = 0;
-            for (std::size_t j = 0; j < values.size(); ++j)
-                if (dist[j] > 0) {
-                    ++size;
-                    if (!std::isnan(values[j])) {
-                        sum += values[j];
-                        ++cnt;
-                    }
-                }
-            ASSERT_EQ(dm.size[k][i], std::uint32_t(size));
-            ASSERT_NEAR(dm.mean[k][i], sum / cnt, 1e-12 * std::abs(sum / cnt));
-        }
-}
-
 TEST(RoughnessProfile, InvariantToTranslationRotationScaleAndVertexOrder)
 {
     const Mesh mesh = read_mesh(data("bunny_res3.ply")).mesh;

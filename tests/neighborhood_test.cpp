@@ -1,0 +1,233 @@
+#include "meshdiff/neighborhood.h"
+
+#include <gtest/gtest.h>
+
+#include "meshdiff/error.h"
+#include "meshdiff/io.h"
+#include "meshdiff/shapes.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace meshdiff;
+
+namespace {
+
+std::string data(const std::string& name)
+{
+    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
+}
+
+// Appends \p part to \p mesh, shifted by \p offset, as a separate component.
+void append(Mesh& mesh, const Mesh& part, const Vec3& offset)
+{
+    const auto base = std::int32_t(mesh.n_vertices());
+    for (const auto& p : part.points) mesh.points.push_back(p + offset);
+    for (auto f : part.faces) mesh.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
+}
+
+// Compares disk_means(..., with_sizes = true) with the definition: a breadth-
+// first search (ring_distances) per centre, its defined values averaged.
+void expect_brute_force_disk_means(const Mesh& mesh, const std::vector<double>& values, const std::vector<int>& levels)
+{
+    const Adjacency adj = vertex_adjacency(mesh);
+    const DiskMeans dm = disk_means(mesh, adj, values, levels, true);
+    ASSERT_EQ(dm.levels, levels);
+    ASSERT_EQ(dm.mean.size(), levels.size());
+    ASSERT_EQ(dm.size.size(), levels.size());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        for (std::size_t k = 0; k < levels.size(); ++k) {
+            if (std::isnan(values[i])) {
+                ASSERT_TRUE(std::isnan(dm.mean[k][i])) << "undefined centre " << i;
+                ASSERT_EQ(dm.size[k][i], 0u) << "undefined centre " << i;
+                continue;
+            }
+            const auto dist = ring_distances(adj, i, levels[k]);
+            double sum = 0;
+            std::uint32_t cnt = 0, size = 0;
+            for (std::size_t j = 0; j < values.size(); ++j)
+                if (dist[j] > 0) {
+                    ++size;
+                    if (!std::isnan(values[j])) {
+                        sum += values[j];
+                        ++cnt;
+                    }
+                }
+            ASSERT_EQ(dm.size[k][i], size) << "vertex " << i << ", level " << levels[k];
+            if (cnt == 0) {
+                ASSERT_TRUE(std::isnan(dm.mean[k][i])) << "vertex " << i << ", level " << levels[k];
+            } else {
+                ASSERT_NEAR(dm.mean[k][i], sum / cnt, 1e-12 * (1 + std::abs(sum / cnt)))
+                    << "vertex " << i << ", level " << levels[k];
+            }
+        }
+    }
+}
+
+bool bitwise_equal(const std::vector<double>& a, const std::vector<double>& b)
+{
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+}  // namespace
+
+TEST(RingNeighborhood, RegularGridHas3LLPlus1Vertices)
+{
+    const Shape grid = plane_grid(61, 61);
+    const Adjacency adj = vertex_adjacency(grid.mesh);
+    std::vector<double> ones(grid.mesh.n_vertices(), 1.0);
+    const std::vector<int> levels = {1, 2, 3, 5, 10};
+    const DiskMeans dm = disk_means(grid.mesh, adj, ones, levels, true);
+    const std::size_t centre = 30 * 61 + 30;
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+        const int L = levels[k];
+        EXPECT_EQ(dm.size[k][centre], std::uint32_t(3 * L * (L + 1))) << "L = " << L;
+        const auto dist = ring_distances(adj, centre, L);
+        const auto reached = std::count_if(dist.begin(), dist.end(), [](int d) { return d > 0; });
+        EXPECT_EQ(reached, 3 * L * (L + 1)) << "L = " << L;
+    }
+}
+
+TEST(RingNeighborhood, DiskMeansMatchBruteForceWithUndefinedValues)
+{
+    const Shape s = torus(24, 12);
+    const Adjacency adj = vertex_adjacency(s.mesh);
+    std::mt19937_64 rng(7);
+    std::vector<double> values(s.mesh.n_vertices());
+    for (auto& v : values) v = double(rng() % 1000) / 7.0;
+    for (std::size_t i = 0; i < values.size(); i += 13) values[i] = std::nan("");
+    const std::vector<int> levels = {4, 1, 7};
+    const DiskMeans dm = disk_means(s.mesh, adj, values, levels, true);
+    for (std::size_t k = 0; k < levels.size(); ++k)
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            if (std::isnan(values[i])) {
+                EXPECT_TRUE(std::isnan(dm.mean[k][i]));
+                continue;
+            }
+            const auto dist = ring_distances(adj, i, levels[k]);
+            double sum = 0;
+            int cnt = 0, size = 0;
+            for (std::size_t j = 0; j < values.size(); ++j)
+                if (dist[j] > 0) {
+                    ++size;
+                    if (!std::isnan(values[j])) {
+                        sum += values[j];
+                        ++cnt;
+                    }
+                }
+            ASSERT_EQ(dm.size[k][i], std::uint32_t(size));
+            ASSERT_NEAR(dm.mean[k][i], sum / cnt, 1e-12 * std::abs(sum / cnt));
+        }
+}
+
+TEST(RingDistances, EqualTheLatticeDistanceOfEveryGridVertex)
+{
+    // plane_grid splits every quad along (i, j)-(i+1, j+1): a step may change
+    // x, y, or both by the same sign, so the graph distance of an offset (dx,
+    // dy) is max(|dx|, |dy|, |dx - dy|), also from boundary and corner sources.
+    const int nx = 17, ny = 11, L = 6;
+    const Shape grid = plane_grid(nx, ny);
+    const Adjacency adj = vertex_adjacency(grid.mesh);
+    for (const auto& [sx, sy] : {std::pair{8, 5}, std::pair{0, 0}, std::pair{16, 0}, std::pair{3, 10}}) {
+        const auto dist = ring_distances(adj, std::size_t(sy * nx + sx), L);
+        for (int y = 0; y < ny; ++y)
+            for (int x = 0; x < nx; ++x) {
+                const int d = std::max({std::abs(x - sx), std::abs(y - sy), std::abs((x - sx) - (y - sy))});
+                ASSERT_EQ(dist[std::size_t(y * nx + x)], d <= L ? d : -1)
+                    << "source (" << sx << ", " << sy << "), vertex (" << x << ", " << y << ")";
+            }
+    }
+}
+
+TEST(DiskMeans, AgreeWithBreadthFirstSearchOnTheBunny)
+{
+    // A scanned mesh with holes, non-manifold edges and duplicate faces;
+    // levels unsorted and repeated.
+    const Mesh mesh = read_mesh(data("bunny_res3.ply")).mesh;
+    std::vector<double> values(mesh.n_vertices());
+    for (std::size_t i = 0; i < values.size(); ++i)
+        values[i] = std::sin(40.0 * mesh.points[i].x()) + mesh.points[i].y();
+    expect_brute_force_disk_means(mesh, values, {3, 1, 6, 3, 2});
+}
+
+TEST(DiskMeans, AgreeWithBreadthFirstSearchAcrossComponentsAndUndefinedValues)
+{
+    // Four components (one an isolated vertex, one entirely undefined) and a
+    // vertex whose neighbours are all undefined: its mean is NaN, its size is not 0.
+    Mesh mesh = icosphere(2).mesh;
+    append(mesh, torus(16, 8).mesh, Vec3(3, 0, 0));
+    const std::size_t grid_first = mesh.n_vertices();
+    append(mesh, plane_grid(12, 9, 0.2).mesh, Vec3(0, 3, 0));
+    const std::size_t dark_first = mesh.n_vertices();
+    append(mesh, icosphere(1).mesh, Vec3(0, 0, 3));
+    mesh.points.emplace_back(-3, 0, 0);
+    std::mt19937_64 rng(5);
+    std::vector<double> values(mesh.n_vertices());
+    for (auto& v : values) v = double(rng() % 4096) / 64.0 - 30.0;
+    for (std::size_t i = 0; i < values.size(); i += 7) values[i] = std::nan("");
+    for (std::size_t i = dark_first; i + 1 < values.size(); ++i) values[i] = std::nan("");
+    const std::size_t lonely = grid_first + 4 * 12 + 5;  // interior grid vertex
+    const Adjacency adj = vertex_adjacency(mesh);
+    values[lonely] = 1.0;
+    for (auto it = adj.begin(lonely); it != adj.end(lonely); ++it) values[*it] = std::nan("");
+    expect_brute_force_disk_means(mesh, values, {2, 5, 2, 1});
+
+    const DiskMeans dm = disk_means(mesh, adj, values, {1}, true);
+    EXPECT_TRUE(std::isnan(dm.mean[0][lonely]));
+    EXPECT_EQ(dm.size[0][lonely], 6u);
+    EXPECT_TRUE(std::isnan(dm.mean[0].back())) << "the isolated vertex has no neighbour";
+    EXPECT_EQ(dm.size[0].back(), 0u);
+}
+
+TEST(DiskMeans, SizesAreFilledOnlyWhenAskedForAndChangeNoMean)
+{
+    const Shape s = torus(20, 10);
+    const Adjacency adj = vertex_adjacency(s.mesh);
+    const DiskMeans without = disk_means(s.mesh, adj, s.exact_H, {2, 1});
+    const DiskMeans with = disk_means(s.mesh, adj, s.exact_H, {2, 1}, true);
+    EXPECT_TRUE(without.size.empty());
+    ASSERT_EQ(with.size.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) EXPECT_TRUE(bitwise_equal(without.mean[k], with.mean[k]));
+    // Every torus vertex has valence 6: 6 within one ring, 18 within two.
+    EXPECT_EQ(with.size[0], std::vector<std::uint32_t>(s.mesh.n_vertices(), 18u));
+    EXPECT_EQ(with.size[1], std::vector<std::uint32_t>(s.mesh.n_vertices(), 6u));
+}
+
+TEST(DiskMeans, BitwiseIdenticalForOneAndTwoThreads)
+{
+    const Mesh mesh = read_mesh(data("fandisk.ply")).mesh;  // 6475 vertices: about 50 batches
+    const Adjacency adj = vertex_adjacency(mesh);
+    std::vector<double> values(mesh.n_vertices());
+    for (std::size_t i = 0; i < values.size(); ++i)
+        values[i] = i % 11 == 0 ? std::nan("") : std::cos(7.0 * mesh.points[i].z()) / 3.0 + 1e-3 * double(i);
+    const std::vector<int> levels = {1, 4, 9};
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const DiskMeans one = disk_means(mesh, adj, values, levels, true);
+    omp_set_num_threads(2);
+    const DiskMeans two = disk_means(mesh, adj, values, levels, true);
+    omp_set_num_threads(saved);
+    for (std::size_t k = 0; k < levels.size(); ++k) {
+        EXPECT_TRUE(bitwise_equal(one.mean[k], two.mean[k])) << "level " << levels[k];
+        EXPECT_EQ(one.size[k], two.size[k]) << "level " << levels[k];
+    }
+}
+
+TEST(DiskMeans, RejectLevelsBelowOneAndMismatchedSizes)
+{
+    const Shape s = icosphere(1);
+    const Adjacency adj = vertex_adjacency(s.mesh);
+    const std::vector<double> values(s.mesh.n_vertices(), 1.0);
+    EXPECT_THROW(disk_means(s.mesh, adj, values, {1, 0}), InvalidArgumentError);
+    EXPECT_THROW(disk_means(s.mesh, adj, values, {-2}), InvalidArgumentError);
+    EXPECT_THROW(disk_means(s.mesh, adj, {1.0, 2.0}, {1}), InvalidArgumentError);
+    EXPECT_THROW(disk_means(icosphere(2).mesh, adj, values, {1}), InvalidArgumentError);
+    EXPECT_NO_THROW(disk_means(s.mesh, adj, values, {1, 100}));
+}
