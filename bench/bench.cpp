@@ -3,10 +3,10 @@
 // Prints one line per run and the median over N runs (default 3). The
 // machine is noisy: compare medians and ratios, not single runs.
 #include "meshdiff/curvature.h"
+#include "meshdiff/facts.h"
 #include "meshdiff/io.h"
 #include "meshdiff/neighborhood.h"
 #include "meshdiff/normals.h"
-#include "meshdiff/report.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/shapes.h"
 

@@ -14,32 +14,6 @@
 
 namespace meshdiff {
 
-std::string to_string(CurvatureMethod m)
-{
-    switch (m) {
-        case CurvatureMethod::GoldfeatherCubic:
-            return "goldfeather";
-        case CurvatureMethod::Quadric:
-            return "quadric";
-        case CurvatureMethod::MeyerCotangent:
-            return "meyer";
-    }
-    return "?";
-}
-
-std::string to_string(RowWeighting w)
-{
-    return w == RowWeighting::None ? "none" : "inverse-square";
-}
-
-CurvatureMethod parse_curvature_method(const std::string& name)
-{
-    if (name == "goldfeather" || name == "cubic") return CurvatureMethod::GoldfeatherCubic;
-    if (name == "quadric") return CurvatureMethod::Quadric;
-    if (name == "meyer" || name == "cotangent") return CurvatureMethod::MeyerCotangent;
-    throw InvalidArgumentError(fmt::format("curvature method '{}' is not one of goldfeather, quadric, meyer", name));
-}
-
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -243,6 +217,30 @@ CurvatureField mean_curvature(const Mesh& mesh, const Adjacency& adjacency, cons
         throw InvalidArgumentError("curvature: adjacency or normals do not match the mesh");
     if (options.method == CurvatureMethod::MeyerCotangent) return meyer_curvature(mesh, normals);
     return fitted_curvature(mesh, adjacency, normals, options);
+}
+
+CurvatureError curvature_error(const std::vector<double>& estimated, const std::vector<double>& reference,
+                               const std::vector<char>& skip)
+{
+    if (estimated.size() != reference.size() || (!skip.empty() && skip.size() != estimated.size()))
+        throw InvalidArgumentError(fmt::format("curvature_error: {} estimates, {} reference values, {} skip flags",
+                                               estimated.size(), reference.size(), skip.size()));
+    CurvatureError e;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < estimated.size(); ++i) {
+        if (!skip.empty() && skip[i]) continue;
+        if (std::isnan(estimated[i])) {
+            ++e.undefined;
+            continue;
+        }
+        const double d = estimated[i] - reference[i];
+        if (std::isnan(d)) continue;
+        sum += d * d;
+        e.max = std::max(e.max, std::abs(d));
+        ++e.compared;
+    }
+    e.rms = e.compared ? std::sqrt(sum / double(e.compared)) : 0.0;
+    return e;
 }
 
 CurvatureField mean_curvature(const Mesh& mesh, const CurvatureOptions& options)

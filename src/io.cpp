@@ -277,6 +277,13 @@ LoadedMesh read_mesh(const std::filesystem::path& path)
     }
 }
 
+const VertexScalar& vertex_scalar(const LoadedMesh& loaded, const std::string& name)
+{
+    for (const auto& s : loaded.vertex_scalars)
+        if (s.name == name) return s;
+    throw InvalidArgumentError(fmt::format("{} has no vertex property '{}'", loaded.input.path, name));
+}
+
 void write_ply(const std::filesystem::path& path, const Mesh& mesh, const std::vector<VertexScalar>& scalars,
                const std::vector<std::array<std::uint8_t, 3>>& colors, const std::vector<std::string>& comments)
 {
@@ -327,10 +334,16 @@ void write_ply(const std::filesystem::path& path, const Mesh& mesh, const std::v
     if (!out) throw IoError(fmt::format("{}: write failed", path.string()));
 }
 
-void write_mesh(const std::filesystem::path& path, const Mesh& mesh)
+bool writes_vertex_properties(const std::filesystem::path& path)
+{
+    return lower_extension(path) == ".ply";
+}
+
+void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const std::vector<VertexScalar>& scalars,
+                const std::vector<std::string>& comments)
 {
     const std::string ext = lower_extension(path);
-    if (ext == ".ply") return write_ply(path, mesh);
+    if (ext == ".ply") return write_ply(path, mesh, scalars, {}, comments);
     if (ext != ".obj" && ext != ".off" && ext != ".stl")
         throw IoError(
             fmt::format("{}: unknown mesh format '{}' (expected .ply, .obj, .off or .stl)", path.string(), ext));

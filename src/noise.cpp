@@ -25,12 +25,10 @@ void validate_options(const NoiseOptions& o)
 {
     require(std::isfinite(o.amplitude) && o.amplitude >= 0, "amplitude",
             fmt::format("must be finite and >= 0 (got {})", o.amplitude));
-    require(o.unit == NoiseUnit::MeanEdge || o.unit == NoiseUnit::BBoxDiagonal || o.unit == NoiseUnit::Absolute, "unit",
-            fmt::format("is not a NoiseUnit (got {})", int(o.unit)));
-    require(o.direction == NoiseDirection::Normal || o.direction == NoiseDirection::Random, "direction",
-            fmt::format("is not a NoiseDirection (got {})", int(o.direction)));
-    require(o.distribution == NoiseDistribution::Uniform || o.distribution == NoiseDistribution::Gaussian,
-            "distribution", fmt::format("is not a NoiseDistribution (got {})", int(o.distribution)));
+    require(is_known(o.unit), "unit", fmt::format("is not a NoiseUnit (got {})", int(o.unit)));
+    require(is_known(o.direction), "direction", fmt::format("is not a NoiseDirection (got {})", int(o.direction)));
+    require(is_known(o.distribution), "distribution",
+            fmt::format("is not a NoiseDistribution (got {})", int(o.distribution)));
 }
 
 }  // namespace
@@ -100,62 +98,6 @@ NoiseReport add_noise(Mesh& mesh, const NoiseOptions& options)
         }
     }
     return report;
-}
-
-std::string noise_unit_name(NoiseUnit unit)
-{
-    switch (unit) {
-        case NoiseUnit::MeanEdge:
-            return "edge";
-        case NoiseUnit::BBoxDiagonal:
-            return "diagonal";
-        case NoiseUnit::Absolute:
-            return "absolute";
-    }
-    return "?";
-}
-
-NoiseUnit parse_noise_unit(const std::string& name)
-{
-    for (NoiseUnit u : {NoiseUnit::MeanEdge, NoiseUnit::BBoxDiagonal, NoiseUnit::Absolute})
-        if (name == noise_unit_name(u)) return u;
-    throw InvalidArgumentError(fmt::format("noise: unit '{}' is unknown (expected edge, diagonal or absolute)", name));
-}
-
-std::string noise_direction_name(NoiseDirection direction)
-{
-    switch (direction) {
-        case NoiseDirection::Normal:
-            return "normal";
-        case NoiseDirection::Random:
-            return "random";
-    }
-    return "?";
-}
-
-NoiseDirection parse_noise_direction(const std::string& name)
-{
-    for (NoiseDirection d : {NoiseDirection::Normal, NoiseDirection::Random})
-        if (name == noise_direction_name(d)) return d;
-    throw InvalidArgumentError(fmt::format("noise: direction '{}' is unknown (expected normal or random)", name));
-}
-
-std::string noise_distribution_name(NoiseDistribution distribution)
-{
-    switch (distribution) {
-        case NoiseDistribution::Uniform:
-            return "uniform";
-        case NoiseDistribution::Gaussian:
-            return "gaussian";
-    }
-    return "?";
-}
-
-NoiseDistribution parse_noise_distribution(const std::string& name)
-{
-    for (NoiseDistribution d : {NoiseDistribution::Uniform, NoiseDistribution::Gaussian})
-        if (name == noise_distribution_name(d)) return d;
-    throw InvalidArgumentError(fmt::format("noise: distribution '{}' is unknown (expected uniform or gaussian)", name));
 }
 
 }  // namespace meshdiff

@@ -160,4 +160,17 @@ RoughnessProfile roughness_profile_from_curvature(const Mesh& mesh, const std::v
     return p;
 }
 
+ExactProfile exact_profile(const Mesh& mesh, const std::vector<double>& exact_H, const ProfileOptions& options,
+                           const RoughnessProfile& estimated)
+{
+    if (estimated.H.size() != mesh.n_vertices())
+        throw InvalidArgumentError("exact_profile: the estimated profile has no per-vertex H (keep_vertex_data)");
+    ProfileOptions o = options;
+    o.keep_vertex_data = true;
+    ExactProfile e;
+    e.profile = roughness_profile_from_curvature(mesh, exact_H, o);
+    e.h_error = curvature_error(estimated.H, e.profile.H);
+    return e;
+}
+
 }  // namespace meshdiff

@@ -27,6 +27,10 @@ void require(bool ok, const char* field, const std::string& what)
 
 void validate_options(const SmoothingOptions& o)
 {
+    require(is_known(o.method), "method", fmt::format("is not a SmoothingMethod (got {})", int(o.method)));
+    require(is_known(o.update), "update", fmt::format("is not a SmoothingUpdate (got {})", int(o.update)));
+    require(is_known(o.step_control), "step_control",
+            fmt::format("is not a StepControl (got {})", int(o.step_control)));
     require(o.iterations >= 0, "iterations", fmt::format("must be >= 0 (got {})", o.iterations));
     const bool flow =
         o.method == SmoothingMethod::MeanCurvatureFlow || o.method == SmoothingMethod::ModifiedMeanCurvatureFlow;
@@ -322,61 +326,11 @@ SmoothingReport smooth(Mesh& mesh, const SmoothingOptions& options)
             mesh.points = std::move(previous);
             throw SolverError(fmt::format(
                 "smooth: {} iteration {} produced a non-finite coordinate (step {} too large for this mesh?)",
-                smoothing_method_name(options.method), k, options.step));
+                to_string(options.method), k, options.step));
         }
         if (options.callback) options.callback(k, mesh);
     }
     return report;
-}
-
-std::string smoothing_method_name(SmoothingMethod method)
-{
-    switch (method) {
-        case SmoothingMethod::Laplacian:
-            return "laplacian";
-        case SmoothingMethod::Taubin:
-            return "taubin";
-        case SmoothingMethod::Bilaplacian:
-            return "bilaplacian";
-        case SmoothingMethod::MeanCurvatureFlow:
-            return "mcf";
-        case SmoothingMethod::ModifiedMeanCurvatureFlow:
-            return "modified-mcf";
-    }
-    return "unknown";
-}
-
-SmoothingMethod parse_smoothing_method(const std::string& name)
-{
-    for (auto m : {SmoothingMethod::Laplacian, SmoothingMethod::Taubin, SmoothingMethod::Bilaplacian,
-                   SmoothingMethod::MeanCurvatureFlow, SmoothingMethod::ModifiedMeanCurvatureFlow})
-        if (smoothing_method_name(m) == name) return m;
-    throw InvalidArgumentError(fmt::format(
-        "smooth: method '{}' is unknown (expected laplacian, taubin, bilaplacian, mcf or modified-mcf)", name));
-}
-
-std::string smoothing_update_name(SmoothingUpdate update)
-{
-    return update == SmoothingUpdate::Pre ? "pre" : "post";
-}
-
-SmoothingUpdate parse_smoothing_update(const std::string& name)
-{
-    if (name == "post") return SmoothingUpdate::Post;
-    if (name == "pre") return SmoothingUpdate::Pre;
-    throw InvalidArgumentError(fmt::format("smooth: update '{}' is unknown (expected post or pre)", name));
-}
-
-std::string step_control_name(StepControl control)
-{
-    return control == StepControl::Fixed ? "fixed" : "adaptive";
-}
-
-StepControl parse_step_control(const std::string& name)
-{
-    if (name == "adaptive") return StepControl::Adaptive;
-    if (name == "fixed") return StepControl::Fixed;
-    throw InvalidArgumentError(fmt::format("smooth: step control '{}' is unknown (expected adaptive or fixed)", name));
 }
 
 }  // namespace meshdiff

@@ -93,7 +93,7 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
     return distance_stats(samples, to.distances(samples.points));
 }
 
-SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options)
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances)
 {
     validate(options);
     validate(a, "surface_distance: mesh A");
@@ -109,6 +109,7 @@ SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOpt
     {
         const ClosestPointIndex index_a(a);
         r.backward = one_sided_distance(b, index_a, opt);
+        if (b_vertex_distances) r.b_vertex_distance = vertex_distances(b, index_a);
     }
     r.hausdorff = std::max(r.forward.max, r.backward.max);
     r.diagonal = bounding_box(a).diagonal();

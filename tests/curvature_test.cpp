@@ -178,6 +178,6 @@ TEST(MeanCurvature, RejectsBadOptions)
     o = {};
     o.max_normal_angle_deg = 0;
     EXPECT_THROW(mean_curvature(s.mesh, o), InvalidArgumentError);
-    EXPECT_THROW(parse_curvature_method("rusinkiewicz"), InvalidArgumentError);
-    EXPECT_EQ(parse_curvature_method("meyer"), CurvatureMethod::MeyerCotangent);
+    EXPECT_THROW(parse_enum<CurvatureMethod>("rusinkiewicz"), InvalidArgumentError);
+    EXPECT_EQ(parse_enum<CurvatureMethod>("meyer"), CurvatureMethod::MeyerCotangent);
 }

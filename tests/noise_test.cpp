@@ -36,7 +36,7 @@ NoiseOptions options(double amplitude, NoiseDirection direction = NoiseDirection
 
 std::string label(const NoiseOptions& o)
 {
-    return noise_direction_name(o.direction) + "/" + noise_distribution_name(o.distribution);
+    return to_string(o.direction) + "/" + to_string(o.distribution);
 }
 
 // Bitwise equality of the positions (== would call -0.0 and +0.0 equal).
@@ -245,13 +245,13 @@ TEST(Noise, RelativeUnitsFollowTheMeshScaleAbsoluteDoesNot)
         const NoiseReport ra = add_noise(a, o);
         const NoiseReport rb = add_noise(b, o);
         const double factor = unit == NoiseUnit::Absolute ? 1.0 : 4.0;
-        EXPECT_EQ(rb.amplitude, factor * ra.amplitude) << noise_unit_name(unit);
+        EXPECT_EQ(rb.amplitude, factor * ra.amplitude) << to_string(unit);
         for (std::size_t i = 0; i < base.n_vertices(); ++i) {
             const Vec3 db = b.points[i] - big.points[i], da = a.points[i] - base.points[i];
             if (unit == NoiseUnit::Absolute)
                 ASSERT_LE((db - da).norm(), 1e-14) << "vertex " << i;
             else
-                ASSERT_EQ(db, 4.0 * da) << noise_unit_name(unit) << " vertex " << i;
+                ASSERT_EQ(db, 4.0 * da) << to_string(unit) << " vertex " << i;
         }
     }
 }
@@ -380,14 +380,14 @@ TEST(Noise, InvalidOptionsThrowNamingTheField)
 TEST(Noise, NamesRoundTrip)
 {
     for (NoiseUnit u : {NoiseUnit::MeanEdge, NoiseUnit::BBoxDiagonal, NoiseUnit::Absolute})
-        EXPECT_EQ(parse_noise_unit(noise_unit_name(u)), u);
-    for (auto d : kDirections) EXPECT_EQ(parse_noise_direction(noise_direction_name(d)), d);
-    for (auto d : kDistributions) EXPECT_EQ(parse_noise_distribution(noise_distribution_name(d)), d);
-    EXPECT_EQ(noise_unit_name(NoiseUnit::MeanEdge), "edge");
-    EXPECT_EQ(noise_unit_name(NoiseUnit::BBoxDiagonal), "diagonal");
-    EXPECT_THROW(parse_noise_unit("meters"), InvalidArgumentError);
-    EXPECT_THROW(parse_noise_direction("up"), InvalidArgumentError);
-    EXPECT_THROW(parse_noise_distribution("poisson"), InvalidArgumentError);
+        EXPECT_EQ(parse_enum<NoiseUnit>(to_string(u)), u);
+    for (auto d : kDirections) EXPECT_EQ(parse_enum<NoiseDirection>(to_string(d)), d);
+    for (auto d : kDistributions) EXPECT_EQ(parse_enum<NoiseDistribution>(to_string(d)), d);
+    EXPECT_EQ(to_string(NoiseUnit::MeanEdge), "edge");
+    EXPECT_EQ(to_string(NoiseUnit::BBoxDiagonal), "diagonal");
+    EXPECT_THROW(parse_enum<NoiseUnit>("meters"), InvalidArgumentError);
+    EXPECT_THROW(parse_enum<NoiseDirection>("up"), InvalidArgumentError);
+    EXPECT_THROW(parse_enum<NoiseDistribution>("poisson"), InvalidArgumentError);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
-#include "meshdiff/report.h"
+#include "meshdiff/report/json.h"
+#include "meshdiff/report/text.h"
 
 #include <gtest/gtest.h>
 

@@ -21,7 +21,7 @@ const SmoothingUpdate kUpdates[] = {SmoothingUpdate::Post, SmoothingUpdate::Pre}
 
 std::string label(SmoothingMethod m, SmoothingUpdate u)
 {
-    return smoothing_method_name(m) + "/" + smoothing_update_name(u);
+    return to_string(m) + "/" + to_string(u);
 }
 
 SmoothingOptions options(SmoothingMethod m, SmoothingUpdate u, int iterations)
@@ -200,7 +200,7 @@ TEST(Smoothing, ExplicitFlowsReportTheirStabilityRatio)
         Mesh adaptive = sphere;
         o.step_control = StepControl::Adaptive;
         smooth(adaptive, o);
-        EXPECT_EQ(adaptive.points, mesh.points) << smoothing_method_name(m);
+        EXPECT_EQ(adaptive.points, mesh.points) << to_string(m);
     }
     // The umbrella methods and implicit MCF have no step limit to report.
     Mesh mesh = sphere;
@@ -278,12 +278,12 @@ TEST(Smoothing, PreAndPostUpdatingDifferAndAreDeterministic)
         smooth(post2, options(m, SmoothingUpdate::Post, 3));
         smooth(pre1, options(m, SmoothingUpdate::Pre, 3));
         smooth(pre2, options(m, SmoothingUpdate::Pre, 3));
-        EXPECT_EQ(post1.points, post2.points) << smoothing_method_name(m);
-        EXPECT_EQ(pre1.points, pre2.points) << smoothing_method_name(m);
+        EXPECT_EQ(post1.points, post2.points) << to_string(m);
+        EXPECT_EQ(pre1.points, pre2.points) << to_string(m);
         double diff = 0;
         for (std::size_t i = 0; i < post1.n_vertices(); ++i)
             diff = std::max(diff, (post1.points[i] - pre1.points[i]).norm());
-        EXPECT_GT(diff, 1e-4) << smoothing_method_name(m);
+        EXPECT_GT(diff, 1e-4) << to_string(m);
         // The first vertex sees only old positions in both schemes.
         EXPECT_NE(post1.points, pre1.points);
     }
@@ -299,7 +299,7 @@ TEST(Smoothing, ResultDoesNotDependOnTheThreadCount)
         smooth(one, options(m, SmoothingUpdate::Post, 3));
         omp_set_num_threads(4);
         smooth(many, options(m, SmoothingUpdate::Post, 3));
-        EXPECT_EQ(one.points, many.points) << smoothing_method_name(m);
+        EXPECT_EQ(one.points, many.points) << to_string(m);
     }
     omp_set_num_threads(threads);
 }
@@ -316,8 +316,8 @@ TEST(Smoothing, ModifiedMeanCurvatureFlowRegularisesTrianglesMeanCurvatureFlowDo
         o.method = SmoothingMethod::ModifiedMeanCurvatureFlow;
         smooth(modified, o);
         const double q_mcf = mean_quality(mcf), q_mod = mean_quality(modified);
-        EXPECT_GT(q_mod, q0 + 0.02) << smoothing_update_name(u) << " q0 " << q0 << " mcf " << q_mcf;
-        EXPECT_GT(q_mod, q_mcf + 0.02) << smoothing_update_name(u) << " q0 " << q0 << " mcf " << q_mcf;
+        EXPECT_GT(q_mod, q0 + 0.02) << to_string(u) << " q0 " << q0 << " mcf " << q_mcf;
+        EXPECT_GT(q_mod, q_mcf + 0.02) << to_string(u) << " q0 " << q0 << " mcf " << q_mcf;
     }
 }
 
@@ -443,12 +443,12 @@ TEST(Smoothing, InvalidOptionsThrowNamingTheField)
     o.stability = 2;
     EXPECT_EQ(message(o), "no throw");
 
-    EXPECT_THROW(parse_smoothing_method("gauss"), InvalidArgumentError);
-    EXPECT_THROW(parse_smoothing_update("sideways"), InvalidArgumentError);
-    for (auto m : kMethods) EXPECT_EQ(parse_smoothing_method(smoothing_method_name(m)), m);
-    for (auto u : kUpdates) EXPECT_EQ(parse_smoothing_update(smoothing_update_name(u)), u);
-    EXPECT_THROW(parse_step_control("sometimes"), InvalidArgumentError);
-    for (auto c : {StepControl::Fixed, StepControl::Adaptive}) EXPECT_EQ(parse_step_control(step_control_name(c)), c);
+    EXPECT_THROW(parse_enum<SmoothingMethod>("gauss"), InvalidArgumentError);
+    EXPECT_THROW(parse_enum<SmoothingUpdate>("sideways"), InvalidArgumentError);
+    for (auto m : kMethods) EXPECT_EQ(parse_enum<SmoothingMethod>(to_string(m)), m);
+    for (auto u : kUpdates) EXPECT_EQ(parse_enum<SmoothingUpdate>(to_string(u)), u);
+    EXPECT_THROW(parse_enum<StepControl>("sometimes"), InvalidArgumentError);
+    for (auto c : {StepControl::Fixed, StepControl::Adaptive}) EXPECT_EQ(parse_enum<StepControl>(to_string(c)), c);
 }
 
 TEST(Smoothing, HugeFlowStepLeavesOnlyFiniteCoordinates)

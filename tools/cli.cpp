@@ -23,6 +23,16 @@ bool is_subcommand(const std::string& word)
 
 }  // namespace
 
+Failure failure_of(const std::exception& e)
+{
+    if (dynamic_cast<const InvalidArgumentError*>(&e)) return {kUsage, e.what()};
+    if (dynamic_cast<const IoError*>(&e)) return {kIoError, e.what()};
+    if (dynamic_cast<const InvalidMeshError*>(&e)) return {kInvalidMesh, e.what()};
+    if (dynamic_cast<const SolverError*>(&e)) return {kSolverError, e.what()};
+    if (dynamic_cast<const std::bad_alloc*>(&e)) return {kInternal, "out of memory"};
+    return {kInternal, std::string("internal error: ") + e.what()};
+}
+
 int run(const std::vector<std::string>& raw_args)
 {
     std::vector<std::string> args = raw_args;
@@ -60,30 +70,17 @@ int run(const std::vector<std::string>& raw_args)
         std::cerr << "meshdiff: " << e.what() << " (see meshdiff --help)\n";
         return kUsage;
     } catch (const InvalidArgumentError& e) {
-        std::cerr << "meshdiff: " << e.what() << "\n";
-        return kUsage;
+        const Failure f = failure_of(e);
+        std::cerr << "meshdiff: " << f.message << "\n";
+        return f.code;
     }
     if (!action) return kOk;
     try {
         return action();
-    } catch (const InvalidArgumentError& e) {
-        std::cerr << "meshdiff: " << e.what() << "\n";
-        return kUsage;
-    } catch (const IoError& e) {
-        std::cerr << "meshdiff: " << e.what() << "\n";
-        return kIoError;
-    } catch (const InvalidMeshError& e) {
-        std::cerr << "meshdiff: " << e.what() << "\n";
-        return kInvalidMesh;
-    } catch (const SolverError& e) {
-        std::cerr << "meshdiff: " << e.what() << "\n";
-        return kSolverError;
-    } catch (const std::bad_alloc&) {
-        std::cerr << "meshdiff: out of memory\n";
-        return kInternal;
     } catch (const std::exception& e) {
-        std::cerr << "meshdiff: internal error: " << e.what() << "\n";
-        return kInternal;
+        const Failure f = failure_of(e);
+        std::cerr << "meshdiff: " << f.message << "\n";
+        return f.code;
     }
 }
 

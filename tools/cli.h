@@ -3,6 +3,7 @@
 //! apart from main() so that it can be driven from tests.
 #pragma once
 
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,17 @@ enum ExitCode : int
     kInternal = 70,     //!< a bug: please report
     kBatchFailures = 6  //!< batch finished, but some pairs failed
 };
+
+//! How a command that threw \p e ends: its exit code and its one-line message
+//! (without the "meshdiff: " prefix). The one mapping from meshdiff's error
+//! classes (error.h) to exit codes, used by every command and by batch for
+//! each pair.
+struct Failure
+{
+    int code;
+    std::string message;
+};
+Failure failure_of(const std::exception& e);
 
 //! Runs the tool on argv-style arguments (args[0] is the program name).
 int run(const std::vector<std::string>& args);

@@ -3,6 +3,7 @@
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
+#include "meshdiff/report/json.h"
 #include "options.h"
 
 #include <fmt/format.h>
@@ -145,33 +146,19 @@ int run_batch(const BatchArgs& a)
             ++skipped;
             continue;
         }
-        nlohmann::json line{{"id", p.id}, {"original", p.original}, {"processed", p.processed}};
+        nlohmann::json line;
         int code = kOk;
         std::string error;
         try {
             const LoadedMesh a_mesh = read_mesh(p.original);
             const LoadedMesh b_mesh = read_mesh(p.processed);
-            line["result"] = comparison_json(compare_meshes(a_mesh, b_mesh, options));
-        } catch (const IoError& e) {
-            code = kIoError;
-            error = e.what();
-        } catch (const InvalidMeshError& e) {
-            code = kInvalidMesh;
-            error = e.what();
-        } catch (const InvalidArgumentError& e) {
-            code = kUsage;
-            error = e.what();
-        } catch (const std::exception& e) {
-            code = kInternal;
-            error = e.what();
-        }
-        if (code == kOk) {
-            line["status"] = "ok";
+            line = batch_ok_json(p.id, p.original, p.processed, compare_meshes(a_mesh, b_mesh, options));
             ++ok;
-        } else {
-            line["status"] = "error";
-            line["error"] = error;
-            line["exit_code"] = code;
+        } catch (const std::exception& e) {
+            const Failure f = failure_of(e);
+            code = f.code;
+            error = f.message;
+            line = batch_error_json(p.id, p.original, p.processed, error, code);
             ++failed;
         }
         out << line.dump() << "\n";

@@ -1,15 +1,16 @@
 #include "commands.h"
-#include "meshdiff/closest_point.h"
-#include "meshdiff/colormap.h"
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
+#include "meshdiff/report/json.h"
+#include "meshdiff/report/text.h"
+#include "meshdiff/vertex_maps.h"
 #include "options.h"
-
-#include <fmt/format.h>
 
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <utility>
 
 namespace meshdiff::cli {
 
@@ -28,27 +29,18 @@ struct CompareArgs
 int run_compare(const CompareArgs& a)
 {
     set_threads(a.threads);
-    const CompareOptions options = to_compare_options(a.compare);
-    if (!a.color_range.empty() && !(a.color_range.size() == 2 && a.color_range[0] < a.color_range[1]))
-        throw InvalidArgumentError("--color-range needs MIN MAX with MIN < MAX");
+    CompareOptions options = to_compare_options(a.compare);
+    options.vertex_distances = !a.distance_map.empty();
+    std::optional<std::pair<double, double>> range;
+    if (!a.color_range.empty()) {
+        if (!(a.color_range.size() == 2 && a.color_range[0] < a.color_range[1]))
+            throw InvalidArgumentError("--color-range needs MIN MAX with MIN < MAX");
+        range = std::pair{a.color_range[0], a.color_range[1]};
+    }
     const LoadedMesh original = read_mesh(a.original);
     const LoadedMesh processed = read_mesh(a.processed);
     const Comparison c = compare_meshes(original, processed, options);
-
-    if (!a.distance_map.empty()) {
-        const ClosestPointIndex index(original.mesh);
-        const std::vector<double> d = vertex_distances(processed.mesh, index);
-        double lo = 0.0, hi = 0.0;
-        if (a.color_range.size() == 2) {
-            lo = a.color_range[0];
-            hi = a.color_range[1];
-        } else {
-            for (double x : d) hi = std::max(hi, x);
-        }
-        write_ply(a.distance_map, processed.mesh, {{"distance", d}}, sequential_colors(d, lo, hi),
-                  {fmt::format("per-vertex distance of {} to the surface of {}", a.processed, a.original),
-                   fmt::format("colour: blue (low) to red (high) over [{:.9g}, {:.9g}]", lo, hi)});
-    }
+    if (!a.distance_map.empty()) write_ply(a.distance_map, processed.mesh, distance_map(c, range));
     if (!a.json.empty()) write_json(a.json, comparison_json(c));
     if (a.json != "-") std::cout << comparison_text(c);
     return 0;

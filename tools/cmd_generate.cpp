@@ -1,6 +1,7 @@
 #include "commands.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
+#include "meshdiff/report/text.h"
 #include "meshdiff/shapes.h"
 
 #include <fmt/format.h>
@@ -141,19 +142,10 @@ int run_generate(const GenerateArgs& a)
 
     std::string description;
     const Shape shape = make_shape(a, description);
-    const std::filesystem::path out(a.out);
-    std::string ext = out.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    if (ext == ".ply") {
-        write_ply(out, shape.mesh, {{"exact_H", shape.exact_H}}, {},
-                  {"meshdiff generate: " + description, "exact_H: exact mean curvature, +1/r on a sphere"});
-    } else {
-        write_mesh(out, shape.mesh);
-        std::cerr << "meshdiff: note: exact_H is only stored in .ply files\n";
-    }
-    const auto [lo, hi] = std::minmax_element(shape.exact_H.begin(), shape.exact_H.end());
-    std::cout << fmt::format("{}: {} vertices, {} faces, exact H in [{:.6g}, {:.6g}] ({})\n", a.out,
-                             shape.mesh.n_vertices(), shape.mesh.n_faces(), *lo, *hi, description);
+    write_mesh(a.out, shape.mesh, {{"exact_H", shape.exact_H}},
+               {"meshdiff generate: " + description, "exact_H: exact mean curvature, +1/r on a sphere"});
+    if (!writes_vertex_properties(a.out)) std::cerr << "meshdiff: note: exact_H is only stored in .ply files\n";
+    std::cout << shape_text(a.out, shape, description);
     return 0;
 }
 

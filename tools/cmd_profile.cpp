@@ -1,14 +1,15 @@
 #include "commands.h"
-#include "meshdiff/colormap.h"
 #include "meshdiff/error.h"
+#include "meshdiff/facts.h"
 #include "meshdiff/io.h"
-#include "meshdiff/report.h"
+#include "meshdiff/report/json.h"
+#include "meshdiff/report/text.h"
 #include "meshdiff/roughness.h"
+#include "meshdiff/vertex_maps.h"
 #include "options.h"
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <future>
 #include <iostream>
 #include <memory>
@@ -29,42 +30,6 @@ struct ProfileArgs
     std::string exact_property = "exact_H";
 };
 
-// The profile from a given per-vertex H beside the estimated one, and the
-// error of the estimate, as text and JSON.
-struct ExactComparison
-{
-    RoughnessProfile profile;
-    double h_rms = 0.0, h_max = 0.0;
-    std::size_t compared = 0;
-};
-
-ExactComparison exact_comparison(const LoadedMesh& loaded, const std::string& property, const ProfileOptions& base,
-                                 const RoughnessProfile& estimated)
-{
-    const VertexScalar* H = nullptr;
-    for (const auto& s : loaded.vertex_scalars)
-        if (s.name == property) H = &s;
-    if (!H)
-        throw InvalidArgumentError(
-            fmt::format("--exact: {} has no vertex property '{}' (meshdiff generate writes "
-                        "exact_H)",
-                        loaded.input.path, property));
-    ProfileOptions o = base;
-    o.keep_vertex_data = true;
-    ExactComparison e;
-    e.profile = roughness_profile_from_curvature(loaded.mesh, H->values, o);
-    double sum = 0.0;
-    for (std::size_t i = 0; i < estimated.H.size(); ++i) {
-        const double d = estimated.H[i] - e.profile.H[i];
-        if (std::isnan(d)) continue;
-        sum += d * d;
-        e.h_max = std::max(e.h_max, std::abs(d));
-        ++e.compared;
-    }
-    e.h_rms = e.compared ? std::sqrt(sum / double(e.compared)) : 0.0;
-    return e;
-}
-
 int run_profile(const ProfileArgs& a)
 {
     set_threads(a.threads);
@@ -77,56 +42,21 @@ int run_profile(const ProfileArgs& a)
     const RoughnessProfile profile = roughness_profile(loaded.mesh, options);
     const MeshFacts facts = facts_future.get();
 
-    if (!a.vertex_data.empty()) {
-        const Mesh unit = apply_normalization(loaded.mesh, profile.normalization);
-        std::vector<VertexScalar> props;
-        props.push_back({"H", profile.H});
-        for (std::size_t k = 0; k < profile.levels.size(); ++k)
-            props.push_back({fmt::format("D_{}", profile.levels[k].level), profile.D[k]});
-        if (profile.has_global) props.push_back({"D_global", profile.D_global});
-        std::vector<double> worst(unit.n_vertices(), 0.0);
-        std::vector<std::string> comments;
-        auto mark = [&](const LevelRoughness& l, const std::string& name) {
-            std::string ids;
-            for (auto v : l.worst_vertices) {
-                worst[v] = 1.0;
-                ids += fmt::format(" {}", v);
-            }
-            comments.push_back(fmt::format("worst |D| vertices at {}:{}", name, ids));
-        };
-        for (const auto& l : profile.levels) mark(l, fmt::format("level {}", l.level));
-        if (profile.has_global) mark(profile.global, "global");
-        props.push_back({"worst", worst});
-        const double range = a.color_range > 0.0 ? a.color_range : robust_symmetric_range(profile.H);
-        comments.insert(comments.begin(),
-                        fmt::format("colour: H on a blue-white-red map over [-{:.6g}, {:.6g}]", range, range));
-        comments.insert(comments.begin(), fmt::format("source: {} scaled by 1/{:.9g} about its centroid", a.mesh,
-                                                      profile.normalization.scale));
-        write_ply(a.vertex_data, unit, props, diverging_colors(profile.H, range), comments);
-    }
+    if (!a.vertex_data.empty())
+        write_ply(a.vertex_data, apply_normalization(loaded.mesh, profile.normalization),
+                  profile_map(profile, a.mesh, a.color_range));
     nlohmann::json j = profile_json(facts, profile);
     std::string text = profile_text(facts, profile);
     if (a.exact) {
-        const ExactComparison e = exact_comparison(loaded, a.exact_property, options, profile);
-        nlohmann::json sigma = nlohmann::json::array();
-        text += fmt::format(
-            "\nexact profile from the vertex property '{}' (H error of the estimate on the scaled "
-            "mesh: RMS {:.4g}, max {:.4g} over {} vertices)\n   level  sigma estimated  sigma exact\n",
-            a.exact_property, e.h_rms, e.h_max, e.compared);
-        for (std::size_t k = 0; k < profile.levels.size(); ++k) {
-            sigma.push_back(e.profile.levels[k].sigma);
-            text += fmt::format("{:>8} {:>16.6g} {:>12.6g}\n", profile.levels[k].level, profile.levels[k].sigma,
-                                e.profile.levels[k].sigma);
+        const VertexScalar* H = nullptr;
+        try {
+            H = &vertex_scalar(loaded, a.exact_property);
+        } catch (const InvalidArgumentError& e) {
+            throw InvalidArgumentError(fmt::format("--exact: {} (meshdiff generate writes exact_H)", e.what()));
         }
-        if (profile.has_global)
-            text += fmt::format("{:>8} {:>16.6g} {:>12.6g}\n", "global", profile.global.sigma, e.profile.global.sigma);
-        j["exact"] = {
-            {"property", a.exact_property},
-            {"levels", j["levels"]},
-            {"sigma", sigma},
-            {"sigma_global", e.profile.has_global ? nlohmann::json(e.profile.global.sigma) : nlohmann::json(nullptr)},
-            {"undefined_vertices", e.profile.curvature_undefined},
-            {"h_error", {{"rms", e.h_rms}, {"max", e.h_max}, {"vertices", e.compared}}}};
+        const ExactProfile e = exact_profile(loaded.mesh, H->values, options, profile);
+        text += exact_profile_text(profile, e, a.exact_property);
+        j["exact"] = exact_profile_json(profile, e, a.exact_property);
     }
     if (!a.json.empty()) write_json(a.json, j);
     if (a.json != "-") std::cout << text;

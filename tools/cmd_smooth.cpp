@@ -1,16 +1,14 @@
 #include "commands.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
-#include "meshdiff/roughness.h"
+#include "meshdiff/report/json.h"
+#include "meshdiff/report/text.h"
 #include "meshdiff/smoothing.h"
-#include "meshdiff/surface_distance.h"
+#include "meshdiff/smoothing_record.h"
 #include "options.h"
-
-#include <nlohmann/json.hpp>
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -36,127 +34,35 @@ struct SmoothArgs
     std::size_t distance_samples = 0;  // samples per direction of the recorded distance; 0: compare's default
 };
 
-// Roughness profiles recorded during smoothing, as the JSON document
-// meshdiff.smoothing/1.
-struct Recording
-{
-    std::vector<int> iterations;
-    std::vector<std::vector<double>> sigma;  // per recorded iteration, per level
-    std::vector<double> sigma_global;
-    std::vector<std::size_t> undefined;                 // vertices with undefined H
-    nlohmann::json distance = nlohmann::json::array();  // surface distance to the input, per record
-};
-
-nlohmann::json recording_json(const SmoothArgs& a, const SmoothingOptions& o, const ProfileOptions& p,
-                              const Recording& r, const SmoothingReport& report)
-{
-    nlohmann::json j;
-    j["schema"] = "meshdiff.smoothing/1";
-    j["input"] = a.in;
-    j["output"] = a.out;
-    j["method"] = smoothing_method_name(o.method);
-    j["update"] = smoothing_update_name(o.update);
-    j["parameters"] = {{"iterations", o.iterations},
-                       {"lambda", o.lambda},
-                       {"mu", o.mu},
-                       {"step", o.step},
-                       {"damping", o.damping},
-                       {"epsilon", o.epsilon},
-                       {"implicit", o.implicit},
-                       {"step_control", step_control_name(o.step_control)},
-                       {"stability", o.stability}};
-    j["curvature"] = to_string(p.curvature.method);
-    j["profile_every"] = a.profile_every;
-    j["iterations"] = r.iterations;
-    j["levels"] = p.levels;
-    j["sigma"] = r.sigma;
-    j["sigma_global"] = r.sigma_global;
-    j["curvature_undefined"] = r.undefined;
-    if (!r.distance.empty()) j["distance_to_input"] = r.distance;
-    if (!report.steps.empty()) {
-        // Flow time at each recorded iteration, in units of the initial mean edge length squared.
-        std::vector<double> time;
-        for (int k : r.iterations) {
-            double t = 0;
-            for (std::size_t i = 0; i < std::size_t(k) && i < report.steps.size(); ++i) t += report.steps[i];
-            time.push_back(t);
-        }
-        j["flow"] = {{"mean_edge", report.mean_edge},
-                     {"time", time},
-                     {"steps", report.steps},
-                     {"stability_ratio", report.stability_ratio},
-                     {"unstable_iterations", report.unstable_iterations}};
-    }
-    return j;
-}
-
 int run_smooth(const SmoothArgs& a)
 {
     SmoothingOptions options = a.options;
-    options.method = parse_smoothing_method(a.method);
-    options.update = parse_smoothing_update(a.update);
-    options.step_control = parse_step_control(a.step_control);
+    options.method = parse_enum<SmoothingMethod>(a.method);
+    options.update = parse_enum<SmoothingUpdate>(a.update);
+    options.step_control = parse_enum<StepControl>(a.step_control);
     if (a.profile_every < 0)
         throw InvalidArgumentError(fmt::format("--profile-every must be >= 1 (got {})", a.profile_every));
     if (a.profile_every > 0 && a.json.empty()) throw InvalidArgumentError("--profile-every needs --json FILE");
     const bool record = !a.json.empty();
-    ProfileOptions profile_options;
-    Recording recording;
+    RecordOptions record_options;
     if (record) {
         set_threads(a.threads);
-        profile_options = to_profile_options(a.profile, false);
-        // Every K iterations, or only at the start and the end.
-        const int every = a.profile_every > 0 ? a.profile_every : std::max(1, options.iterations);
-        const int last = options.iterations;
-        options.callback = [&, every, last](int k, const Mesh& mesh) {
-            if (k % every != 0 && k != last) return;
-            const RoughnessProfile p = roughness_profile(mesh, profile_options);
-            recording.iterations.push_back(k);
-            std::vector<double> sigma;
-            for (const auto& l : p.levels) sigma.push_back(l.sigma);
-            recording.sigma.push_back(std::move(sigma));
-            if (p.has_global) recording.sigma_global.push_back(p.global.sigma);
-            recording.undefined.push_back(p.curvature_undefined);
-        };
+        record_options.every = a.profile_every;
+        record_options.profile = to_profile_options(a.profile, false);
+        record_options.distance = !a.no_distance;
+        if (a.distance_samples > 0) record_options.sampling.samples = a.distance_samples;
     }
     LoadedMesh loaded = read_mesh(a.in);
-    if (record && !a.no_distance) {
-        // Metro-style distance of each recorded state to the input surface.
-        auto profile_callback = options.callback;
-        const Mesh input = loaded.mesh;
-        const int every = a.profile_every > 0 ? a.profile_every : std::max(1, options.iterations);
-        const int last = options.iterations;
-        SamplingOptions sampling;
-        if (a.distance_samples > 0) sampling.samples = a.distance_samples;
-        options.callback = [&recording, profile_callback, input, every, last, sampling](int k, const Mesh& mesh) {
-            profile_callback(k, mesh);
-            if (k % every != 0 && k != last) return;
-            const SurfaceDistance d = surface_distance(input, mesh, sampling);
-            recording.distance.push_back(
-                {{"hausdorff", d.hausdorff},
-                 {"hausdorff_relative", d.hausdorff / d.diagonal},
-                 {"forward", {{"max", d.forward.max}, {"mean", d.forward.mean}, {"rms", d.forward.rms}}},
-                 {"backward", {{"max", d.backward.max}, {"mean", d.backward.mean}, {"rms", d.backward.rms}}},
-                 {"diagonal", d.diagonal},
-                 {"samples", d.forward.n_samples()}});
-        };
-    }
-    const SmoothingReport report = smooth(loaded.mesh, options);
+    SmoothingRecord recording;
+    if (record)
+        recording = smooth_and_record(loaded.mesh, options, record_options);
+    else
+        recording.report = smooth(loaded.mesh, options);
     write_mesh(a.out, loaded.mesh);
-    if (record) write_json(a.json, recording_json(a, options, profile_options, recording, report));
+    if (record) write_json(a.json, smoothing_json(recording, options, record_options, a.in, a.out));
     if (a.json != "-") {
-        std::cout << fmt::format("{}: {} {}-updating, {} iterations, {} vertices\n", a.out, a.method, a.update,
-                                 options.iterations, loaded.mesh.n_vertices());
-        if (!report.steps.empty()) {
-            const double worst = *std::max_element(report.stability_ratio.begin(), report.stability_ratio.end());
-            std::cout << fmt::format("flow time {:.6g} e^2 (e = {:.6g}, the initial mean edge length)\n", report.time,
-                                     report.mean_edge);
-            if (report.unstable_iterations > 0)
-                std::cerr << fmt::format(
-                    "warning: {}: {} of {} explicit steps exceeded the stability bound (up to {:.3g} times); the flow "
-                    "may diverge: use a smaller --step, --step-control adaptive or --implicit (mcf)\n",
-                    a.in, report.unstable_iterations, options.iterations, worst);
-        }
+        std::cout << smoothing_text(a.out, options, loaded.mesh.n_vertices(), recording.report);
+        if (const auto warning = smoothing_warning(a.in, options, recording.report)) std::cerr << *warning;
     }
     return 0;
 }
@@ -171,10 +77,12 @@ void add_smooth_command(CLI::App& app, Action& action)
     sub->add_option("IN", args->in, "input mesh (.ply .obj .off .stl)")->required();
     sub->add_option("OUT", args->out, "output mesh (.ply .obj .off .stl)")->required();
     sub->add_option("--method", args->method, "laplacian | taubin | bilaplacian | mcf | modified-mcf")
+        ->check(CLI::IsMember(enum_names<SmoothingMethod>()))
         ->capture_default_str();
     sub->add_option("--update", args->update,
                     "post (Jacobi, from the previous positions) | pre (Gauss-Seidel, in "
                     "place in vertex order)")
+        ->check(CLI::IsMember(enum_names<SmoothingUpdate>()))
         ->capture_default_str();
     SmoothingOptions& o = args->options;
     sub->add_option("--iterations", o.iterations, "iterations (a Taubin iteration is a lambda and a mu step)")
@@ -186,6 +94,7 @@ void add_smooth_command(CLI::App& app, Action& action)
     sub->add_option("--step-control", args->step_control,
                     "explicit mcf / modified-mcf: fixed (always --step, the paper's scheme; may diverge) | adaptive "
                     "(shorten a step beyond the stability bound)")
+        ->check(CLI::IsMember(enum_names<StepControl>()))
         ->capture_default_str();
     sub->add_option("--stability", o.stability,
                     "adaptive step control: fraction of the largest stable explicit step, in (0, 1]")

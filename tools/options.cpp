@@ -49,10 +49,10 @@ void add_profile_options(CLI::App* sub, ProfileCliOptions& o)
     sub->add_option("--levels", o.levels, "ring levels, e.g. 1,2,5,10,20 or 1-20")->capture_default_str();
     sub->add_flag("--no-global", o.no_global, "leave out the global level");
     sub->add_option("--curvature", o.curvature, "mean curvature estimator")
-        ->check(CLI::IsMember({"goldfeather", "quadric", "meyer"}))
+        ->check(CLI::IsMember(enum_names<CurvatureMethod>()))
         ->capture_default_str();
     sub->add_option("--weighting", o.weighting, "row weighting of the fitting estimators")
-        ->check(CLI::IsMember({"none", "inverse-square"}))
+        ->check(CLI::IsMember(enum_names<RowWeighting>()))
         ->capture_default_str();
 }
 
@@ -61,8 +61,8 @@ ProfileOptions to_profile_options(const ProfileCliOptions& o, bool keep_vertex_d
     ProfileOptions p;
     p.levels = parse_levels(o.levels);
     p.global = !o.no_global;
-    p.curvature.method = parse_curvature_method(o.curvature);
-    p.curvature.weighting = o.weighting == "none" ? RowWeighting::None : RowWeighting::InverseSquare;
+    p.curvature.method = parse_enum<CurvatureMethod>(o.curvature);
+    p.curvature.weighting = parse_enum<RowWeighting>(o.weighting);
     p.keep_vertex_data = keep_vertex_data;
     return p;
 }
@@ -76,7 +76,7 @@ void add_compare_options(CLI::App* sub, CompareCliOptions& o)
     sub->add_option("-n,--samples", o.samples, "samples per direction (default: 10 x the larger face count, as Metro)");
     sub->add_option("--density", o.density, "samples per unit area instead of a count");
     sub->add_option("--face-sampling", o.face_sampling, "face sampling scheme")
-        ->check(CLI::IsMember({"similar", "montecarlo"}))
+        ->check(CLI::IsMember(enum_names<FaceSampling>()))
         ->capture_default_str();
     sub->add_option("--seed", o.seed, "seed of Monte Carlo sampling")->capture_default_str();
     sub->add_flag("--no-vertex-samples", o.no_vertex_samples, "do not sample vertices");
@@ -95,7 +95,7 @@ CompareOptions to_compare_options(const CompareCliOptions& o)
     if (o.samples > 0) c.sampling.samples = o.samples;
     if (o.density < 0.0) throw InvalidArgumentError("--density must be > 0");
     if (o.density > 0.0) c.sampling.density = o.density;
-    c.sampling.face_scheme = o.face_sampling == "similar" ? FaceSampling::SimilarTriangles : FaceSampling::MonteCarlo;
+    c.sampling.face_scheme = parse_enum<FaceSampling>(o.face_sampling);
     c.sampling.seed = o.seed;
     c.sampling.vertices = !o.no_vertex_samples;
     c.sampling.edges = !o.no_edge_samples;

@@ -1,21 +1,20 @@
 //! \file compare.h
 //! \brief The comparison of an original and a processed mesh that
-//! `meshdiff ORIGINAL PROCESSED` reports (schema "meshdiff.compare/1"): both
-//! roughness profiles, the per-level roughness distance (roughness_distance.h)
-//! and the Metro-style surface distance (surface_distance.h).
+//! `meshdiff ORIGINAL PROCESSED` reports: both roughness profiles, the
+//! per-level roughness distance (roughness_distance.h) and the Metro-style
+//! surface distance (surface_distance.h), with the facts of both meshes. The
+//! JSON (schema "meshdiff.compare/1") and text forms are in meshdiff/report/.
 #pragma once
 
+#include "meshdiff/facts.h"
 #include "meshdiff/io.h"
-#include "meshdiff/report.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/roughness_distance.h"
 #include "meshdiff/sampling.h"
 #include "meshdiff/surface_distance.h"
 
-#include <nlohmann/json.hpp>
-
 #include <optional>
-#include <string>
+#include <vector>
 
 namespace meshdiff {
 
@@ -26,6 +25,10 @@ struct CompareOptions
     bool roughness = true;       //!< compute the profiles and their distance
     bool distance = true;        //!< compute the surface distance
     SamplingOptions sampling{};  //!< surface sampling (Metro defaults)
+    //! Also the exact distance of every vertex of the processed mesh to the
+    //! original surface (Comparison::processed_vertex_distance), for a
+    //! distance map; it reuses the index of the surface distance.
+    bool vertex_distances = false;
 };
 
 struct Comparison
@@ -37,19 +40,13 @@ struct Comparison
     std::optional<RoughnessProfile> processed_profile;
     std::optional<RoughnessDistance> roughness;
     std::optional<SurfaceDistance> distance;
+    //! With CompareOptions::vertex_distances: per vertex of the processed mesh,
+    //! its exact distance to the original surface.
+    std::vector<double> processed_vertex_distance;
 };
 
 //! Runs the halves asked for in \p options.
 //! \throw InvalidArgumentError for bad options (k <= 0, both halves off, bad sampling).
 Comparison compare_meshes(const LoadedMesh& original, const LoadedMesh& processed, const CompareOptions& options = {});
-
-//! The "meshdiff.compare/1" object.
-nlohmann::json comparison_json(const Comparison& c);
-//! The report for people, in Metro's order and names for the distance part.
-std::string comparison_text(const Comparison& c);
-
-//! The JSON of one direction's distance statistics (absolute, and relative to
-//! \p diagonal).
-nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal);
 
 }  // namespace meshdiff

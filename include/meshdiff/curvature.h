@@ -27,6 +27,7 @@
 //!   on boundary and non-manifold-edge vertices.
 #pragma once
 
+#include "meshdiff/enum_names.h"
 #include "meshdiff/mesh.h"
 #include "meshdiff/topology.h"
 
@@ -49,11 +50,22 @@ enum class RowWeighting
     InverseSquare  //!< each neighbour's rows times 2 / (x^2 + y^2) (mymesh, curvpack)
 };
 
-std::string to_string(CurvatureMethod m);
-std::string to_string(RowWeighting w);
-//! Parses "goldfeather" (or "cubic"), "quadric", "meyer" (or "cotangent").
-//! \throw InvalidArgumentError for another name.
-CurvatureMethod parse_curvature_method(const std::string& name);
+template <>
+struct EnumNames<CurvatureMethod>
+{
+    static constexpr const char* what = "curvature method";
+    static constexpr std::array<EnumName<CurvatureMethod>, 3> names{{{CurvatureMethod::GoldfeatherCubic, "goldfeather"},
+                                                                     {CurvatureMethod::Quadric, "quadric"},
+                                                                     {CurvatureMethod::MeyerCotangent, "meyer"}}};
+};
+
+template <>
+struct EnumNames<RowWeighting>
+{
+    static constexpr const char* what = "row weighting";
+    static constexpr std::array<EnumName<RowWeighting>, 2> names{
+        {{RowWeighting::None, "none"}, {RowWeighting::InverseSquare, "inverse-square"}}};
+};
 
 struct CurvatureOptions
 {
@@ -72,6 +84,23 @@ struct CurvatureField
     std::size_t quadric_fallback = 0;  //!< cubic fits that fell back to the quadric
     std::size_t no_normal = 0;         //!< vertices without a vertex normal (all faces degenerate)
 };
+
+//! The error of an estimated H against a reference H (an exact one).
+struct CurvatureError
+{
+    double rms = 0.0;           //!< sqrt(mean of (H - H_ref)^2) over the compared vertices (0 if none)
+    double max = 0.0;           //!< max |H - H_ref|
+    std::size_t compared = 0;   //!< vertices compared
+    std::size_t undefined = 0;  //!< vertices skipped because the estimate is NaN
+};
+
+//! The error of \p estimated against \p reference, vertex by vertex in index
+//! order, leaving out vertices whose \p skip flag is set (if \p skip is
+//! given), whose estimate is NaN (counted as undefined) or whose reference is
+//! NaN.
+//! \throw InvalidArgumentError if the sizes differ.
+CurvatureError curvature_error(const std::vector<double>& estimated, const std::vector<double>& reference,
+                               const std::vector<char>& skip = {});
 
 //! Mean curvature of every vertex of \p mesh (in the mesh's own units).
 //! \throw InvalidArgumentError for out-of-range options.

@@ -41,6 +41,10 @@ struct LoadedMesh
     std::vector<VertexScalar> vertex_scalars;
 };
 
+//! The vertex scalar called \p name of \p loaded.
+//! \throw InvalidArgumentError if there is none (the message names the file).
+const VertexScalar& vertex_scalar(const LoadedMesh& loaded, const std::string& name);
+
 //! Reads \p path. The format follows the extension (.ply .obj .off .stl).
 //! Unreferenced vertices are dropped (and counted), polygons fan-triangulated,
 //! faces with a repeated corner dropped (and counted); coordinates are kept in
@@ -59,9 +63,16 @@ void write_ply(const std::filesystem::path& path, const Mesh& mesh, const std::v
                const std::vector<std::array<std::uint8_t, 3>>& colors = {},
                const std::vector<std::string>& comments = {});
 
-//! Writes a mesh in the format of the extension (.ply binary, .obj, .off, .stl)
-//! through OpenMesh's writers (.ply goes to write_ply).
-//! \throw IoError on failure.
-void write_mesh(const std::filesystem::path& path, const Mesh& mesh);
+//! Writes a mesh in the format of the extension: .ply through write_ply() with
+//! the scalar properties and comments; .obj, .off, .stl through OpenMesh's
+//! writers, which keep neither (see writes_vertex_properties()).
+//! \throw IoError on failure (also for non-manifold faces in .obj .off .stl).
+//! \throw InvalidArgumentError if a property has the wrong size.
+void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const std::vector<VertexScalar>& scalars = {},
+                const std::vector<std::string>& comments = {});
+
+//! True if write_mesh() keeps vertex properties and comments in the format of
+//! \p path (PLY).
+bool writes_vertex_properties(const std::filesystem::path& path);
 
 }  // namespace meshdiff

@@ -34,6 +34,7 @@
 //! neither).
 #pragma once
 
+#include "meshdiff/enum_names.h"
 #include "meshdiff/mesh.h"
 #include "meshdiff/topology.h"
 
@@ -100,17 +101,28 @@ struct NoiseReport
 //! \throw InvalidMeshError if the mesh fails meshdiff::validate().
 NoiseReport add_noise(Mesh& mesh, const NoiseOptions& options);
 
-//! "edge", "diagonal", "absolute".
-std::string noise_unit_name(NoiseUnit unit);
-//! Inverse of noise_unit_name(). \throw InvalidArgumentError if unknown.
-NoiseUnit parse_noise_unit(const std::string& name);
-//! "normal", "random".
-std::string noise_direction_name(NoiseDirection direction);
-//! Inverse of noise_direction_name(). \throw InvalidArgumentError if unknown.
-NoiseDirection parse_noise_direction(const std::string& name);
-//! "uniform", "gaussian".
-std::string noise_distribution_name(NoiseDistribution distribution);
-//! Inverse of noise_distribution_name(). \throw InvalidArgumentError if unknown.
-NoiseDistribution parse_noise_distribution(const std::string& name);
+template <>
+struct EnumNames<NoiseUnit>
+{
+    static constexpr const char* what = "noise unit";
+    static constexpr std::array<EnumName<NoiseUnit>, 3> names{
+        {{NoiseUnit::MeanEdge, "edge"}, {NoiseUnit::BBoxDiagonal, "diagonal"}, {NoiseUnit::Absolute, "absolute"}}};
+};
+
+template <>
+struct EnumNames<NoiseDirection>
+{
+    static constexpr const char* what = "noise direction";
+    static constexpr std::array<EnumName<NoiseDirection>, 2> names{
+        {{NoiseDirection::Normal, "normal"}, {NoiseDirection::Random, "random"}}};
+};
+
+template <>
+struct EnumNames<NoiseDistribution>
+{
+    static constexpr const char* what = "noise distribution";
+    static constexpr std::array<EnumName<NoiseDistribution>, 2> names{
+        {{NoiseDistribution::Uniform, "uniform"}, {NoiseDistribution::Gaussian, "gaussian"}}};
+};
 
 }  // namespace meshdiff

@@ -80,6 +80,20 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
 RoughnessProfile roughness_profile_from_curvature(const Mesh& mesh, const std::vector<double>& H,
                                                   const ProfileOptions& options = {});
 
+//! A profile computed from an exact H beside an estimated one.
+struct ExactProfile
+{
+    RoughnessProfile profile;  //!< the profile of the exact H (with vertex data: H on the normalised mesh)
+    CurvatureError h_error;    //!< the error of the estimated H against the exact one, on the normalised mesh
+};
+
+//! The profile of \p mesh from \p exact_H (roughness_profile_from_curvature()
+//! with vertex data kept) and the error of \p estimated's H against it.
+//! \throw InvalidArgumentError if \p estimated was computed without
+//!        keep_vertex_data or \p exact_H has the wrong size.
+ExactProfile exact_profile(const Mesh& mesh, const std::vector<double>& exact_H, const ProfileOptions& options,
+                           const RoughnessProfile& estimated);
+
 //! sigma of one level computed from D values (NaN skipped), with the counts
 //! and the outlier diagnostic. Exposed for tests and for other D sources.
 LevelRoughness level_roughness(int level, const std::vector<double>& D, double outlier_fraction = 0.001);

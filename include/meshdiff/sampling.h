@@ -37,6 +37,7 @@
 //! sample.
 #pragma once
 
+#include "meshdiff/enum_names.h"
 #include "meshdiff/mesh.h"
 #include "meshdiff/topology.h"
 
@@ -52,6 +53,14 @@ enum class FaceSampling
 {
     SimilarTriangles,  //!< Metro's similar-triangles lattice (deterministic; default)
     MonteCarlo,        //!< uniform random points, seeded (SamplingOptions::seed)
+};
+
+template <>
+struct EnumNames<FaceSampling>
+{
+    static constexpr const char* what = "face sampling";
+    static constexpr std::array<EnumName<FaceSampling>, 2> names{
+        {{FaceSampling::SimilarTriangles, "similar"}, {FaceSampling::MonteCarlo, "montecarlo"}}};
 };
 
 //! The kind of mesh element a sample comes from.

@@ -67,9 +67,11 @@
 //! never produce NaN.
 #pragma once
 
+#include "meshdiff/enum_names.h"
 #include "meshdiff/mesh.h"
 #include "meshdiff/topology.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -132,6 +134,13 @@ struct SmoothingReport
     double time = 0.0;                    //!< flow time: the sum of steps, in units of mean_edge^2
     int unstable_iterations = 0;          //!< iterations with stability_ratio > 1
     double mean_edge = 0.0;               //!< e, the mean edge length before the first iteration
+    //! The largest stability_ratio (0 without explicit flow steps).
+    double max_stability_ratio() const
+    {
+        double m = 0.0;
+        for (double r : stability_ratio) m = std::max(m, r);
+        return m;
+    }
 };
 
 //! Smooths \p mesh in place (positions only; faces are untouched) with the
@@ -144,17 +153,32 @@ struct SmoothingReport
 //!        cannot be factorised; the mesh then holds the last finite state.
 SmoothingReport smooth(Mesh& mesh, const SmoothingOptions& options);
 
-//! "laplacian", "taubin", "bilaplacian", "mcf", "modified-mcf".
-std::string smoothing_method_name(SmoothingMethod method);
-//! Inverse of smoothing_method_name(). \throw InvalidArgumentError if unknown.
-SmoothingMethod parse_smoothing_method(const std::string& name);
-//! "post", "pre".
-std::string smoothing_update_name(SmoothingUpdate update);
-//! Inverse of smoothing_update_name(). \throw InvalidArgumentError if unknown.
-SmoothingUpdate parse_smoothing_update(const std::string& name);
-//! "adaptive", "fixed".
-std::string step_control_name(StepControl control);
-//! Inverse of step_control_name(). \throw InvalidArgumentError if unknown.
-StepControl parse_step_control(const std::string& name);
+template <>
+struct EnumNames<SmoothingMethod>
+{
+    static constexpr const char* what = "smoothing method";
+    static constexpr std::array<EnumName<SmoothingMethod>, 5> names{
+        {{SmoothingMethod::Laplacian, "laplacian"},
+         {SmoothingMethod::Taubin, "taubin"},
+         {SmoothingMethod::Bilaplacian, "bilaplacian"},
+         {SmoothingMethod::MeanCurvatureFlow, "mcf"},
+         {SmoothingMethod::ModifiedMeanCurvatureFlow, "modified-mcf"}}};
+};
+
+template <>
+struct EnumNames<SmoothingUpdate>
+{
+    static constexpr const char* what = "smoothing update";
+    static constexpr std::array<EnumName<SmoothingUpdate>, 2> names{
+        {{SmoothingUpdate::Post, "post"}, {SmoothingUpdate::Pre, "pre"}}};
+};
+
+template <>
+struct EnumNames<StepControl>
+{
+    static constexpr const char* what = "step control";
+    static constexpr std::array<EnumName<StepControl>, 2> names{
+        {{StepControl::Fixed, "fixed"}, {StepControl::Adaptive, "adaptive"}}};
+};
 
 }  // namespace meshdiff

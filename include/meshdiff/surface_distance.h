@@ -70,6 +70,10 @@ struct SurfaceDistance
     //! its own diagonal on every side of every axis.
     double metro_diagonal = 0.0;
     double relative_hausdorff() const { return hausdorff / diagonal; }  //!< hausdorff / diagonal
+    //! Only when asked for: the exact distance of every vertex of B (unreferenced
+    //! ones included) to the surface of A, in vertex order, from the index of A
+    //! that the backward direction built (a per-vertex distance map of B).
+    std::vector<double> b_vertex_distance;
 };
 
 //! The statistics of \p distances, the distances of \p samples (same order).
@@ -85,10 +89,12 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
 
 //! Both directions, the symmetric Hausdorff distance and the diagonals.
 //! \p a is the original, \p b the processed mesh; \p options apply to both
-//! directions (an unset target means 10 x max(#faces A, #faces B)).
+//! directions (an unset target means 10 x max(#faces A, #faces B)). With
+//! \p b_vertex_distances, SurfaceDistance::b_vertex_distance is filled too.
 //! \throw InvalidArgumentError for invalid options or if they give no sample.
 //! \throw InvalidMeshError if a mesh is invalid (meshdiff::validate()).
-SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options = {});
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options = {},
+                                 bool b_vertex_distances = false);
 
 //! Exact distance of every vertex of \p from (unreferenced ones included) to
 //! the surface indexed by \p to, in vertex order; for per-vertex distance maps.

@@ -1,0 +1,64 @@
+//! \file report/json.h
+//! \brief The JSON reports of meshdiff (presentation layer, target
+//! meshdiff::report): schemas "meshdiff.profile/1", "meshdiff.compare/1",
+//! "meshdiff.smoothing/1" and the batch lines, built from the plain structs the
+//! library returns. No computing file includes this header. JSON never holds
+//! NaN or Inf: undefined numbers are null and are explained by a count or a
+//! flag beside them.
+#pragma once
+
+#include "meshdiff/compare.h"
+#include "meshdiff/facts.h"
+#include "meshdiff/roughness.h"
+#include "meshdiff/roughness_distance.h"
+#include "meshdiff/smoothing_record.h"
+#include "meshdiff/surface_distance.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace meshdiff {
+
+//! A JSON number, or null when \p x is not finite.
+nlohmann::json number_or_null(double x);
+
+//! The "mesh" object: path, topology counts, reading report, area, bbox.
+nlohmann::json mesh_json(const MeshFacts& facts);
+
+//! The warnings as an array of their texts.
+nlohmann::json warnings_json(const std::vector<Warning>& warnings);
+
+//! The "meshdiff.profile/1" object: schema, mesh, curvature, levels, sigma,
+//! sigma_global, per-level details, warnings.
+nlohmann::json profile_json(const MeshFacts& facts, const RoughnessProfile& profile);
+
+//! The "exact" object of a profile report: the profile of the exact H read
+//! from the vertex property \p property, beside \p estimated.
+nlohmann::json exact_profile_json(const RoughnessProfile& estimated, const ExactProfile& exact,
+                                  const std::string& property);
+
+//! The roughness_distance object of "meshdiff.compare/1".
+nlohmann::json roughness_distance_json(const RoughnessDistance& d);
+
+//! One direction's distance statistics (absolute, and relative to \p diagonal).
+nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal);
+
+//! The "meshdiff.compare/1" object.
+nlohmann::json comparison_json(const Comparison& c);
+
+//! The "meshdiff.smoothing/1" object of a smoothing of the file \p input
+//! written to \p output.
+nlohmann::json smoothing_json(const SmoothingRecord& record, const SmoothingOptions& options,
+                              const RecordOptions& record_options, const std::string& input, const std::string& output);
+
+//! One line of `meshdiff batch` for a pair that was compared.
+nlohmann::json batch_ok_json(const std::string& id, const std::string& original, const std::string& processed,
+                             const Comparison& c);
+//! One line of `meshdiff batch` for a pair that failed with \p error (exit
+//! code \p exit_code of the tool).
+nlohmann::json batch_error_json(const std::string& id, const std::string& original, const std::string& processed,
+                                const std::string& error, int exit_code);
+
+}  // namespace meshdiff

@@ -1,0 +1,46 @@
+//! \file vertex_maps.h
+//! \brief Per-vertex maps to write as PLY (io.h write_ply): named scalar
+//! properties, a colour per vertex and header comments that say what the
+//! colours mean. For viewing results in MeshLab, CloudCompare or ParaView.
+#pragma once
+
+#include "meshdiff/colormap.h"
+#include "meshdiff/compare.h"
+#include "meshdiff/io.h"
+#include "meshdiff/roughness.h"
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace meshdiff {
+
+//! What write_ply() writes beside the positions and faces.
+struct VertexMap
+{
+    std::vector<VertexScalar> scalars;
+    std::vector<Rgb> colors;
+    std::vector<std::string> comments;
+};
+
+//! The distance map of a comparison made with CompareOptions::vertex_distances:
+//! per vertex of the processed mesh its exact distance to the original surface
+//! (property "distance"), coloured by sequential_colors() over
+//! \p color_range, by default [0, largest distance].
+//! \throw InvalidArgumentError if the comparison has no vertex distances or
+//!        the range is not MIN < MAX.
+VertexMap distance_map(const Comparison& comparison, std::optional<std::pair<double, double>> color_range = {});
+
+//! The per-vertex data of a profile made with keep_vertex_data: H, D_<level>
+//! per level, D_global, and `worst` (1 at the worst |D| vertices of some
+//! level); H coloured by diverging_colors() over [-R, R], R = \p color_range
+//! if > 0, else robust_symmetric_range(H). \p source names the input in the
+//! comments. Write it with the normalised mesh (apply_normalization()).
+//! \throw InvalidArgumentError if the profile has no vertex data.
+VertexMap profile_map(const RoughnessProfile& profile, const std::string& source, double color_range = 0.0);
+
+//! write_ply() of \p mesh with the map's properties, colours and comments.
+void write_ply(const std::filesystem::path& path, const Mesh& mesh, const VertexMap& map);
+
+}  // namespace meshdiff

@@ -1,0 +1,72 @@
+#include "meshdiff/facts.h"
+
+#include <fmt/format.h>
+
+namespace meshdiff {
+
+MeshFacts mesh_facts(const LoadedMesh& loaded)
+{
+    MeshFacts f;
+    f.input = loaded.input;
+    f.topology = topology_report(loaded.mesh);
+    f.box = bounding_box(loaded.mesh);
+    f.area = surface_area(loaded.mesh);
+    return f;
+}
+
+std::vector<Warning> warnings(const MeshFacts& f, const RoughnessProfile* p)
+{
+    std::vector<Warning> w;
+    auto add = [&w](WarningKind kind, double value, std::string text, int level = -1) {
+        w.push_back({kind, level, value, std::move(text)});
+    };
+    const auto& t = f.topology;
+    if (f.input.unreferenced_vertices)
+        add(WarningKind::UnreferencedVertices, double(f.input.unreferenced_vertices),
+            fmt::format("{} unreferenced vertices were dropped", f.input.unreferenced_vertices));
+    if (f.input.repeated_index_faces)
+        add(WarningKind::RepeatedCornerFaces, double(f.input.repeated_index_faces),
+            fmt::format("{} faces with a repeated corner were dropped", f.input.repeated_index_faces));
+    if (t.non_manifold_edges || t.non_manifold_vertices)
+        add(WarningKind::NonManifold, double(t.non_manifold_edges),
+            fmt::format("non-manifold: {} edges, {} vertices", t.non_manifold_edges, t.non_manifold_vertices));
+    if (t.orientation_conflicts)
+        add(WarningKind::OrientationConflicts, double(t.orientation_conflicts),
+            fmt::format("inconsistent orientation on {} edges: curvature signs near them cannot be trusted",
+                        t.orientation_conflicts));
+    if (t.degenerate_faces)
+        add(WarningKind::DegenerateFaces, double(t.degenerate_faces),
+            fmt::format("{} zero-area faces (no normal, no samples)", t.degenerate_faces));
+    if (t.duplicate_faces)
+        add(WarningKind::DuplicateFaces, double(t.duplicate_faces),
+            fmt::format("{} duplicate faces", t.duplicate_faces));
+    if (t.boundary_edges)
+        add(WarningKind::OpenSurface, double(t.boundary_edges),
+            fmt::format("open surface: {} boundary edges in {} loops", t.boundary_edges, t.boundary_loops));
+    if (t.components > 1)
+        add(WarningKind::Components, double(t.components),
+            fmt::format("{} connected components: ring levels stay inside a component, the global level "
+                        "spans all",
+                        t.components));
+    if (p) {
+        if (p->curvature_undefined)
+            add(WarningKind::UndefinedCurvature, double(p->curvature_undefined),
+                fmt::format("{} vertices have undefined curvature and are left out", p->curvature_undefined));
+        auto check = [&](const LevelRoughness& l, const std::string& name) {
+            if (l.top_share > 0.5)
+                add(WarningKind::OutliersDominate, l.top_share,
+                    fmt::format("{}: the worst {:.1f}% of vertices make {:.0f}% of sigma^2 (outliers "
+                                "dominate; see worst_vertices)",
+                                name, 100.0 * 0.001, 100.0 * l.top_share),
+                    l.level);
+            if (l.vertices_used == 0)
+                add(WarningKind::NoDefinedD, 0.0, fmt::format("{}: no vertex has a defined D (sigma set to 0)", name),
+                    l.level);
+        };
+        for (const auto& l : p->levels) check(l, fmt::format("level {}", l.level));
+        if (p->has_global) check(p->global, "global level");
+    }
+    return w;
+}
+
+}  // namespace meshdiff

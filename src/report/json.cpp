@@ -1,0 +1,259 @@
+#include "meshdiff/report/json.h"
+
+#include <cmath>
+
+namespace meshdiff {
+
+nlohmann::json number_or_null(double x)
+{
+    return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+}
+
+nlohmann::json warnings_json(const std::vector<Warning>& warnings)
+{
+    nlohmann::json j = nlohmann::json::array();
+    for (const auto& w : warnings) j.push_back(w.text);
+    return j;
+}
+
+nlohmann::json mesh_json(const MeshFacts& f)
+{
+    const auto& t = f.topology;
+    nlohmann::json j;
+    j["path"] = f.input.path;
+    j["vertices"] = t.vertices;
+    j["faces"] = t.faces;
+    j["edges"] = t.edges;
+    j["components"] = t.components;
+    j["closed"] = t.closed();
+    j["boundary_edges"] = t.boundary_edges;
+    j["boundary_loops"] = t.boundary_loops;
+    j["non_manifold_edges"] = t.non_manifold_edges;
+    j["non_manifold_vertices"] = t.non_manifold_vertices;
+    j["degenerate_faces"] = t.degenerate_faces;
+    j["duplicate_faces"] = t.duplicate_faces;
+    j["orientation_conflicts"] = t.orientation_conflicts;
+    j["file_vertices"] = f.input.file_vertices;
+    j["file_faces"] = f.input.file_faces;
+    j["unreferenced_vertices_removed"] = f.input.unreferenced_vertices;
+    j["polygons_triangulated"] = f.input.polygons_triangulated;
+    j["repeated_index_faces_removed"] = f.input.repeated_index_faces;
+    j["area"] = f.area;
+    j["bbox"] = {{"min", {f.box.min.x(), f.box.min.y(), f.box.min.z()}},
+                 {"max", {f.box.max.x(), f.box.max.y(), f.box.max.z()}},
+                 {"diagonal", f.box.diagonal()}};
+    return j;
+}
+
+namespace {
+nlohmann::json level_json(const LevelRoughness& l)
+{
+    return {{"level", l.level},
+            {"sigma", number_or_null(l.sigma)},
+            {"vertices_used", l.vertices_used},
+            {"no_neighborhood", l.no_neighborhood},
+            {"top_share", number_or_null(l.top_share)},
+            {"worst_vertices", l.worst_vertices}};
+}
+}  // namespace
+
+nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
+{
+    nlohmann::json j;
+    j["schema"] = "meshdiff.profile/1";
+    j["meshdiff_version"] = MESHDIFF_VERSION;
+    j["mesh"] = mesh_json(f);
+    j["mesh"]["normalization"] = {
+        {"center", {p.normalization.center.x(), p.normalization.center.y(), p.normalization.center.z()}},
+        {"scale", p.normalization.scale}};
+    j["mesh"]["scale_factor"] = p.normalization.scale;
+    j["curvature"] = {{"method", to_string(p.curvature_options.method)},
+                      {"row_weighting", to_string(p.curvature_options.weighting)},
+                      {"min_neighbors", p.curvature_options.min_neighbors},
+                      {"max_normal_angle_deg", p.curvature_options.max_normal_angle_deg},
+                      {"undefined_vertices", p.curvature_undefined},
+                      {"widened_to_2_ring", p.curvature_widened},
+                      {"quadric_fallback", p.curvature_fallback},
+                      {"sign_convention", "H > 0 where convex with outward normals (unit sphere: +1)"},
+                      {"units", "1/length on the mesh scaled to mean vertex distance 1 from the centroid"}};
+    nlohmann::json levels = nlohmann::json::array(), sigma = nlohmann::json::array(), details = nlohmann::json::array();
+    for (const auto& l : p.levels) {
+        levels.push_back(l.level);
+        sigma.push_back(number_or_null(l.sigma));
+        details.push_back(level_json(l));
+    }
+    j["levels"] = levels;
+    j["sigma"] = sigma;
+    j["sigma_global"] = p.has_global ? number_or_null(p.global.sigma) : nlohmann::json(nullptr);
+    j["level_details"] = details;
+    if (p.has_global) j["global"] = level_json(p.global);
+    j["neighborhood"] = "N_L(i) = vertices within L edges of i, i excluded; global: all other vertices";
+    j["warnings"] = warnings_json(warnings(f, &p));
+    return j;
+}
+
+nlohmann::json exact_profile_json(const RoughnessProfile& estimated, const ExactProfile& exact,
+                                  const std::string& property)
+{
+    nlohmann::json levels = nlohmann::json::array(), sigma = nlohmann::json::array();
+    for (std::size_t k = 0; k < estimated.levels.size(); ++k) {
+        levels.push_back(estimated.levels[k].level);
+        sigma.push_back(exact.profile.levels[k].sigma);
+    }
+    const auto& e = exact.h_error;
+    return {{"property", property},
+            {"levels", levels},
+            {"sigma", sigma},
+            {"sigma_global",
+             exact.profile.has_global ? nlohmann::json(exact.profile.global.sigma) : nlohmann::json(nullptr)},
+            {"undefined_vertices", exact.profile.curvature_undefined},
+            {"h_error", {{"rms", e.rms}, {"max", e.max}, {"vertices", e.compared}}}};
+}
+
+nlohmann::json roughness_distance_json(const RoughnessDistance& d)
+{
+    nlohmann::json j;
+    j["k"] = d.k;
+    j["formula"] = "d = ln(|s' - s| / s + k) - ln(k); relative_change = (s' - s) / s";
+    nlohmann::json levels = nlohmann::json::array(), dist = nlohmann::json::array(), rel = nlohmann::json::array();
+    nlohmann::json undefined = nlohmann::json::array();
+    for (const auto& l : d.levels) {
+        levels.push_back(l.level);
+        dist.push_back(l.distance);
+        rel.push_back(l.relative_change_defined ? nlohmann::json(l.relative_change) : nlohmann::json(nullptr));
+        if (l.reference_zero) undefined.push_back(l.level);
+    }
+    j["levels"] = levels;
+    j["distance"] = dist;
+    j["relative_change"] = rel;
+    j["reference_zero_levels"] = undefined;
+    if (d.has_global)
+        j["global"] = {{"distance", d.global.distance},
+                       {"relative_change", d.global.relative_change_defined ? nlohmann::json(d.global.relative_change)
+                                                                            : nlohmann::json(nullptr)},
+                       {"reference_zero", d.global.reference_zero}};
+    return j;
+}
+
+nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal)
+{
+    auto block = [](const DistanceStats& d) {
+        return nlohmann::json{{"min", d.min},    {"max", d.max}, {"mean", d.mean}, {"rms", d.rms},
+                              {"std", d.stddev}, {"p50", d.p50}, {"p95", d.p95},   {"p99", d.p99}};
+    };
+    nlohmann::json j = block(s);
+    j["samples"] = s.n_samples();
+    j["samples_by_kind"] = {{"vertex", s.n_vertex}, {"edge", s.n_edge}, {"face", s.n_face}};
+    j["relative"] = block(relative_to(s, diagonal));
+    return j;
+}
+
+nlohmann::json comparison_json(const Comparison& c)
+{
+    nlohmann::json j;
+    j["schema"] = "meshdiff.compare/1";
+    j["meshdiff_version"] = MESHDIFF_VERSION;
+    auto side = [&](const MeshFacts& f, const std::optional<RoughnessProfile>& p) {
+        if (p) return profile_json(f, *p);
+        nlohmann::json o;
+        o["schema"] = "meshdiff.profile/1";
+        o["mesh"] = mesh_json(f);
+        o["warnings"] = warnings_json(warnings(f));
+        return o;
+    };
+    j["original"] = side(c.original, c.original_profile);
+    j["processed"] = side(c.processed, c.processed_profile);
+    j["roughness_distance"] = c.roughness ? roughness_distance_json(*c.roughness) : nlohmann::json(nullptr);
+    if (c.distance) {
+        const auto& d = *c.distance;
+        const auto& so = c.options.sampling;
+        j["surface_distance"] = {
+            {"forward", distance_stats_json(d.forward, d.diagonal)},
+            {"backward", distance_stats_json(d.backward, d.diagonal)},
+            {"hausdorff", d.hausdorff},
+            {"hausdorff_relative", d.hausdorff / d.diagonal},
+            {"diagonal", d.diagonal},
+            {"diagonal_of", "bounding box of the original mesh"},
+            {"metro_diagonal", d.metro_diagonal},
+            {"hausdorff_relative_metro", d.hausdorff / d.metro_diagonal},
+            {"metro_diagonal_of", "union bounding box of both meshes widened by 2% of its diagonal on every side"},
+            {"sampling",
+             {{"face_scheme", to_string(so.face_scheme)},
+              {"vertices", so.vertices},
+              {"edges", so.edges},
+              {"faces", so.faces},
+              {"samples_requested", so.samples ? nlohmann::json(*so.samples) : nlohmann::json(nullptr)},
+              {"density_requested", so.density ? nlohmann::json(*so.density) : nlohmann::json(nullptr)},
+              {"seed", so.seed}}},
+            {"forward_is", "samples on the original, distances to the processed surface"},
+            {"cutoff", nullptr}};
+    } else {
+        j["surface_distance"] = nullptr;
+    }
+    return j;
+}
+
+nlohmann::json smoothing_json(const SmoothingRecord& r, const SmoothingOptions& o, const RecordOptions& ro,
+                              const std::string& input, const std::string& output)
+{
+    nlohmann::json j;
+    j["schema"] = "meshdiff.smoothing/1";
+    j["input"] = input;
+    j["output"] = output;
+    j["method"] = to_string(o.method);
+    j["update"] = to_string(o.update);
+    j["parameters"] = {{"iterations", o.iterations},
+                       {"lambda", o.lambda},
+                       {"mu", o.mu},
+                       {"step", o.step},
+                       {"damping", o.damping},
+                       {"epsilon", o.epsilon},
+                       {"implicit", o.implicit},
+                       {"step_control", to_string(o.step_control)},
+                       {"stability", o.stability}};
+    j["curvature"] = to_string(ro.profile.curvature.method);
+    j["profile_every"] = ro.every;
+    j["iterations"] = r.iterations;
+    j["levels"] = ro.profile.levels;
+    j["sigma"] = r.sigma;
+    j["sigma_global"] = r.sigma_global;
+    j["curvature_undefined"] = r.undefined;
+    if (!r.distance.empty()) {
+        nlohmann::json distance = nlohmann::json::array();
+        for (const SurfaceDistance& d : r.distance)
+            distance.push_back(
+                {{"hausdorff", d.hausdorff},
+                 {"hausdorff_relative", d.hausdorff / d.diagonal},
+                 {"forward", {{"max", d.forward.max}, {"mean", d.forward.mean}, {"rms", d.forward.rms}}},
+                 {"backward", {{"max", d.backward.max}, {"mean", d.backward.mean}, {"rms", d.backward.rms}}},
+                 {"diagonal", d.diagonal},
+                 {"samples", d.forward.n_samples()}});
+        j["distance_to_input"] = distance;
+    }
+    const SmoothingReport& report = r.report;
+    if (!report.steps.empty()) {
+        // Flow time at each recorded iteration, in units of the initial mean edge length squared.
+        j["flow"] = {{"mean_edge", report.mean_edge},
+                     {"time", r.flow_time},
+                     {"steps", report.steps},
+                     {"stability_ratio", report.stability_ratio},
+                     {"unstable_iterations", report.unstable_iterations}};
+    }
+    return j;
+}
+
+nlohmann::json batch_ok_json(const std::string& id, const std::string& original, const std::string& processed,
+                             const Comparison& c)
+{
+    return {
+        {"id", id}, {"original", original}, {"processed", processed}, {"result", comparison_json(c)}, {"status", "ok"}};
+}
+
+nlohmann::json batch_error_json(const std::string& id, const std::string& original, const std::string& processed,
+                                const std::string& error, int exit_code)
+{
+    return {{"id", id},          {"original", original}, {"processed", processed},
+            {"status", "error"}, {"error", error},       {"exit_code", exit_code}};
+}
+
+}  // namespace meshdiff

@@ -1,0 +1,211 @@
+#include "meshdiff/report/text.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace meshdiff {
+
+std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
+{
+    const auto& t = f.topology;
+    std::string s;
+    s += fmt::format("mesh       {}\n", f.input.path);
+    s += fmt::format("           {} vertices, {} faces, {} component{}, {}\n", t.vertices, t.faces, t.components,
+                     t.components == 1 ? "" : "s",
+                     t.closed() ? "closed" : fmt::format("open ({} boundary loops)", t.boundary_loops));
+    s += fmt::format(
+        "defects    non-manifold edges {}, non-manifold vertices {}, degenerate faces {}, duplicate "
+        "faces {},\n           orientation conflicts {}, unreferenced vertices removed {}\n",
+        t.non_manifold_edges, t.non_manifold_vertices, t.degenerate_faces, t.duplicate_faces, t.orientation_conflicts,
+        f.input.unreferenced_vertices);
+    s += fmt::format("scale      centroid ({:.6g}, {:.6g}, {:.6g}), s = {:.6g} (mean vertex distance to centroid)\n",
+                     p.normalization.center.x(), p.normalization.center.y(), p.normalization.center.z(),
+                     p.normalization.scale);
+    s += fmt::format("curvature  {}{}; undefined {}, 2-ring {}, quadric fallback {}\n",
+                     to_string(p.curvature_options.method),
+                     p.curvature_options.method == CurvatureMethod::MeyerCotangent
+                         ? ""
+                         : fmt::format(" (row weighting {})", to_string(p.curvature_options.weighting)),
+                     p.curvature_undefined, p.curvature_widened, p.curvature_fallback);
+    s += "\n   level        sigma     used   no-nbhd   top0.1%\n";
+    auto row = [&](const std::string& name, const LevelRoughness& l) {
+        s += fmt::format("{:>8} {:>12.6g} {:>8} {:>9} {:>8.1f}%\n", name, l.sigma, l.vertices_used, l.no_neighborhood,
+                         100.0 * l.top_share);
+    };
+    for (const auto& l : p.levels) row(std::to_string(l.level), l);
+    if (p.has_global) row("global", p.global);
+    const auto w = warnings(f, &p);
+    if (!w.empty()) {
+        s += "\nwarnings\n";
+        for (const auto& line : w) s += "  - " + line.text + "\n";
+    }
+    return s;
+}
+
+std::string exact_profile_text(const RoughnessProfile& profile, const ExactProfile& e, const std::string& property)
+{
+    std::string text = fmt::format(
+        "\nexact profile from the vertex property '{}' (H error of the estimate on the scaled "
+        "mesh: RMS {:.4g}, max {:.4g} over {} vertices)\n   level  sigma estimated  sigma exact\n",
+        property, e.h_error.rms, e.h_error.max, e.h_error.compared);
+    for (std::size_t k = 0; k < profile.levels.size(); ++k)
+        text += fmt::format("{:>8} {:>16.6g} {:>12.6g}\n", profile.levels[k].level, profile.levels[k].sigma,
+                            e.profile.levels[k].sigma);
+    if (profile.has_global)
+        text += fmt::format("{:>8} {:>16.6g} {:>12.6g}\n", "global", profile.global.sigma, e.profile.global.sigma);
+    return text;
+}
+
+namespace {
+
+std::string facts_text(const std::string& title, const MeshFacts& f)
+{
+    const auto& t = f.topology;
+    std::string s = fmt::format("{}: {}\n", title, f.input.path);
+    s += fmt::format("  {} vertices, {} faces, {} component{}, {}, area {:.6g}, bbox diagonal {:.6g}\n", t.vertices,
+                     t.faces, t.components, t.components == 1 ? "" : "s",
+                     t.closed() ? "closed" : fmt::format("open ({} boundary loops)", t.boundary_loops), f.area,
+                     f.box.diagonal());
+    for (const auto& w : warnings(f)) s += "  ! " + w.text + "\n";
+    return s;
+}
+
+std::string stats_text(const std::string& title, const DistanceStats& s, double diag)
+{
+    std::string out = fmt::format("{}\n", title);
+    out += fmt::format("  samples: {} ({} vertex, {} edge, {} face)\n", s.n_samples(), s.n_vertex, s.n_edge, s.n_face);
+    out += fmt::format("  {:>5} {:>14} {:>14}\n", "", "absolute", "wrt diagonal");
+    const std::pair<const char*, double> rows[] = {{"min", s.min},    {"max", s.max}, {"mean", s.mean}, {"RMS", s.rms},
+                                                   {"std", s.stddev}, {"p50", s.p50}, {"p95", s.p95},   {"p99", s.p99}};
+    for (const auto& [name, v] : rows) out += fmt::format("  {:>5} {:>14.6g} {:>14.6g}\n", name, v, v / diag);
+    return out;
+}
+
+}  // namespace
+
+std::string comparison_text(const Comparison& c)
+{
+    std::string s = fmt::format("meshdiff {}: original vs processed\n\n", MESHDIFF_VERSION);
+    s += facts_text("Mesh 1 (original)", c.original);
+    s += facts_text("Mesh 2 (processed)", c.processed);
+    if (c.roughness) {
+        const auto& pa = *c.original_profile;
+        const auto& pb = *c.processed_profile;
+        s += fmt::format(
+            "\nRoughness profiles ({} mean curvature on each mesh scaled to unit mean radius: s = {:.6g} "
+            "and {:.6g})\n",
+            to_string(pa.curvature_options.method), pa.normalization.scale, pb.normalization.scale);
+        s += fmt::format("  d_L = ln(|s' - s| / s + k) - ln(k), k = {:g}; change = (s' - s) / s\n", c.roughness->k);
+        s += fmt::format("  {:>7} {:>13} {:>13} {:>10} {:>9}\n", "level", "sigma orig", "sigma proc", "change", "d_L");
+        auto row = [&](const std::string& name, double sa, double sb, const LevelDistance& d) {
+            const std::string change =
+                d.relative_change_defined ? fmt::format("{:+.2f}%", 100.0 * d.relative_change) : "undef";
+            s += fmt::format("  {:>7} {:>13.6g} {:>13.6g} {:>10} {:>9.4f}\n", name, sa, sb, change, d.distance);
+        };
+        for (const auto& d : c.roughness->levels) {
+            double sa = 0, sb = 0;
+            for (const auto& l : pa.levels)
+                if (l.level == d.level) sa = l.sigma;
+            for (const auto& l : pb.levels)
+                if (l.level == d.level) sb = l.sigma;
+            row(std::to_string(d.level), sa, sb, d);
+        }
+        if (c.roughness->has_global) row("global", pa.global.sigma, pb.global.sigma, c.roughness->global);
+        if (pa.curvature_undefined || pb.curvature_undefined)
+            s += fmt::format("  undefined curvature: {} and {} vertices left out\n", pa.curvature_undefined,
+                             pb.curvature_undefined);
+        for (const auto* p : {&pa, &pb})
+            for (const auto& w : warnings(p == &pa ? c.original : c.processed, p))
+                if (w.kind == WarningKind::OutliersDominate)
+                    s += fmt::format("  ! {}: {}\n", p == &pa ? "original" : "processed", w.text);
+    }
+    if (c.distance) {
+        const auto& d = *c.distance;
+        const auto& so = c.options.sampling;
+        s += fmt::format("\nSurface distance (Metro-style: exact point-to-triangle distances, {} face sampling{})\n",
+                         to_string(so.face_scheme),
+                         so.face_scheme == FaceSampling::MonteCarlo ? fmt::format(", seed {}", so.seed) : "");
+        s += fmt::format("  diagonal = bounding-box diagonal of the original = {:.6g}\n", d.diagonal);
+        s += stats_text("Forward distance (M1 -> M2):", d.forward, d.diagonal);
+        s += stats_text("Backward distance (M2 -> M1):", d.backward, d.diagonal);
+        s += fmt::format(
+            "Hausdorff distance: {:.6g} ({:.6g} wrt bounding box diagonal; {:.6g} wrt Metro's "
+            "widened union box, diagonal {:.6g})\n",
+            d.hausdorff, d.hausdorff / d.diagonal, d.hausdorff / d.metro_diagonal, d.metro_diagonal);
+    }
+    return s;
+}
+
+std::string smoothing_text(const std::string& output, const SmoothingOptions& options, std::size_t vertices,
+                           const SmoothingReport& report)
+{
+    std::string s = fmt::format("{}: {} {}-updating, {} iterations, {} vertices\n", output, to_string(options.method),
+                                to_string(options.update), options.iterations, vertices);
+    if (!report.steps.empty())
+        s += fmt::format("flow time {:.6g} e^2 (e = {:.6g}, the initial mean edge length)\n", report.time,
+                         report.mean_edge);
+    return s;
+}
+
+std::optional<std::string> smoothing_warning(const std::string& input, const SmoothingOptions& options,
+                                             const SmoothingReport& report)
+{
+    if (report.unstable_iterations == 0) return std::nullopt;
+    return fmt::format(
+        "warning: {}: {} of {} explicit steps exceeded the stability bound (up to {:.3g} times); the flow "
+        "may diverge: use a smaller --step, --step-control adaptive or --implicit (mcf)\n",
+        input, report.unstable_iterations, options.iterations, report.max_stability_ratio());
+}
+
+std::string noise_description(const NoiseOptions& o, const NoiseReport& r)
+{
+    const std::string law = o.distribution == NoiseDistribution::Uniform
+                                ? fmt::format("uniform [-{}, {})", o.amplitude, o.amplitude)
+                                : fmt::format("gaussian sigma {}", o.amplitude);
+    switch (o.unit) {
+        case NoiseUnit::MeanEdge:
+            return fmt::format("{} x mean edge length {:.6g}", law, r.unit_length);
+        case NoiseUnit::BBoxDiagonal:
+            return fmt::format("{} x bbox diagonal {:.6g}", law, r.unit_length);
+        case NoiseUnit::Absolute:
+            break;
+    }
+    return law + " in mesh units";
+}
+
+namespace {
+std::string noise_along(const NoiseOptions& o)
+{
+    return o.direction == NoiseDirection::Normal ? "along vertex normals" : "along random directions";
+}
+}  // namespace
+
+std::string noise_comment(const std::string& input, const NoiseOptions& options, const NoiseReport& r)
+{
+    std::string comment = fmt::format("meshdiff noise: {} moved {} by {} = amplitude {:.6g}, seed {}, boundary {}",
+                                      input, noise_along(options), noise_description(options, r), r.amplitude,
+                                      options.seed, options.move_boundary ? "moved" : "fixed");
+    std::replace_if(
+        comment.begin(), comment.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+    return comment;
+}
+
+std::string noise_text(const std::string& output, const NoiseOptions& options, const NoiseReport& r)
+{
+    return fmt::format(
+        "{}: {} vertices moved, {} skipped ({} boundary, {} without direction, {} isolated); amplitude {:.6g} ({}) "
+        "{}, seed {}\n",
+        output, r.moved, r.skipped(), r.skipped_boundary, r.skipped_no_direction, r.skipped_isolated, r.amplitude,
+        noise_description(options, r), noise_along(options), options.seed);
+}
+
+std::string shape_text(const std::string& output, const Shape& shape, const std::string& description)
+{
+    const auto [lo, hi] = std::minmax_element(shape.exact_H.begin(), shape.exact_H.end());
+    return fmt::format("{}: {} vertices, {} faces, exact H in [{:.6g}, {:.6g}] ({})\n", output, shape.mesh.n_vertices(),
+                       shape.mesh.n_faces(), *lo, *hi, description);
+}
+
+}  // namespace meshdiff
