@@ -17,21 +17,6 @@ namespace {
 
 const std::string kData = MESHDIFF_TEST_DATA_DIR;
 
-// Minimum distance from p to a dense barycentric grid of triangle (a, b, c)
-// (n + 1)(n + 2) / 2 points, and the grid spacing bound h: every point of the
-// triangle is within h of a grid point.
-double grid_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, int n, double* h)
-{
-    double best = INFINITY;
-    for (int i = 0; i <= n; ++i)
-        for (int j = 0; i + j <= n; ++j) {
-            const Vec3 q = a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n);
-            best = std::min(best, (p - q).norm());
-        }
-    *h = std::max({(b - a).norm(), (c - a).norm(), (c - b).norm()}) / n;
-    return best;
-}
-
 // A 6 x 6 grid in z = 0 with extra degenerate faces: a collinear one, one with
 // a repeated corner, a zero-length-edge sliver, and a duplicate face.
 Mesh mesh_with_degenerate_faces()
@@ -94,58 +79,6 @@ void expect_index_matches_brute_force(const Mesh& m, std::size_t n_queries)
 }
 
 }  // namespace
-
-TEST(ClosestPoint, TriangleMatchesDenseSamplingInEveryVoronoiRegion)
-{
-    const Vec3 a(0.1, -0.2, 0.05), b(1.3, 0.1, -0.1), c(0.4, 0.9, 0.3);
-    const Vec3 n = (b - a).cross(c - a).normalized();
-    const Vec3 centroid = (a + b + c) / 3.0;
-    // Queries in the 3 vertex regions, the 3 edge regions and the face region,
-    // each above, on and below the plane.
-    std::vector<std::pair<Vec3, const char*>> queries;
-    for (double z : {-0.4, 0.0, 0.7}) {
-        queries.push_back({a + 0.5 * (a - centroid) + z * n, "vertex a"});
-        queries.push_back({b + 0.5 * (b - centroid) + z * n, "vertex b"});
-        queries.push_back({c + 0.5 * (c - centroid) + z * n, "vertex c"});
-        for (auto [u, v] : {std::pair<Vec3, Vec3>{a, b}, {b, c}, {c, a}}) {
-            const Vec3 mid = 0.5 * (u + v);
-            queries.push_back({mid + 0.4 * (mid - centroid) + z * n, "edge"});
-        }
-        queries.push_back({centroid + 0.1 * (b - a) + z * n, "face"});
-    }
-    for (const auto& [p, region] : queries) {
-        double h = 0.0;
-        const double sampled = grid_distance(p, a, b, c, 400, &h);
-        const ClosestPoint cp = closest_point_on_triangle(p, a, b, c);
-        // Exact distance: never above any point of the triangle, and within the
-        // grid spacing of the densest sampling.
-        EXPECT_LE(cp.distance, sampled + 1e-15) << region;
-        EXPECT_GE(cp.distance, sampled - h) << region;
-        EXPECT_NEAR((p - cp.point).norm(), cp.distance, 1e-15) << region;
-    }
-    // Vertex regions return the vertex itself.
-    EXPECT_EQ(closest_point_on_triangle(a + 0.5 * (a - centroid), a, b, c).point, a);
-    EXPECT_EQ(closest_point_on_triangle(c + 0.5 * (c - centroid) + n, a, b, c).point, c);
-    // The face region projects orthogonally.
-    const Vec3 inside = centroid + 0.05 * (b - a);
-    EXPECT_NEAR(closest_point_on_triangle(inside + 0.3 * n, a, b, c).distance, 0.3, 1e-15);
-    EXPECT_NEAR(closest_point_on_triangle(inside - 0.3 * n, a, b, c).distance, 0.3, 1e-15);
-}
-
-TEST(ClosestPoint, DegenerateTrianglesAreSegmentsOrPoints)
-{
-    const Vec3 a(0, 0, 0), b(2, 0, 0), m(0.5, 0, 0);
-    const Vec3 p(3.0, 1.0, 0.5);
-    // Collinear: the longest edge [a, b], whatever the corner order.
-    EXPECT_DOUBLE_EQ(closest_point_on_triangle(p, a, m, b).distance, closest_point_on_segment(p, a, b).distance);
-    EXPECT_DOUBLE_EQ(closest_point_on_triangle(p, m, b, a).distance, std::sqrt(1.0 + 1.0 + 0.25));
-    const Vec3 above(1.0, 0.0, 0.25);
-    EXPECT_DOUBLE_EQ(closest_point_on_triangle(above, a, m, b).distance, 0.25);
-    // Repeated corner: a segment; all corners equal: a point.
-    EXPECT_DOUBLE_EQ(closest_point_on_triangle(p, a, a, b).distance, closest_point_on_segment(p, a, b).distance);
-    EXPECT_DOUBLE_EQ(closest_point_on_triangle(p, b, b, b).distance, (p - b).norm());
-    EXPECT_TRUE(std::isfinite(closest_point_on_triangle(p, a, a, a).distance));
-}
 
 TEST(ClosestPoint, IndexAgreesWithBruteForceOnAnIcosphere)
 {

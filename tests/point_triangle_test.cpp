@@ -1,0 +1,137 @@
+#include "meshdiff/point_triangle.h"
+
+#include "meshdiff/shapes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace meshdiff;
+
+namespace {
+
+// Minimum distance from p to a dense barycentric grid of triangle (a, b, c)
+// (n + 1)(n + 2) / 2 points, and the grid spacing bound h: every point of the
+// triangle is within h of a grid point.
+double grid_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, int n, double* h)
+{
+    double best = INFINITY;
+    for (int i = 0; i <= n; ++i)
+        for (int j = 0; i + j <= n; ++j) {
+            const Vec3 q = a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n);
+            best = std::min(best, (p - q).norm());
+        }
+    *h = std::max({(b - a).norm(), (c - a).norm(), (c - b).norm()}) / n;
+    return best;
+}
+
+}  // namespace
+
+TEST(PointTriangle, TriangleMatchesDenseSamplingInEveryVoronoiRegion)
+{
+    const Vec3 a(0.1, -0.2, 0.05), b(1.3, 0.1, -0.1), c(0.4, 0.9, 0.3);
+    const Vec3 n = (b - a).cross(c - a).normalized();
+    const Vec3 centroid = (a + b + c) / 3.0;
+    // Queries in the 3 vertex regions, the 3 edge regions and the face region,
+    // each above, on and below the plane.
+    std::vector<std::pair<Vec3, const char*>> queries;
+    for (double z : {-0.4, 0.0, 0.7}) {
+        queries.push_back({a + 0.5 * (a - centroid) + z * n, "vertex a"});
+        queries.push_back({b + 0.5 * (b - centroid) + z * n, "vertex b"});
+        queries.push_back({c + 0.5 * (c - centroid) + z * n, "vertex c"});
+        for (auto [u, v] : {std::pair<Vec3, Vec3>{a, b}, {b, c}, {c, a}}) {
+            const Vec3 mid = 0.5 * (u + v);
+            queries.push_back({mid + 0.4 * (mid - centroid) + z * n, "edge"});
+        }
+        queries.push_back({centroid + 0.1 * (b - a) + z * n, "face"});
+    }
+    for (const auto& [p, region] : queries) {
+        double h = 0.0;
+        const double sampled = grid_distance(p, a, b, c, 400, &h);
+        const ClosestPoint cp = closest_point_on_triangle(p, a, b, c);
+        // Exact distance: never above any point of the triangle, and within the
+        // grid spacing of the densest sampling.
+        EXPECT_LE(cp.distance, sampled + 1e-15) << region;
+        EXPECT_GE(cp.distance, sampled - h) << region;
+        EXPECT_NEAR((p - cp.point).norm(), cp.distance, 1e-15) << region;
+    }
+    // Vertex regions return the vertex itself.
+    EXPECT_EQ(closest_point_on_triangle(a + 0.5 * (a - centroid), a, b, c).point, a);
+    EXPECT_EQ(closest_point_on_triangle(c + 0.5 * (c - centroid) + n, a, b, c).point, c);
+    // The face region projects orthogonally.
+    const Vec3 inside = centroid + 0.05 * (b - a);
+    EXPECT_NEAR(closest_point_on_triangle(inside + 0.3 * n, a, b, c).distance, 0.3, 1e-15);
+    EXPECT_NEAR(closest_point_on_triangle(inside - 0.3 * n, a, b, c).distance, 0.3, 1e-15);
+}
+
+TEST(PointTriangle, DegenerateTrianglesAreSegmentsOrPoints)
+{
+    const Vec3 a(0, 0, 0), b(2, 0, 0), m(0.5, 0, 0);
+    const Vec3 p(3.0, 1.0, 0.5);
+    // Collinear: the longest edge [a, b], whatever the corner order.
+    EXPECT_DOUBLE_EQ(closest_point_on_triangle(p, a, m, b).distance, closest_point_on_segment(p, a, b).distance);
+    EXPECT_DOUBLE_EQ(closest_point_on_triangle(p, m, b, a).distance, std::sqrt(1.0 + 1.0 + 0.25));
+    const Vec3 above(1.0, 0.0, 0.25);
+    EXPECT_DOUBLE_EQ(closest_point_on_triangle(above, a, m, b).distance, 0.25);
+    // Repeated corner: a segment; all corners equal: a point.
+    EXPECT_DOUBLE_EQ(closest_point_on_triangle(p, a, a, b).distance, closest_point_on_segment(p, a, b).distance);
+    EXPECT_DOUBLE_EQ(closest_point_on_triangle(p, b, b, b).distance, (p - b).norm());
+    EXPECT_TRUE(std::isfinite(closest_point_on_triangle(p, a, a, a).distance));
+}
+
+TEST(PointTriangle, ThinTriangleRuleSwitchesAtTheStatedSine)
+{
+    // Corner 0 at the origin, edges along x and at angle t: sin t just above
+    // and below kThinTriangleSine. Above: the face region (projection onto the
+    // plane, distance 1 for a point 1 above the triangle's interior); below:
+    // the union of the edges, which gives the same distance to the rounding of
+    // a triangle of width below 1e-8.
+    const Vec3 a(0, 0, 0), b(1, 0, 0);
+    for (double s : {10 * kThinTriangleSine, 0.1 * kThinTriangleSine}) {
+        const Vec3 c(1, s, 0);
+        const Vec3 p(0.9, 0.5 * s * 0.9, 1.0);
+        const ClosestPoint cp = closest_point_on_triangle(p, a, b, c);
+        EXPECT_NEAR(cp.distance, 1.0, 1e-12) << s;
+        EXPECT_NEAR((cp.point - p).norm(), cp.distance, 1e-15) << s;
+    }
+}
+
+TEST(PointTriangle, SegmentEndsAndInterior)
+{
+    const Vec3 a(0, 0, 0), b(2, 0, 0);
+    EXPECT_EQ(closest_point_on_segment(Vec3(-1, 1, 0), a, b).point, a);
+    EXPECT_EQ(closest_point_on_segment(Vec3(5, 1, 0), a, b).point, b);
+    EXPECT_DOUBLE_EQ(closest_point_on_segment(Vec3(0.5, 3, 4), a, b).distance, 5.0);
+    EXPECT_EQ(closest_point_on_segment(Vec3(1, 1, 1), a, a).point, a);
+}
+
+TEST(PointTriangle, BruteForceIsTheMinimumOverFacesWithTheLowestFaceOnTies)
+{
+    const Mesh m = icosphere(1).mesh;
+    const Vec3 p(0.3, -1.7, 0.4);
+    double best = std::numeric_limits<double>::infinity();
+    std::uint32_t face = 0;
+    for (std::size_t f = 0; f < m.n_faces(); ++f) {
+        const Face& t = m.faces[f];
+        const double d = closest_point_on_triangle(p, m.points[std::size_t(t[0])], m.points[std::size_t(t[1])],
+                                                   m.points[std::size_t(t[2])])
+                             .distance;
+        if (d < best) {
+            best = d;
+            face = std::uint32_t(f);
+        }
+    }
+    const ClosestPoint bf = closest_point_brute_force(m, p);
+    EXPECT_EQ(bf.distance, best);
+    EXPECT_EQ(bf.face, face);
+    // A vertex is shared by five faces: the lowest-numbered of them wins.
+    const ClosestPoint at_vertex = closest_point_brute_force(m, m.points[0] * 1.5);
+    std::uint32_t lowest = std::numeric_limits<std::uint32_t>::max();
+    for (std::size_t f = 0; f < m.n_faces(); ++f)
+        for (auto v : m.faces[f])
+            if (v == 0) lowest = std::min(lowest, std::uint32_t(f));
+    EXPECT_EQ(at_vertex.face, lowest);
+    EXPECT_NEAR(at_vertex.distance, 0.5, 1e-15);
+}
