@@ -1,6 +1,7 @@
 #include "meshdiff/compare.h"
 
 #include "meshdiff/error.h"
+#include "meshdiff/version.h"
 
 #include <fmt/format.h>
 

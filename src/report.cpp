@@ -1,4 +1,5 @@
 #include "meshdiff/report.h"
+#include "meshdiff/version.h"
 
 #include <fmt/format.h>
 
