@@ -2,7 +2,7 @@
 # Installs a configured and built meshdiff build tree into a temporary prefix,
 # checks the installed package (headers, CMake config, version check), builds
 # tests/consumer (examples/compare_meshes.cpp) against it with find_package and
-# runs it.
+# runs it; checks that docs/library.md shows that example unchanged.
 # Usage: tests/consumer_test.sh BUILD_DIR      (temporary files under $TMPDIR)
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -70,5 +70,8 @@ set -e
 [[ $code -ne 0 ]] || fail "compare_meshes exited 0 on a missing file"
 grep -q "^error: .*no_such_mesh.ply" "$tmp/missing.err" || { cat "$tmp/missing.err" >&2; fail "no error message"; }
 echo "exit $code: $(cat "$tmp/missing.err")"
+
+echo "-- docs/library.md shows examples/compare_meshes.cpp"
+"$root/tests/doc_example_test.sh" "$root/docs/library.md"
 
 echo "consumer test passed"
