@@ -4,7 +4,7 @@
 #        scripts/install-deps.sh --reference (also MeshLab, gnuplot, OpenMesh tools for reference/)
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config
-      libopenmesh-dev libeigen3-dev libnanoflann-dev libfmt-dev
+      libopenmesh-dev libeigen3-dev libfmt-dev
       libgtest-dev nlohmann-json3-dev libcli11-dev
       clang-format python3)
 if [[ "${1:-}" == "--reference" ]]; then

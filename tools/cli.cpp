@@ -2,6 +2,7 @@
 
 #include "commands.h"
 #include "meshdiff/error.h"
+#include "meshdiff/version.h"
 
 #include <fmt/format.h>
 

@@ -1,5 +1,7 @@
 #include "meshdiff/report/json.h"
 
+#include "meshdiff/version.h"
+
 #include <cmath>
 
 namespace meshdiff {

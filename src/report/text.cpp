@@ -1,5 +1,7 @@
 #include "meshdiff/report/text.h"
 
+#include "meshdiff/version.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
