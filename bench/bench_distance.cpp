@@ -5,8 +5,8 @@
 //                           [--igea IGEA.ply --igea-decimated DEC.ply]
 //                           [--large] [--large-faces N]
 //                           [--pair A B ...] [--one-sided]
-//                           [--no-vertices] [--no-edges] [--no-faces]
-//                           [--monte-carlo] [--seed N]
+//                           [--no-vertex-samples] [--no-edge-samples] [--no-face-samples]
+//                           [--face-sampling similar|montecarlo] [--seed N]
 //
 // Each case prints the median wall time of N runs of surface_distance() (both
 // directions, default budget 10 x max #faces unless --samples), the sample
@@ -153,8 +153,8 @@ void run_case(const std::string& label, const Mesh& a, const Mesh& b, int runs,
 {
     fmt::print(stderr,
                "usage: meshdiff_bench_distance [--runs N] [--samples N] [--threads N] [--igea A --igea-decimated B]"
-               " [--large] [--large-faces N] [--pair A B]... [--one-sided] [--no-vertices] [--no-edges]"
-               " [--no-faces] [--monte-carlo] [--seed N]\n");
+               " [--large] [--large-faces N] [--pair A B]... [--one-sided] [--no-vertex-samples] [--no-edge-samples]"
+               " [--no-face-samples] [--face-sampling similar|montecarlo] [--seed N]\n");
     std::exit(2);
 }
 
@@ -189,14 +189,14 @@ int main(int argc, char** argv)
             large = true;
         else if (arg == "--one-sided")
             one_sided = true;
-        else if (arg == "--no-vertices")
+        else if (arg == "--no-vertex-samples")
             options.vertices = false;
-        else if (arg == "--no-edges")
+        else if (arg == "--no-edge-samples")
             options.edges = false;
-        else if (arg == "--no-faces")
+        else if (arg == "--no-face-samples")
             options.faces = false;
-        else if (arg == "--monte-carlo")
-            options.face_scheme = meshdiff::FaceSampling::MonteCarlo;
+        else if (arg == "--face-sampling")
+            options.face_scheme = meshdiff::parse_enum<meshdiff::FaceSampling>(next());
         else if (arg == "--seed")
             options.seed = std::stoull(next());
         else if (arg == "--large-faces")

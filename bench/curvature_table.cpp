@@ -38,32 +38,10 @@ std::vector<Estimator> estimators()
     return e;
 }
 
-struct Err
+CurvatureError error_of(const Shape& s, const CurvatureOptions& o, bool skip_boundary)
 {
-    double rms = 0, max = 0;
-    std::size_t undefined = 0;
-};
-
-Err error_of(const Shape& s, const CurvatureOptions& o, bool skip_boundary)
-{
-    const auto field = mean_curvature(s.mesh, o);
-    const auto boundary = boundary_vertex_mask(s.mesh);
-    Err e;
-    double sum = 0;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < s.mesh.n_vertices(); ++i) {
-        if (skip_boundary && boundary[i]) continue;
-        if (std::isnan(field.H[i])) {
-            ++e.undefined;
-            continue;
-        }
-        const double d = field.H[i] - s.exact_H[i];
-        sum += d * d;
-        e.max = std::max(e.max, std::abs(d));
-        ++n;
-    }
-    e.rms = std::sqrt(sum / double(n));
-    return e;
+    return curvature_error(mean_curvature(s.mesh, o).H, s.exact_H,
+                           skip_boundary ? boundary_vertex_mask(s.mesh) : std::vector<char>{});
 }
 
 }  // namespace
@@ -100,7 +78,7 @@ int main(int argc, char** argv)
     for (const auto& c : cases) {
         fmt::print("| {} | {} |", c.name, c.shape.mesh.n_vertices());
         for (const auto& e : ests) {
-            const Err err = error_of(c.shape, e.options, c.skip_boundary);
+            const CurvatureError err = error_of(c.shape, e.options, c.skip_boundary);
             fmt::print(" {:.2e} / {:.2e}{} |", err.rms, err.max,
                        err.undefined ? fmt::format(" ({} undef)", err.undefined) : "");
         }

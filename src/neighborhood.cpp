@@ -252,7 +252,7 @@ DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
     if (levels.empty() || n == 0) return out;
     const int lmax = *std::max_element(levels.begin(), levels.end());
 
-    // Centres with a defined value, in Morton order, cut into batches of 64.
+    // Centres with a defined value, in Morton order, cut into batches of kBatch (64 x kWords).
     std::vector<std::uint32_t> centres;
     centres.reserve(n);
     for (auto v : clustered_order(mesh, adj, values, BatchBfs<kWords>::kBatch)) centres.push_back(v);

@@ -32,8 +32,9 @@ struct DiskMeans
 };
 
 //! Computes disk means for all vertices and all \p levels at once, by
-//! bit-parallel breadth-first search from 64 spatially close centres at a
-//! time (compact graph patches seeded in Morton order), up to the largest
+//! bit-parallel breadth-first search from 128 spatially close centres at a
+//! time (64 x MESHDIFF_BFS_WORDS, 2 by default; compact graph patches seeded
+//! in Morton order), up to the largest
 //! level. Parallel over batches with OpenMP; the result does not depend on the
 //! thread count (each centre's sums are accumulated in a fixed order).
 //! \param mesh       supplies the positions for the batch order

@@ -130,10 +130,10 @@ def parse_meshlab(text, scale):
 
 def run_meshdiff(bench, sampled, target, samples, runs, mode="all", threads=None):
     cmd = [bench, "--pair", sampled, target, "--one-sided", "--samples", str(samples), "--runs", str(runs)]
-    flags = dict(zip(("--no-vertices", "--no-edges", "--no-faces"), MODES[mode]))
+    flags = dict(zip(("--no-vertex-samples", "--no-edge-samples", "--no-face-samples"), MODES[mode]))
     cmd += [k for k, on in flags.items() if not on]
     if mode == "faces-mc":
-        cmd += ["--monte-carlo"]
+        cmd += ["--face-sampling", "montecarlo"]
     if threads:
         cmd += ["--threads", str(threads)]
     t0 = time.monotonic()

@@ -17,7 +17,7 @@ def main():
         "all": "Vertices + edges + faces (each tool's default mix)",
         "vertices": "Vertices only (the same points in both tools)",
         "faces": "Faces only: MeshLab Monte Carlo vs meshdiff similar triangles (default scheme)",
-        "faces-mc": "Faces only: MeshLab Monte Carlo vs meshdiff Monte Carlo (--monte-carlo, seed 1)",
+        "faces-mc": "Faces only: MeshLab Monte Carlo vs meshdiff Monte Carlo (--face-sampling montecarlo, seed 1)",
     }
     for mode, title in titles.items():
         rows = [r for r in results if r["mode"] == mode and not r.get("timing_case")]
