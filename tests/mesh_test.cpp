@@ -1,92 +1,136 @@
 #include "meshdiff/mesh.h"
-#include "meshdiff/topology.h"
 
 #include <gtest/gtest.h>
 
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/normalize.h"
 #include "meshdiff/shapes.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
 
 using namespace meshdiff;
 
 namespace {
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
-}  // namespace
 
-TEST(Topology, ClosedManifoldSphere)
-{
-    const auto t = topology_report(icosphere(3).mesh);
-    EXPECT_EQ(t.vertices, 642u);
-    EXPECT_EQ(t.edges, 1920u);
-    EXPECT_EQ(t.components, 1u);
-    EXPECT_TRUE(t.closed());
-    EXPECT_EQ(t.non_manifold_edges + t.non_manifold_vertices + t.degenerate_faces + t.duplicate_faces +
-                  t.orientation_conflicts,
-              0u);
-    EXPECT_EQ(std::int64_t(t.vertices) - std::int64_t(t.edges) + std::int64_t(t.faces), 2);
-}
-
-TEST(Topology, CountsTheDefectsOfRealMeshes)
-{
-    // Counts from the independent checker of tests/data/PROVENANCE.md.
-    const auto res4 = topology_report(read_mesh(data("bunny_res4_ascii.ply")).mesh);
-    EXPECT_EQ(res4.non_manifold_edges, 70u);
-    EXPECT_EQ(res4.non_manifold_vertices, 4u);
-    EXPECT_EQ(res4.duplicate_faces, 40u);
-    EXPECT_EQ(res4.boundary_edges, 26u);
-    const auto hemi = topology_report(read_mesh(data("hemisphere.ply")).mesh);
-    EXPECT_EQ(hemi.boundary_edges, 120u);
-    EXPECT_EQ(hemi.boundary_loops, 1u);
-    const auto teapot = topology_report(read_mesh(data("teapot.obj")).mesh);
-    EXPECT_EQ(teapot.components, 4u);
-    EXPECT_EQ(teapot.boundary_edges, 1036u);
-    EXPECT_EQ(topology_report(read_mesh(data("torus_R1_r025.ply")).mesh).edges, 3u * 2304u);
-}
-
-TEST(Topology, DegenerateDuplicateAndFlippedFaces)
+// The unit cube [0, 1]^3 as 12 outward triangles.
+Mesh unit_cube()
 {
     Mesh m;
-    m.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(2, 0, 0), Vec3(1, 1, 0)};
-    m.faces = {{0, 1, 2}, {0, 1, 3}, {2, 1, 0}, {1, 4, 2}};  // collinear, reversed duplicate
-    const auto t = topology_report(m);
-    EXPECT_EQ(t.degenerate_faces, 1u);
-    EXPECT_EQ(t.duplicate_faces, 1u);
-    EXPECT_GE(t.orientation_conflicts + t.non_manifold_edges, 1u);
-    EXPECT_EQ(degenerate_face_mask(m), (std::vector<char>{0, 1, 0, 0}));
+    for (int i = 0; i < 8; ++i) m.points.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+    m.faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+               {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+    return m;
 }
 
-TEST(Adjacency, SortedUniqueNeighboursOnTheTorus)
+Mesh right_triangle()
 {
-    const Shape s = torus(12, 8);
-    const Adjacency a = vertex_adjacency(s.mesh);
-    for (std::size_t v = 0; v < a.size(); ++v) {
-        EXPECT_EQ(a.degree(v), 6u);
-        EXPECT_TRUE(std::is_sorted(a.begin(v), a.end(v)));
-        EXPECT_EQ(std::adjacent_find(a.begin(v), a.end(v)), a.end(v));
+    Mesh m;
+    m.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    m.faces = {{0, 1, 2}};
+    return m;
+}
+
+template <class F>
+std::string invalid_mesh_message(F&& f)
+{
+    try {
+        f();
+    } catch (const InvalidMeshError& e) {
+        return e.what();
     }
-    const Adjacency vf = vertex_faces(s.mesh);
-    for (std::size_t v = 0; v < vf.size(); ++v) EXPECT_EQ(vf.degree(v), 6u);
+    return "no InvalidMeshError";
 }
 
-TEST(Normalization, UnitMeanRadiusAboutTheCentroid)
+}  // namespace
+
+TEST(Validate, AcceptsAValidMesh)
 {
-    Mesh m = read_mesh(data("fandisk.ply")).mesh;
-    const auto n = unit_normalization(m);
-    const Mesh u = apply_normalization(m, n);
-    Vec3 c = Vec3::Zero();
-    for (const auto& p : u.points) c += p;
-    c /= double(u.n_vertices());
-    double mean = 0;
-    for (const auto& p : u.points) mean += p.norm();
-    mean /= double(u.n_vertices());
-    EXPECT_NEAR(c.norm(), 0.0, 1e-12);
-    EXPECT_NEAR(mean, 1.0, 1e-12);
-    Mesh point;
-    point.points = {Vec3(1, 1, 1), Vec3(1, 1, 1), Vec3(1, 1, 1)};
-    point.faces = {{0, 1, 2}};
-    EXPECT_THROW(unit_normalization(point), Error);
+    EXPECT_NO_THROW(validate(unit_cube()));
+    EXPECT_NO_THROW(validate(icosphere(2).mesh, "sphere"));
+}
+
+TEST(Validate, ThrowsForAnOutOfRangeOrNegativeIndexNamingTheMesh)
+{
+    Mesh m = right_triangle();
+    m.faces[0][2] = 3;
+    const std::string message = invalid_mesh_message([&] { validate(m, "mesh A"); });
+    EXPECT_NE(message.find("mesh A"), std::string::npos) << message;
+    EXPECT_NE(message.find("vertex 3"), std::string::npos) << message;
+    m.faces[0][2] = -1;
+    EXPECT_THROW(validate(m), InvalidMeshError);
+}
+
+TEST(Validate, ThrowsForANonFiniteCoordinate)
+{
+    for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+        Mesh m = right_triangle();
+        m.points[1].y() = bad;
+        const std::string message = invalid_mesh_message([&] { validate(m, "mesh B"); });
+        EXPECT_NE(message.find("mesh B"), std::string::npos) << message;
+        EXPECT_NE(message.find("vertex 1"), std::string::npos) << message;
+    }
+}
+
+TEST(Validate, ThrowsWithoutFacesOrVertices)
+{
+    Mesh m = right_triangle();
+    m.faces.clear();
+    EXPECT_THROW(validate(m), InvalidMeshError);
+    EXPECT_THROW(validate(Mesh()), InvalidMeshError);
+}
+
+TEST(BoundingBox, UnitCubeHasDiagonalSqrt3)
+{
+    const BoundingBox box = bounding_box(unit_cube());
+    EXPECT_EQ(box.min, Vec3(0, 0, 0));
+    EXPECT_EQ(box.max, Vec3(1, 1, 1));
+    EXPECT_EQ(box.diagonal(), std::sqrt(3.0));
+}
+
+TEST(BoundingBox, IsTheCoordinatewiseExtremesOfTheVertices)
+{
+    Mesh m;
+    m.points = {Vec3(1, -2, 3), Vec3(-4, 5, -6), Vec3(7, 8, 0.5)};
+    m.faces = {{0, 1, 2}};
+    const BoundingBox box = bounding_box(m);
+    EXPECT_EQ(box.min, Vec3(-4, -2, -6));
+    EXPECT_EQ(box.max, Vec3(7, 8, 3));
+    EXPECT_EQ(box.diagonal(), std::sqrt(11.0 * 11 + 10 * 10 + 9 * 9));
+    EXPECT_EQ(bounding_box(Mesh()).diagonal(), 0.0);  // no vertices: the zero box
+}
+
+TEST(FaceCross, IsTwiceTheAreaVectorCounterClockwise)
+{
+    Mesh m = right_triangle();
+    EXPECT_EQ(face_cross(m, 0), Vec3(0, 0, 1));
+    m.faces[0] = {0, 2, 1};  // clockwise seen from +z
+    EXPECT_EQ(face_cross(m, 0), Vec3(0, 0, -1));
+    m.points = {Vec3(1, 1, 1), Vec3(3, 1, 1), Vec3(1, 1, 4)};  // legs 2 (x) and 3 (z)
+    m.faces[0] = {0, 1, 2};
+    EXPECT_EQ(face_cross(m, 0), Vec3(0, -6, 0));
+}
+
+TEST(SurfaceArea, UnitRightTriangleIsOneHalf)
+{
+    EXPECT_EQ(surface_area(right_triangle()), 0.5);
+}
+
+TEST(SurfaceArea, UnitCubeIsSixAndAGridIsItsRectangle)
+{
+    EXPECT_EQ(surface_area(unit_cube()), 6.0);
+    // plane_grid(nx, ny, s) covers (nx - 1) s by (ny - 1) s.
+    EXPECT_NEAR(surface_area(plane_grid(5, 4, 0.5).mesh), 4 * 0.5 * 3 * 0.5, 1e-14);
+}
+
+TEST(SurfaceArea, InscribedIcospheresApproachFourPiFromBelow)
+{
+    double previous = 0.0;
+    for (int k = 1; k <= 4; ++k) {
+        const double a = surface_area(icosphere(k).mesh);
+        EXPECT_LT(a, 4 * M_PI);
+        EXPECT_GT(a, previous);
+        previous = a;
+    }
+    EXPECT_NEAR(previous, 4 * M_PI, 0.01 * 4 * M_PI);
 }

@@ -1,0 +1,217 @@
+#include "meshdiff/report/json.h"
+
+#include <gtest/gtest.h>
+
+#include "meshdiff/compare.h"
+#include "meshdiff/error.h"
+#include "meshdiff/io.h"
+#include "meshdiff/shapes.h"
+
+#include <cmath>
+#include <functional>
+
+using namespace meshdiff;
+
+namespace {
+
+std::string data(const std::string& name)
+{
+    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
+}
+
+// No NaN or Inf can reach a JSON report: nlohmann would write null for them,
+// so check that every number is finite (nulls are allowed only where documented).
+bool all_finite(const nlohmann::json& j)
+{
+    if (j.is_number_float()) return std::isfinite(j.get<double>());
+    if (j.is_object() || j.is_array())
+        for (const auto& v : j)
+            if (!all_finite(v)) return false;
+    return true;
+}
+
+// The sorted keys of an object.
+std::vector<std::string> keys(const nlohmann::json& j)
+{
+    std::vector<std::string> k;
+    for (const auto& item : j.items()) k.push_back(item.key());
+    return k;
+}
+
+nlohmann::json smoothing(SmoothingMethod method, bool implicit, bool distance)
+{
+    SmoothingOptions o;
+    o.method = method;
+    o.implicit = implicit;
+    o.iterations = 5;
+    RecordOptions ro;
+    ro.every = 2;
+    ro.profile.levels = {1, 3};
+    ro.distance = distance;
+    ro.sampling.samples = 3000;
+    Mesh m = noisy_sphere(2, 0.05, 3).mesh;
+    const SmoothingRecord r = smooth_and_record(m, o, ro);
+    return smoothing_json(r, o, ro, "in.ply", "out.ply");
+}
+
+}  // namespace
+
+TEST(ProfileJson, HasTheSchemaKeysAndOnlyFiniteNumbers)
+{
+    const LoadedMesh m = read_mesh(data("teapot.obj"));
+    ProfileOptions o;
+    o.levels = {1, 2, 5};
+    const auto j = profile_json(mesh_facts(m), roughness_profile(m.mesh, o));
+    EXPECT_EQ(j["schema"], "meshdiff.profile/1");
+    for (const char* key : {"mesh", "curvature", "levels", "sigma", "sigma_global", "level_details", "warnings"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_EQ(j["levels"], nlohmann::json({1, 2, 5}));
+    EXPECT_EQ(j["mesh"]["components"], 4);
+    EXPECT_TRUE(j["curvature"].contains("undefined_vertices"));
+    EXPECT_GT(j["mesh"]["scale_factor"].get<double>(), 0.0);
+    EXPECT_TRUE(all_finite(j));
+    EXPECT_FALSE(j["warnings"].empty());
+}
+
+TEST(CompareJson, HasTheSchemaKeysAndHausdorffIsTheLargerMaximum)
+{
+    const LoadedMesh a = read_mesh(data("sphere_ico_2562.ply"));
+    const LoadedMesh b = read_mesh(data("ellipsoid_150_100_100.ply"));
+    CompareOptions o;
+    o.profile.levels = {1, 10};
+    o.sampling.samples = 20000;
+    const auto j = comparison_json(compare_meshes(a, b, o));
+    EXPECT_EQ(j["schema"], "meshdiff.compare/1");
+    EXPECT_EQ(j["original"]["schema"], "meshdiff.profile/1");
+    const auto& rd = j["roughness_distance"];
+    for (const char* key : {"k", "levels", "distance", "relative_change", "global"}) EXPECT_TRUE(rd.contains(key));
+    EXPECT_TRUE(rd["global"].contains("distance") && rd["global"].contains("relative_change"));
+    const auto& sd = j["surface_distance"];
+    for (const char* key : {"min", "max", "mean", "rms", "samples"}) {
+        EXPECT_TRUE(sd["forward"].contains(key));
+        EXPECT_TRUE(sd["backward"].contains(key));
+    }
+    EXPECT_EQ(sd["hausdorff"].get<double>(),
+              std::max(sd["forward"]["max"].get<double>(), sd["backward"]["max"].get<double>()));
+    // The stretched sphere reaches 0.5 beyond the unit sphere along x.
+    EXPECT_NEAR(sd["hausdorff"].get<double>(), 0.5, 0.01);
+    EXPECT_TRUE(all_finite(j));
+}
+
+TEST(CompareJson, EachHalfCanBeSwitchedOff)
+{
+    const LoadedMesh a = read_mesh(data("hemisphere.ply"));
+    CompareOptions o;
+    o.roughness = false;
+    auto j = comparison_json(compare_meshes(a, a, o));
+    EXPECT_TRUE(j["roughness_distance"].is_null());
+    EXPECT_LT(j["surface_distance"]["hausdorff"].get<double>(), 1e-12);
+    o.roughness = true;
+    o.distance = false;
+    j = comparison_json(compare_meshes(a, a, o));
+    EXPECT_TRUE(j["surface_distance"].is_null());
+    o.roughness = false;
+    EXPECT_THROW(compare_meshes(a, a, o), InvalidArgumentError);
+}
+
+TEST(CompareJson, FaceSchemeIsSpeltByToString)
+{
+    const LoadedMesh a = read_mesh(data("hemisphere.ply"));
+    CompareOptions o;
+    o.roughness = false;
+    o.sampling.samples = 5000;
+    for (const FaceSampling scheme : {FaceSampling::SimilarTriangles, FaceSampling::MonteCarlo}) {
+        o.sampling.face_scheme = scheme;
+        const auto j = comparison_json(compare_meshes(a, a, o));
+        EXPECT_EQ(j["surface_distance"]["sampling"]["face_scheme"], to_string(scheme));
+        EXPECT_EQ(j["surface_distance"]["sampling"]["samples_requested"], 5000);
+    }
+    EXPECT_EQ(to_string(FaceSampling::SimilarTriangles), "similar");
+    EXPECT_EQ(to_string(FaceSampling::MonteCarlo), "montecarlo");
+}
+
+TEST(SmoothingJson, HasTheSchemaAndConsistentSizes)
+{
+    const auto j = smoothing(SmoothingMethod::Laplacian, false, true);
+    EXPECT_EQ(j["schema"], "meshdiff.smoothing/1");
+    EXPECT_EQ(j["input"], "in.ply");
+    EXPECT_EQ(j["output"], "out.ply");
+    EXPECT_EQ(j["method"], "laplacian");
+    EXPECT_EQ(j["levels"], nlohmann::json({1, 3}));
+    EXPECT_EQ(j["iterations"], nlohmann::json({0, 2, 4, 5}));
+    ASSERT_EQ(j["sigma"].size(), 4u);
+    for (const auto& s : j["sigma"]) EXPECT_EQ(s.size(), 2u);
+    EXPECT_EQ(j["sigma_global"].size(), 4u);
+    EXPECT_EQ(j["curvature_undefined"].size(), 4u);
+    ASSERT_EQ(j["distance_to_input"].size(), 4u);
+    EXPECT_LT(j["distance_to_input"][0]["hausdorff_relative"].get<double>(), 1e-12);
+    EXPECT_FALSE(j.contains("flow"));  // not an explicit flow
+    EXPECT_TRUE(all_finite(j));
+}
+
+TEST(SmoothingJson, FlowOnlyForExplicitFlowsAndDistanceOnlyWhenRecorded)
+{
+    const auto mcf = smoothing(SmoothingMethod::MeanCurvatureFlow, false, false);
+    ASSERT_TRUE(mcf.contains("flow"));
+    EXPECT_EQ(mcf["flow"]["time"].size(), mcf["iterations"].size());
+    EXPECT_EQ(mcf["flow"]["steps"].size(), 5u);
+    EXPECT_EQ(mcf["flow"]["stability_ratio"].size(), 5u);
+    EXPECT_FALSE(mcf.contains("distance_to_input"));
+    EXPECT_TRUE(smoothing(SmoothingMethod::ModifiedMeanCurvatureFlow, false, false).contains("flow"));
+    EXPECT_FALSE(smoothing(SmoothingMethod::MeanCurvatureFlow, true, false).contains("flow"));  // implicit
+    EXPECT_FALSE(smoothing(SmoothingMethod::Taubin, false, false).contains("flow"));
+}
+
+TEST(BatchJson, OkAndErrorLinesHaveTheirKeys)
+{
+    const LoadedMesh a = read_mesh(data("hemisphere.ply"));
+    CompareOptions o;
+    o.roughness = false;
+    o.sampling.samples = 5000;
+    const auto ok = batch_ok_json("p1", "a.ply", "b.ply", compare_meshes(a, a, o));
+    EXPECT_EQ(keys(ok), (std::vector<std::string>{"id", "original", "processed", "result", "status"}));
+    EXPECT_EQ(ok["status"], "ok");
+    EXPECT_EQ(ok["id"], "p1");
+    EXPECT_EQ(ok["result"]["schema"], "meshdiff.compare/1");
+    const auto err = batch_error_json("p2", "a.ply", "missing.ply", "missing.ply: cannot open", 3);
+    EXPECT_EQ(keys(err), (std::vector<std::string>{"error", "exit_code", "id", "original", "processed", "status"}));
+    EXPECT_EQ(err["status"], "error");
+    EXPECT_EQ(err["processed"], "missing.ply");
+    EXPECT_EQ(err["error"], "missing.ply: cannot open");
+    EXPECT_EQ(err["exit_code"], 3);
+}
+
+TEST(WarningsJson, IsTheTextsInOrder)
+{
+    const std::vector<Warning> w = {{WarningKind::OpenSurface, -1, 3.0, "open"},
+                                    {WarningKind::Components, -1, 2.0, "two parts"},
+                                    {WarningKind::NoDefinedD, 4, 0.0, "level 4: none"}};
+    EXPECT_EQ(warnings_json(w), nlohmann::json({"open", "two parts", "level 4: none"}));
+    EXPECT_EQ(warnings_json({}), nlohmann::json::array());
+}
+
+TEST(ExactProfileJson, HasTheExactSigmasAndASmallHError)
+{
+    const Shape torus_shape = torus(128, 32);
+    ProfileOptions o;
+    o.levels = {1, 2, 4};
+    o.keep_vertex_data = true;
+    const RoughnessProfile estimated = roughness_profile(torus_shape.mesh, o);
+    const ExactProfile exact = exact_profile(torus_shape.mesh, torus_shape.exact_H, o, estimated);
+    const auto j = exact_profile_json(estimated, exact, "exact_H");
+    EXPECT_EQ(j["property"], "exact_H");
+    EXPECT_EQ(j["levels"], nlohmann::json({1, 2, 4}));
+    ASSERT_EQ(j["sigma"].size(), 3u);
+    for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(j["sigma"][k].get<double>(), exact.profile.levels[k].sigma);
+    EXPECT_EQ(j["sigma_global"].get<double>(), exact.profile.global.sigma);
+    EXPECT_EQ(j["undefined_vertices"], 0);
+    const auto& e = j["h_error"];
+    ASSERT_TRUE(e.contains("rms") && e.contains("max") && e.contains("vertices"));
+    EXPECT_EQ(e["vertices"], torus_shape.mesh.n_vertices());
+    EXPECT_EQ(e["rms"].get<double>(), exact.h_error.rms);
+    // The scaled exact H spans [1.35, 2.44] on this torus; the cubic fit is within 2% of it.
+    EXPECT_GT(e["rms"].get<double>(), 0.0);
+    EXPECT_LT(e["rms"].get<double>(), 0.04);
+    EXPECT_LE(e["rms"].get<double>(), e["max"].get<double>());
+    EXPECT_TRUE(all_finite(j));
+}

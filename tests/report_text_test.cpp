@@ -1,0 +1,186 @@
+#include "meshdiff/report/text.h"
+
+#include <gtest/gtest.h>
+
+#include "meshdiff/compare.h"
+#include "meshdiff/io.h"
+#include "meshdiff/shapes.h"
+
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace meshdiff;
+
+namespace {
+
+std::string data(const std::string& name)
+{
+    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
+}
+
+// printf's %.6g, which is what fmt's {:.6g} prints for these numbers.
+std::string g6(double x)
+{
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6g", x);
+    return buf;
+}
+
+bool contains(const std::string& text, const std::string& part)
+{
+    return text.find(part) != std::string::npos;
+}
+
+std::vector<std::string> lines(const std::string& text)
+{
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) out.push_back(line);
+    return out;
+}
+
+// icosphere(4) with vertex 0 pushed out by 5% of the radius: it and its
+// neighbours make most of sigma^2 at every level.
+LoadedMesh spiky_sphere()
+{
+    LoadedMesh m;
+    m.mesh = icosphere(4).mesh;
+    m.mesh.points[0] *= 1.05;
+    m.input.path = "spiky.ply";
+    return m;
+}
+
+}  // namespace
+
+TEST(ComparisonText, HasMetroSectionNames)
+{
+    const LoadedMesh a = read_mesh(data("sphere_ico_2562.ply"));
+    const LoadedMesh b = read_mesh(data("ellipsoid_150_100_100.ply"));
+    CompareOptions o;
+    o.profile.levels = {1, 10};
+    o.sampling.samples = 20000;
+    const std::string text = comparison_text(compare_meshes(a, b, o));
+    EXPECT_NE(text.find("Forward distance (M1 -> M2)"), std::string::npos);
+    EXPECT_NE(text.find("Hausdorff distance"), std::string::npos);
+}
+
+TEST(ComparisonText, ListsTheOutliersDominateWarningsOfASpikyOriginal)
+{
+    LoadedMesh clean;
+    clean.mesh = icosphere(4).mesh;
+    CompareOptions o;
+    o.profile.levels = {1, 2};
+    o.distance = false;
+    const Comparison c = compare_meshes(spiky_sphere(), clean, o);
+    const std::string text = comparison_text(c);
+    std::size_t listed = 0;
+    for (const auto& w : warnings(c.original, &*c.original_profile))
+        if (w.kind == WarningKind::OutliersDominate) {
+            ++listed;
+            EXPECT_TRUE(contains(text, "  ! original: " + w.text + "\n")) << w.text;
+        }
+    EXPECT_EQ(listed, 3u);  // levels 1, 2 and global
+    EXPECT_TRUE(contains(text, "  ! original: level 1: "));
+    EXPECT_TRUE(contains(text, "  ! original: global level: "));
+    EXPECT_FALSE(contains(text, "  ! processed: "));
+}
+
+TEST(ProfileText, HasOneRowPerLevelAndTheGlobalRow)
+{
+    const LoadedMesh m = read_mesh(data("torus_R1_r025.ply"));
+    ProfileOptions o;
+    o.levels = {1, 2, 7};
+    const RoughnessProfile p = roughness_profile(m.mesh, o);
+    const auto rows = lines(profile_text(mesh_facts(m), p));
+    std::size_t header = 0;
+    while (header < rows.size() && !contains(rows[header], "level        sigma")) ++header;
+    ASSERT_LT(header + 4, rows.size());
+    const char* names[] = {"       1 ", "       2 ", "       7 ", "  global "};
+    for (int k = 0; k < 4; ++k) EXPECT_EQ(rows[header + 1 + k].rfind(names[k], 0), 0u) << rows[header + 1 + k];
+    EXPECT_TRUE(contains(rows[header + 1], g6(p.levels[0].sigma))) << rows[header + 1];
+    EXPECT_TRUE(contains(rows[header + 4], g6(p.global.sigma))) << rows[header + 4];
+    EXPECT_TRUE(header + 5 == rows.size() || rows[header + 5].empty());  // nothing else in the table
+}
+
+TEST(ExactProfileText, NamesThePropertyAndTheHErrorWithARowPerLevel)
+{
+    const Shape t = torus(64, 24);
+    ProfileOptions o;
+    o.levels = {1, 4};
+    o.keep_vertex_data = true;
+    const RoughnessProfile estimated = roughness_profile(t.mesh, o);
+    const ExactProfile exact = exact_profile(t.mesh, t.exact_H, o, estimated);
+    const std::string text = exact_profile_text(estimated, exact, "exact_H");
+    EXPECT_TRUE(contains(text, "'exact_H'"));
+    EXPECT_TRUE(contains(text, "over " + std::to_string(t.mesh.n_vertices()) + " vertices"));
+    char rms[32];
+    std::snprintf(rms, sizeof rms, "RMS %.4g", exact.h_error.rms);
+    EXPECT_TRUE(contains(text, rms)) << text;
+    EXPECT_TRUE(contains(text, g6(exact.profile.levels[1].sigma)));
+    EXPECT_TRUE(contains(text, "  global "));
+    EXPECT_EQ(lines(text).size(), 3u + 3u);  // blank, title, header, 2 levels, global
+}
+
+TEST(SmoothingText, StatesTheRunAndTheFlowTimeOfExplicitFlows)
+{
+    SmoothingOptions o;
+    o.iterations = 4;
+    Mesh m = noisy_sphere(2, 0.05, 3).mesh;
+    const SmoothingReport lap = smooth(m, o);
+    const std::string text = smoothing_text("out.ply", o, m.n_vertices(), lap);
+    EXPECT_EQ(text, "out.ply: laplacian post-updating, 4 iterations, 162 vertices\n");
+    o.method = SmoothingMethod::MeanCurvatureFlow;
+    const SmoothingReport mcf = smooth(m, o);
+    const std::string flow = smoothing_text("out.ply", o, m.n_vertices(), mcf);
+    EXPECT_TRUE(contains(flow, "mcf post-updating"));
+    EXPECT_TRUE(contains(flow, "flow time " + g6(mcf.time) + " e^2 (e = " + g6(mcf.mean_edge)));
+}
+
+TEST(SmoothingWarning, NoneForAStableRunAndNamesTheInputForAHugeMcfStep)
+{
+    SmoothingOptions o;
+    o.method = SmoothingMethod::MeanCurvatureFlow;
+    o.iterations = 2;
+    o.step = 0.05;
+    Mesh m = noisy_sphere(2, 0.05, 3).mesh;
+    EXPECT_EQ(smoothing_warning("in.ply", o, smooth(m, o)), std::nullopt);
+    o.method = SmoothingMethod::Laplacian;
+    EXPECT_EQ(smoothing_warning("in.ply", o, smooth(m, o)), std::nullopt);
+    o.method = SmoothingMethod::MeanCurvatureFlow;
+    o.step = 10.0;
+    o.iterations = 1;
+    const SmoothingReport r = smooth(m, o);
+    ASSERT_EQ(r.unstable_iterations, 1);
+    const auto w = smoothing_warning("noisy-in.ply", o, r);
+    ASSERT_TRUE(w.has_value());
+    EXPECT_TRUE(contains(*w, "noisy-in.ply"));
+    EXPECT_TRUE(contains(*w, "1 of 1 explicit steps"));
+    EXPECT_TRUE(contains(*w, "--step"));
+}
+
+TEST(NoiseText, StatesTheCountsAmplitudeAndSeed)
+{
+    Mesh m = read_mesh(data("hemisphere.ply")).mesh;
+    NoiseOptions o;
+    o.amplitude = 0.25;
+    o.seed = 17;
+    const NoiseReport r = add_noise(m, o);
+    ASSERT_EQ(r.skipped_boundary, 120u);  // one boundary loop of 120 vertices
+    const std::string text = noise_text("noisy.ply", o, r);
+    EXPECT_TRUE(contains(text, "noisy.ply: " + std::to_string(r.moved) + " vertices moved, 120 skipped (120 boundary"));
+    EXPECT_TRUE(contains(text, "amplitude " + g6(r.amplitude)));
+    EXPECT_TRUE(contains(text, "uniform [-0.25, 0.25) x mean edge length " + g6(r.unit_length)));
+    EXPECT_TRUE(contains(text, "along vertex normals, seed 17"));
+    EXPECT_EQ(noise_description(o, r), "uniform [-0.25, 0.25) x mean edge length " + g6(r.unit_length));
+}
+
+TEST(ShapeText, StatesTheCountsAndTheRangeOfExactH)
+{
+    const Shape t = torus(12, 8, 1.0, 0.25);
+    const std::string text = shape_text("torus.ply", t, "torus R 1 r 0.25");
+    // H on the inner equator (1 - 0.5) / (0.5 0.75) = 4/3, on the outer (1 + 0.5) / (0.5 1.25) = 2.4.
+    EXPECT_EQ(text, "torus.ply: 96 vertices, 192 faces, exact H in [" + g6(4.0 / 3.0) + ", " + g6(2.4) +
+                        "] (torus R 1 r 0.25)\n");
+}

@@ -1,0 +1,145 @@
+#include "meshdiff/topology.h"
+
+#include <gtest/gtest.h>
+
+#include "meshdiff/io.h"
+#include "meshdiff/shapes.h"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+#include <vector>
+
+using namespace meshdiff;
+
+namespace {
+
+std::string data(const std::string& name)
+{
+    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
+}
+
+// Brute force: every (sorted) vertex pair of every face with distinct ends,
+// with the lowest face that has it, ordered by the pair.
+std::vector<Edge> brute_force_edges(const Mesh& mesh)
+{
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> lowest;
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            auto a = std::uint32_t(mesh.faces[f][k]), b = std::uint32_t(mesh.faces[f][(k + 1) % 3]);
+            if (a == b) continue;
+            if (a > b) std::swap(a, b);
+            const auto it = lowest.find({a, b});
+            if (it == lowest.end() || it->second > f) lowest[{a, b}] = std::uint32_t(f);
+        }
+    std::vector<Edge> edges;
+    for (const auto& [ab, f] : lowest) edges.push_back({ab.first, ab.second, f});
+    return edges;
+}
+
+void expect_same_edges(const std::vector<Edge>& got, const std::vector<Edge>& want)
+{
+    ASSERT_EQ(got.size(), want.size());
+    for (std::size_t i = 0; i < got.size(); ++i) {
+        EXPECT_EQ(got[i].a, want[i].a) << i;
+        EXPECT_EQ(got[i].b, want[i].b) << i;
+        EXPECT_EQ(got[i].face, want[i].face) << i;
+    }
+}
+
+}  // namespace
+
+TEST(Topology, ClosedManifoldSphere)
+{
+    const auto t = topology_report(icosphere(3).mesh);
+    EXPECT_EQ(t.vertices, 642u);
+    EXPECT_EQ(t.edges, 1920u);
+    EXPECT_EQ(t.components, 1u);
+    EXPECT_TRUE(t.closed());
+    EXPECT_EQ(t.non_manifold_edges + t.non_manifold_vertices + t.degenerate_faces + t.duplicate_faces +
+                  t.orientation_conflicts,
+              0u);
+    EXPECT_EQ(std::int64_t(t.vertices) - std::int64_t(t.edges) + std::int64_t(t.faces), 2);
+}
+
+TEST(Topology, CountsTheDefectsOfRealMeshes)
+{
+    // Counts from the independent checker of tests/data/PROVENANCE.md.
+    const auto res4 = topology_report(read_mesh(data("bunny_res4_ascii.ply")).mesh);
+    EXPECT_EQ(res4.non_manifold_edges, 70u);
+    EXPECT_EQ(res4.non_manifold_vertices, 4u);
+    EXPECT_EQ(res4.duplicate_faces, 40u);
+    EXPECT_EQ(res4.boundary_edges, 26u);
+    const auto hemi = topology_report(read_mesh(data("hemisphere.ply")).mesh);
+    EXPECT_EQ(hemi.boundary_edges, 120u);
+    EXPECT_EQ(hemi.boundary_loops, 1u);
+    const auto teapot = topology_report(read_mesh(data("teapot.obj")).mesh);
+    EXPECT_EQ(teapot.components, 4u);
+    EXPECT_EQ(teapot.boundary_edges, 1036u);
+    EXPECT_EQ(topology_report(read_mesh(data("torus_R1_r025.ply")).mesh).edges, 3u * 2304u);
+}
+
+TEST(Topology, DegenerateDuplicateAndFlippedFaces)
+{
+    Mesh m;
+    m.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(2, 0, 0), Vec3(1, 1, 0)};
+    m.faces = {{0, 1, 2}, {0, 1, 3}, {2, 1, 0}, {1, 4, 2}};  // collinear, reversed duplicate
+    const auto t = topology_report(m);
+    EXPECT_EQ(t.degenerate_faces, 1u);
+    EXPECT_EQ(t.duplicate_faces, 1u);
+    EXPECT_GE(t.orientation_conflicts + t.non_manifold_edges, 1u);
+    EXPECT_EQ(degenerate_face_mask(m), (std::vector<char>{0, 1, 0, 0}));
+}
+
+TEST(Adjacency, SortedUniqueNeighboursOnTheTorus)
+{
+    const Shape s = torus(12, 8);
+    const Adjacency a = vertex_adjacency(s.mesh);
+    for (std::size_t v = 0; v < a.size(); ++v) {
+        EXPECT_EQ(a.degree(v), 6u);
+        EXPECT_TRUE(std::is_sorted(a.begin(v), a.end(v)));
+        EXPECT_EQ(std::adjacent_find(a.begin(v), a.end(v)), a.end(v));
+    }
+    const Adjacency vf = vertex_faces(s.mesh);
+    for (std::size_t v = 0; v < vf.size(); ++v) EXPECT_EQ(vf.degree(v), 6u);
+}
+
+TEST(UniqueEdges, EqualBruteForceOnAMeshWithDuplicateFaces)
+{
+    const Mesh m = read_mesh(data("bunny_res4_ascii.ply")).mesh;
+    ASSERT_EQ(topology_report(m).duplicate_faces, 40u);  // the duplicates whose edges must appear once
+    const auto edges = unique_edges(m);
+    expect_same_edges(edges, brute_force_edges(m));
+    EXPECT_EQ(edges.size(), topology_report(m).edges);
+}
+
+TEST(UniqueEdges, KeepTheDistinctEdgeOfARepeatedCornerFace)
+{
+    Mesh m;
+    m.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+    // Face 0 repeats corner 3: its edge (1, 3) has no other face; (3, 3) is no edge.
+    m.faces = {{3, 1, 3}, {0, 1, 2}, {0, 2, 3}, {2, 1, 0}};
+    const auto edges = unique_edges(m);
+    expect_same_edges(edges, brute_force_edges(m));
+    const std::vector<Edge> want = {{0, 1, 1}, {0, 2, 1}, {0, 3, 2}, {1, 2, 1}, {1, 3, 0}, {2, 3, 2}};
+    expect_same_edges(edges, want);
+}
+
+TEST(DegenerateFaceMask, FlipsAtKDegenerateAreaTimesTheSquaredDiagonal)
+{
+    // A unit tetrahedron fixes the box ([0, 1]^3); a thin triangle on the edge
+    // (0, 1) with apex height h has |cross| = h (base 1).
+    Mesh m;
+    m.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(0.5, 0, 0)};
+    m.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 1, 4}};
+    const double diag = bounding_box(m).diagonal();
+    const double eps = kDegenerateArea * diag * diag;
+    for (const double factor : {1.0 + 1e-6, 1.0 - 1e-6}) {
+        m.points[4].y() = eps * factor;
+        ASSERT_EQ(bounding_box(m).diagonal(), diag);
+        ASSERT_NEAR(face_cross(m, 4).norm(), eps * factor, 1e-9 * eps);
+        const auto mask = degenerate_face_mask(m);
+        EXPECT_EQ(mask, (std::vector<char>{0, 0, 0, 0, char(factor < 1.0)})) << factor;
+        EXPECT_EQ(topology_report(m).degenerate_faces, factor < 1.0 ? 1u : 0u);
+    }
+}

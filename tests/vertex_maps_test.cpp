@@ -1,0 +1,196 @@
+#include "meshdiff/vertex_maps.h"
+
+#include <gtest/gtest.h>
+
+#include "meshdiff/error.h"
+#include "meshdiff/point_triangle.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace meshdiff;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string data(const std::string& name)
+{
+    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
+}
+
+const Rgb kRed = {255, 0, 0};
+const Rgb kBlue = {0, 0, 255};
+
+// Distances of the stretched sphere (x scaled by 1.5, same connectivity) to the
+// unit icosphere: its vertices with x = 0 lie on the sphere (distance 0).
+const LoadedMesh& sphere()
+{
+    static const LoadedMesh m = read_mesh(data("sphere_ico_2562.ply"));
+    return m;
+}
+const LoadedMesh& ellipsoid()
+{
+    static const LoadedMesh m = read_mesh(data("ellipsoid_150_100_100.ply"));
+    return m;
+}
+const Comparison& distance_comparison()
+{
+    static const Comparison c = [] {
+        CompareOptions o;
+        o.roughness = false;
+        o.sampling.samples = 20000;
+        o.vertex_distances = true;
+        return compare_meshes(sphere(), ellipsoid(), o);
+    }();
+    return c;
+}
+
+ProfileOptions kept_profile_options()
+{
+    ProfileOptions o;
+    o.levels = {1, 3};
+    o.keep_vertex_data = true;
+    return o;
+}
+
+bool same_or_both_nan(double a, double b)
+{
+    return a == b || (std::isnan(a) && std::isnan(b));
+}
+
+}  // namespace
+
+TEST(DistanceMap, DistanceIsTheBruteForceDistanceOfEveryProcessedVertex)
+{
+    const VertexMap m = distance_map(distance_comparison());
+    ASSERT_EQ(m.scalars.size(), 1u);
+    EXPECT_EQ(m.scalars[0].name, "distance");
+    const auto& d = m.scalars[0].values;
+    ASSERT_EQ(d.size(), ellipsoid().mesh.n_vertices());
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        const double want = closest_point_brute_force(sphere().mesh, ellipsoid().mesh.points[i]).distance;
+        EXPECT_NEAR(d[i], want, 1e-15 * want) << i;
+    }
+}
+
+TEST(DistanceMap, DefaultRangeIsZeroToTheMaximumFromBlueToRed)
+{
+    const VertexMap m = distance_map(distance_comparison());
+    const auto& d = m.scalars[0].values;
+    ASSERT_EQ(m.colors.size(), d.size());
+    const auto [lo, hi] = std::minmax_element(d.begin(), d.end());
+    ASSERT_EQ(*lo, 0.0);  // an x = 0 vertex of the stretched sphere
+    EXPECT_NEAR(*hi, 0.5, 0.01);
+    EXPECT_EQ(m.colors[std::size_t(hi - d.begin())], kRed);
+    EXPECT_EQ(m.colors[std::size_t(lo - d.begin())], kBlue);
+    for (std::size_t i = 0; i < d.size(); ++i)
+        if (d[i] == 0.0) {
+            EXPECT_EQ(m.colors[i], kBlue) << i;
+        }
+    EXPECT_EQ(m.colors, sequential_colors(d, 0.0, *hi));
+    ASSERT_EQ(m.comments.size(), 2u);
+    EXPECT_NE(m.comments[0].find(ellipsoid().input.path), std::string::npos) << m.comments[0];
+    EXPECT_NE(m.comments[0].find(sphere().input.path), std::string::npos) << m.comments[0];
+}
+
+TEST(DistanceMap, AGivenRangeColoursAndIsStatedInAComment)
+{
+    const VertexMap m = distance_map(distance_comparison(), std::make_pair(0.0, 0.25));
+    const auto& d = m.scalars[0].values;
+    EXPECT_EQ(m.colors, sequential_colors(d, 0.0, 0.25));
+    for (std::size_t i = 0; i < d.size(); ++i)
+        if (d[i] >= 0.25) {
+            EXPECT_EQ(m.colors[i], kRed) << i;  // clamped above MAX
+        }
+    EXPECT_NE(m.comments[1].find("[0, 0.25]"), std::string::npos) << m.comments[1];
+}
+
+TEST(DistanceMap, ThrowsWithoutVertexDistancesOrForMinNotBelowMax)
+{
+    CompareOptions o;
+    o.roughness = false;
+    o.sampling.samples = 5000;
+    EXPECT_THROW(distance_map(compare_meshes(sphere(), ellipsoid(), o)), InvalidArgumentError);
+    EXPECT_THROW(distance_map(distance_comparison(), std::make_pair(0.1, 0.1)), InvalidArgumentError);
+    EXPECT_THROW(distance_map(distance_comparison(), std::make_pair(0.2, 0.1)), InvalidArgumentError);
+}
+
+TEST(DistanceMap, SameVertexDistancesWithoutTheSurfaceDistance)
+{
+    CompareOptions o;
+    o.distance = false;
+    o.profile.levels = {1};
+    o.profile.global = false;
+    o.vertex_distances = true;
+    const Comparison c = compare_meshes(sphere(), ellipsoid(), o);
+    EXPECT_FALSE(c.distance.has_value());
+    EXPECT_EQ(c.processed_vertex_distance, distance_comparison().processed_vertex_distance);
+    EXPECT_EQ(distance_map(c).scalars[0].values, distance_map(distance_comparison()).scalars[0].values);
+}
+
+TEST(ProfileMap, PropertiesAreHThenDPerLevelThenGlobalThenWorst)
+{
+    const Mesh& mesh = ellipsoid().mesh;
+    const RoughnessProfile p = roughness_profile(mesh, kept_profile_options());
+    const VertexMap m = profile_map(p, "ellipsoid.ply");
+    std::vector<std::string> names;
+    for (const auto& s : m.scalars) {
+        names.push_back(s.name);
+        EXPECT_EQ(s.values.size(), mesh.n_vertices()) << s.name;
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"H", "D_1", "D_3", "D_global", "worst"}));
+    EXPECT_EQ(m.scalars[0].values, p.H);
+    for (std::size_t k = 0; k < 2; ++k)
+        for (std::size_t i = 0; i < mesh.n_vertices(); ++i)
+            EXPECT_TRUE(same_or_both_nan(m.scalars[1 + k].values[i], p.D[k][i]));
+    EXPECT_EQ(m.colors.size(), mesh.n_vertices());
+    EXPECT_NE(m.comments[0].find("ellipsoid.ply"), std::string::npos) << m.comments[0];
+}
+
+TEST(ProfileMap, WorstIsOneExactlyAtTheWorstVerticesOfSomeLevel)
+{
+    const RoughnessProfile p = roughness_profile(read_mesh(data("bunny_res3.ply")).mesh, kept_profile_options());
+    std::set<std::uint32_t> union_of_worst;
+    for (const auto& l : p.levels) union_of_worst.insert(l.worst_vertices.begin(), l.worst_vertices.end());
+    union_of_worst.insert(p.global.worst_vertices.begin(), p.global.worst_vertices.end());
+    ASSERT_GT(union_of_worst.size(), 10u);  // the levels disagree on some
+    const VertexMap m = profile_map(p, "bunny");
+    ASSERT_EQ(m.scalars.back().name, "worst");
+    const auto& worst = m.scalars.back().values;
+    for (std::size_t i = 0; i < worst.size(); ++i)
+        EXPECT_EQ(worst[i], union_of_worst.count(std::uint32_t(i)) ? 1.0 : 0.0) << i;
+}
+
+TEST(ProfileMap, ThrowsWithoutVertexData)
+{
+    ProfileOptions o = kept_profile_options();
+    o.keep_vertex_data = false;
+    EXPECT_THROW(profile_map(roughness_profile(ellipsoid().mesh, o), "x"), InvalidArgumentError);
+}
+
+TEST(WritePly, AMapComesBackAsVertexScalars)
+{
+    const RoughnessProfile p = roughness_profile(ellipsoid().mesh, kept_profile_options());
+    const Mesh normalised = apply_normalization(ellipsoid().mesh, p.normalization);
+    const VertexMap m = profile_map(p, "ellipsoid");
+    const fs::path path = fs::temp_directory_path() / ("meshdiff_vertex_maps_" + std::to_string(::getpid()) + ".ply");
+    write_ply(path, normalised, m);
+    const LoadedMesh back = read_mesh(path);
+    fs::remove(path);
+    EXPECT_EQ(back.mesh.points, normalised.points);
+    for (const auto& s : m.scalars) {
+        const auto& got = vertex_scalar(back, s.name).values;
+        ASSERT_EQ(got.size(), s.values.size()) << s.name;
+        for (std::size_t i = 0; i < got.size(); ++i) EXPECT_TRUE(same_or_both_nan(got[i], s.values[i])) << s.name;
+    }
+    for (int c = 0; c < 3; ++c) {
+        const auto& channel = vertex_scalar(back, c == 0 ? "red" : c == 1 ? "green" : "blue").values;
+        for (std::size_t i = 0; i < channel.size(); ++i) EXPECT_EQ(channel[i], double(m.colors[i][c]));
+    }
+}
