@@ -27,6 +27,9 @@ std::vector<Warning> warnings(const MeshFacts& f, const RoughnessProfile* p)
     if (f.input.repeated_index_faces)
         add(WarningKind::RepeatedCornerFaces, double(f.input.repeated_index_faces),
             fmt::format("{} faces with a repeated corner were dropped", f.input.repeated_index_faces));
+    if (t.isolated_vertices)
+        add(WarningKind::IsolatedVertices, double(t.isolated_vertices),
+            fmt::format("{} vertices are in no face (their curvature is undefined)", t.isolated_vertices));
     if (t.non_manifold_edges || t.non_manifold_vertices)
         add(WarningKind::NonManifold, double(t.non_manifold_edges),
             fmt::format("non-manifold: {} edges, {} vertices", t.non_manifold_edges, t.non_manifold_vertices));
@@ -57,7 +60,7 @@ std::vector<Warning> warnings(const MeshFacts& f, const RoughnessProfile* p)
                 add(WarningKind::OutliersDominate, l.top_share,
                     fmt::format("{}: the worst {:.1f}% of vertices make {:.0f}% of sigma^2 (outliers "
                                 "dominate; see worst_vertices)",
-                                name, 100.0 * 0.001, 100.0 * l.top_share),
+                                name, 100.0 * p->outlier_fraction, 100.0 * l.top_share),
                     l.level);
             if (l.vertices_used == 0)
                 add(WarningKind::NoDefinedD, 0.0, fmt::format("{}: no vertex has a defined D (sigma set to 0)", name),

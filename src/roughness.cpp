@@ -74,6 +74,7 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
                     std::size_t undefined, const ProfileOptions& options)
 {
     const std::size_t n = H.size();
+    p.outlier_fraction = options.outlier_fraction;
     const DiskMeans means = disk_means(unit, adj, H, options.levels);
     // Levels are independent: one per thread, each result in its own slot.
     const std::size_t n_levels = options.levels.size();

@@ -39,7 +39,7 @@ MESHDIFF_SPELLINGS(NoiseDistribution, "uniform", "gaussian");
 MESHDIFF_SPELLINGS(SmoothingMethod, "laplacian", "taubin", "bilaplacian", "mcf", "modified-mcf");
 MESHDIFF_SPELLINGS(SmoothingUpdate, "post", "pre");
 MESHDIFF_SPELLINGS(StepControl, "fixed", "adaptive");
-MESHDIFF_SPELLINGS(WarningKind, "unreferenced-vertices", "repeated-corner-faces", "non-manifold",
+MESHDIFF_SPELLINGS(WarningKind, "unreferenced-vertices", "repeated-corner-faces", "isolated-vertices", "non-manifold",
                    "orientation-conflicts", "degenerate-faces", "duplicate-faces", "open-surface", "components",
                    "undefined-curvature", "outliers-dominate", "no-defined-d");
 #undef MESHDIFF_SPELLINGS

@@ -34,6 +34,7 @@ enum class WarningKind
 {
     UnreferencedVertices,  //!< value: vertices dropped by reading
     RepeatedCornerFaces,   //!< value: faces dropped by reading
+    IsolatedVertices,      //!< value: vertices in no face (read_mesh drops them; a mesh built in code may have them)
     NonManifold,           //!< value: non-manifold edges (the vertices are in the text)
     OrientationConflicts,  //!< value: edges used twice in the same direction
     DegenerateFaces,       //!< value: zero-area faces (topology.h)
@@ -49,9 +50,10 @@ template <>
 struct EnumNames<WarningKind>
 {
     static constexpr const char* what = "warning kind";
-    static constexpr std::array<EnumName<WarningKind>, 11> names{
+    static constexpr std::array<EnumName<WarningKind>, 12> names{
         {{WarningKind::UnreferencedVertices, "unreferenced-vertices"},
          {WarningKind::RepeatedCornerFaces, "repeated-corner-faces"},
+         {WarningKind::IsolatedVertices, "isolated-vertices"},
          {WarningKind::NonManifold, "non-manifold"},
          {WarningKind::OrientationConflicts, "orientation-conflicts"},
          {WarningKind::DegenerateFaces, "degenerate-faces"},

@@ -27,5 +27,5 @@
 #include "meshdiff/smoothing_record.h"
 #include "meshdiff/surface_distance.h"
 #include "meshdiff/topology.h"
-#include "meshdiff/vertex_maps.h"
 #include "meshdiff/version.h"
+#include "meshdiff/vertex_maps.h"

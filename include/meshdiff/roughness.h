@@ -55,6 +55,7 @@ struct RoughnessProfile
     std::size_t curvature_undefined = 0;   //!< vertices with undefined H
     std::size_t curvature_widened = 0;     //!< fits widened to the 2-ring
     std::size_t curvature_fallback = 0;    //!< cubic fits that fell back to the quadric
+    double outlier_fraction = 0.001;       //!< ProfileOptions::outlier_fraction as used (top_share)
     std::vector<LevelRoughness> levels;    //!< in the order of ProfileOptions::levels
     bool has_global = false;
     LevelRoughness global;  //!< level 0

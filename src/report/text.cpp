@@ -31,7 +31,8 @@ std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
                          ? ""
                          : fmt::format(" (row weighting {})", to_string(p.curvature_options.weighting)),
                      p.curvature_undefined, p.curvature_widened, p.curvature_fallback);
-    s += "\n   level        sigma     used   no-nbhd   top0.1%\n";
+    s += fmt::format("\n   level        sigma     used   no-nbhd {:>9}\n",
+                     fmt::format("top{:g}%", 100.0 * p.outlier_fraction));
     auto row = [&](const std::string& name, const LevelRoughness& l) {
         s += fmt::format("{:>8} {:>12.6g} {:>8} {:>9} {:>8.1f}%\n", name, l.sigma, l.vertices_used, l.no_neighborhood,
                          100.0 * l.top_share);
