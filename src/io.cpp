@@ -1,6 +1,7 @@
 #include "meshdiff/io.h"
 
 #include "meshdiff/error.h"
+#include "meshdiff/output_file.h"
 
 #include "detail/ply_reader.h"
 
@@ -295,43 +296,51 @@ void write_ply(const std::filesystem::path& path, const Mesh& mesh, const std::v
         throw InvalidArgumentError(
             fmt::format("write_ply: {} colours for {} vertices", colors.size(), mesh.n_vertices()));
 
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw IoError(fmt::format("{}: cannot open for writing", path.string()));
-    out << "ply\nformat binary_little_endian 1.0\ncomment written by meshdiff\n";
-    for (const auto& c : comments) out << "comment " << c << "\n";
-    out << "element vertex " << mesh.n_vertices() << "\n";
-    out << "property double x\nproperty double y\nproperty double z\n";
-    for (const auto& s : scalars) out << "property double " << s.name << "\n";
-    if (!colors.empty()) out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
-    out << "element face " << mesh.n_faces() << "\n";
-    out << "property list uchar int vertex_indices\nend_header\n";
+    write_atomically(path, [&](const std::filesystem::path& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        if (!out) throw IoError(fmt::format("{}: cannot open for writing", path.string()));
+        out << "ply\nformat binary_little_endian 1.0\ncomment written by meshdiff\n";
+        for (std::string c : comments) {
+            // A comment is one header line: a line break (from a file name, say) would end it.
+            std::replace_if(
+                c.begin(), c.end(), [](char ch) { return ch == '\n' || ch == '\r'; }, ' ');
+            out << "comment " << c << "\n";
+        }
+        out << "element vertex " << mesh.n_vertices() << "\n";
+        out << "property double x\nproperty double y\nproperty double z\n";
+        for (const auto& s : scalars) out << "property double " << s.name << "\n";
+        if (!colors.empty()) out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+        out << "element face " << mesh.n_faces() << "\n";
+        out << "property list uchar int vertex_indices\nend_header\n";
 
-    static_assert(sizeof(double) == 8 && sizeof(std::int32_t) == 4, "PLY types");
-    const std::size_t stride = 24 + 8 * scalars.size() + (colors.empty() ? 0 : 3);
-    std::vector<char> buf(stride * mesh.n_vertices());
-    char* p = buf.data();
-    for (std::size_t i = 0; i < mesh.n_vertices(); ++i) {
-        std::memcpy(p, mesh.points[i].data(), 24);
-        p += 24;
-        for (const auto& s : scalars) {
-            std::memcpy(p, &s.values[i], 8);
-            p += 8;
+        static_assert(sizeof(double) == 8 && sizeof(std::int32_t) == 4, "PLY types");
+        const std::size_t stride = 24 + 8 * scalars.size() + (colors.empty() ? 0 : 3);
+        std::vector<char> buf(stride * mesh.n_vertices());
+        char* p = buf.data();
+        for (std::size_t i = 0; i < mesh.n_vertices(); ++i) {
+            std::memcpy(p, mesh.points[i].data(), 24);
+            p += 24;
+            for (const auto& s : scalars) {
+                std::memcpy(p, &s.values[i], 8);
+                p += 8;
+            }
+            if (!colors.empty()) {
+                std::memcpy(p, colors[i].data(), 3);
+                p += 3;
+            }
         }
-        if (!colors.empty()) {
-            std::memcpy(p, colors[i].data(), 3);
-            p += 3;
+        out.write(buf.data(), std::streamsize(buf.size()));
+        std::vector<char> fbuf(13 * mesh.n_faces());
+        p = fbuf.data();
+        for (const Face& t : mesh.faces) {
+            *p++ = 3;
+            std::memcpy(p, t.data(), 12);
+            p += 12;
         }
-    }
-    out.write(buf.data(), std::streamsize(buf.size()));
-    std::vector<char> fbuf(13 * mesh.n_faces());
-    p = fbuf.data();
-    for (const Face& t : mesh.faces) {
-        *p++ = 3;
-        std::memcpy(p, t.data(), 12);
-        p += 12;
-    }
-    out.write(fbuf.data(), std::streamsize(fbuf.size()));
-    if (!out) throw IoError(fmt::format("{}: write failed", path.string()));
+        out.write(fbuf.data(), std::streamsize(fbuf.size()));
+        out.close();
+        if (!out) throw IoError(fmt::format("{}: write failed", path.string()));
+    });
 }
 
 bool writes_vertex_properties(const std::filesystem::path& path)
@@ -358,11 +367,18 @@ void write_mesh(const std::filesystem::path& path, const Mesh& mesh, const std::
             auto fh = om.add_face(vh[std::size_t(t[0])], vh[std::size_t(t[1])], vh[std::size_t(t[2])]);
             if (!fh.is_valid()) ok = false;
         }
-        if (ok) ok = OpenMesh::IO::write_mesh(om, path.string(), OpenMesh::IO::Options::Default, 17);
     }
     if (!ok)
         throw IoError(fmt::format("{}: could not write (non-manifold faces cannot be written as {}; use .ply)",
                                   path.string(), ext.substr(1)));
+    write_atomically(path, [&](const std::filesystem::path& tmp) {
+        bool written = false;
+        {
+            CaptureOpenMeshLog quiet;
+            written = OpenMesh::IO::write_mesh(om, tmp.string(), OpenMesh::IO::Options::Default, 17);
+        }
+        if (!written) throw IoError(fmt::format("{}: could not write", path.string()));
+    });
 }
 
 }  // namespace meshdiff

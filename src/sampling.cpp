@@ -42,6 +42,9 @@ void validate(const SamplingOptions& options)
         throw InvalidArgumentError("SamplingOptions: samples and density are both set; set at most one");
     if (options.samples && *options.samples == 0)
         throw InvalidArgumentError("SamplingOptions: samples must be positive, got 0");
+    if (options.samples && *options.samples > kMaxSamples)
+        throw InvalidArgumentError(fmt::format("SamplingOptions: samples = {} exceeds the limit of {} per surface",
+                                               *options.samples, kMaxSamples));
     if (options.density && !(std::isfinite(*options.density) && *options.density > 0.0))
         throw InvalidArgumentError(
             fmt::format("SamplingOptions: density must be finite and positive, got {}", *options.density));
@@ -55,8 +58,19 @@ std::size_t sample_target(const Mesh& mesh, const SamplingOptions& options, std:
         double area = 0.0;
         for (std::size_t f = 0; f < mesh.n_faces(); ++f)
             if (!degenerate[f]) area += 0.5 * face_cross(mesh, f).norm();
-        return std::size_t(std::llround(*options.density * area));
+        const double target = *options.density * area;
+        if (!(target <= double(kMaxSamples)))
+            throw InvalidArgumentError(
+                fmt::format("SamplingOptions: density {} x area {:.6g} asks for {:.3g} samples, above the limit of {} "
+                            "per surface",
+                            *options.density, area, target, kMaxSamples));
+        return std::size_t(std::llround(target));
     }
+    if (default_target > kMaxSamples)
+        throw InvalidArgumentError(
+            fmt::format("SamplingOptions: the default budget of {} samples exceeds the limit of {} per surface; set "
+                        "samples or density",
+                        default_target, kMaxSamples));
     return default_target;
 }
 

@@ -99,12 +99,16 @@ std::vector<Pair> read_pairs(const std::string& path)
     return pairs;
 }
 
+constexpr std::size_t kMaxShards = 1000000;
+
 std::pair<std::size_t, std::size_t> parse_shard(const std::string& s)
 {
     const auto slash = s.find('/');
     std::size_t i = 0, n = 0;
     try {
         if (slash == std::string::npos) throw std::invalid_argument("no slash");
+        // Digits only: stoul would take "-1" as the largest unsigned number.
+        if (s.find_first_not_of("0123456789/") != std::string::npos) throw std::invalid_argument("sign");
         std::size_t used = 0;
         i = std::stoul(s.substr(0, slash), &used);
         if (used != slash) throw std::invalid_argument("index");
@@ -113,13 +117,17 @@ std::pair<std::size_t, std::size_t> parse_shard(const std::string& s)
     } catch (const std::exception&) {
         throw InvalidArgumentError(fmt::format("--shard: '{}' is not I/N (0 <= I < N)", s));
     }
-    if (n == 0 || i >= n) throw InvalidArgumentError(fmt::format("--shard: '{}' needs 0 <= I < N", s));
+    if (n == 0 || i >= n || n > kMaxShards)
+        throw InvalidArgumentError(fmt::format("--shard: '{}' needs 0 <= I < N <= {}", s, kMaxShards));
     return {i, n};
 }
 
 int run_batch(const BatchArgs& a)
 {
     set_threads(a.threads);
+    refuse_overwriting_inputs("--out", a.out, {a.pairs});
+    if (std::filesystem::is_directory(a.pairs))
+        throw IoError(fmt::format("{}: is a directory, not a pair list", a.pairs));
     const auto [shard, n_shards] = parse_shard(a.shard);
     const CompareOptions options = to_compare_options(a.compare);
     const std::vector<Pair> pairs = read_pairs(a.pairs);
@@ -161,7 +169,7 @@ int run_batch(const BatchArgs& a)
             line = batch_error_json(p.id, p.original, p.processed, error, code);
             ++failed;
         }
-        out << line.dump() << "\n";
+        out << line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
         out.flush();
         if (!out) throw IoError(fmt::format("{}: write failed", a.out));
         if (!a.quiet)

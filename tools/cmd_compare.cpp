@@ -29,6 +29,8 @@ struct CompareArgs
 int run_compare(const CompareArgs& a)
 {
     set_threads(a.threads);
+    for (const auto& [what, out] : {std::pair{"--json", a.json}, {"--distance-map", a.distance_map}})
+        refuse_overwriting_inputs(what, out, {a.original, a.processed});
     CompareOptions options = to_compare_options(a.compare);
     options.vertex_distances = !a.distance_map.empty();
     std::optional<std::pair<double, double>> range;
@@ -60,7 +62,9 @@ void add_compare_command(CLI::App& app, Action& action)
     sub->add_option("--json", args->json, "write the JSON report to FILE, or '-' for stdout");
     sub->add_option("--distance-map", args->distance_map,
                     "write the processed mesh with per-vertex distance to the original and a colour ramp as PLY");
-    sub->add_option("--color-range", args->color_range, "fix the distance colour range: MIN MAX")->expected(2);
+    sub->add_option("--color-range", args->color_range, "fix the distance colour range: MIN MAX")
+        ->expected(2)
+        ->check(in_range(-1e300, 1e300));
     sub->add_option("--threads", args->threads, "worker threads (0: all cores)")->capture_default_str();
     sub->callback([args, &action] { action = [args] { return run_compare(*args); }; });
 }

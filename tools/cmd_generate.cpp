@@ -3,6 +3,7 @@
 #include "meshdiff/io.h"
 #include "meshdiff/report/text.h"
 #include "meshdiff/shapes.h"
+#include "options.h"
 
 #include <fmt/format.h>
 
@@ -164,11 +165,14 @@ void add_generate_command(CLI::App& app, Action& action)
     auto& g = args->given;
     g["--subdivisions"] =
         sub->add_option("--subdivisions", args->subdivisions, "icosphere subdivisions, 0..8 (sphere, ellipsoid)")
+            ->check(in_range(0, 8, true))
             ->capture_default_str();
     g["--frequency"] = sub->add_option("--frequency", args->frequency,
                                        "instead of --subdivisions: geodesic sphere of frequency F, 20 F^2 faces (F = "
-                                       "20: 8000 faces, the paper's size) (sphere, noisy-sphere, ellipsoid)");
-    g["--radius"] = sub->add_option("--radius", args->radius, "sphere radius")->capture_default_str();
+                                       "20: 8000 faces, the paper's size) (sphere, noisy-sphere, ellipsoid)")
+                           ->check(in_range(1, 1024, true));
+    g["--radius"] =
+        sub->add_option("--radius", args->radius, "sphere radius")->check(positive())->capture_default_str();
     g["--noise"] =
         sub->add_option("--noise", args->noise, "noisy-sphere: radial noise, uniform in [-F, F) times the radius")
             ->capture_default_str();
@@ -179,13 +183,17 @@ void add_generate_command(CLI::App& app, Action& action)
     g["--minor"] = sub->add_option("--minor", args->minor, "torus tube radius r")->capture_default_str();
     g["--n"] = sub->add_option("--n", args->n,
                                "grid resolution: torus vertices around the major circle (default 64; the tube gets "
-                               "n r/R), heightfield and plane vertices per side (default 33, 17)");
+                               "n r/R), heightfield and plane vertices per side (default 33, 17); at most 8192")
+                   ->check(in_range(2, 8192, true));
     g["--vertices"] = sub->add_option("--vertices", args->vertices,
-                                      "approximate vertex count of the irregular shapes (default 1024, 1089)");
+                                      "approximate vertex count of the irregular shapes (default 1024, 1089); at "
+                                      "most 2^26")
+                          ->check(in_range(1, double(std::size_t(1) << 26), true));
     g["--amplitude"] = sub->add_option("--amplitude", args->amplitude, "height field amplitude")->capture_default_str();
     g["--spacing"] = sub->add_option("--spacing", args->spacing, "plane grid spacing")->capture_default_str();
-    g["--seed"] =
-        sub->add_option("--seed", args->seed, "random seed of the noisy and irregular shapes")->capture_default_str();
+    g["--seed"] = sub->add_option("--seed", args->seed, "random seed of the noisy and irregular shapes")
+                      ->check(in_range(0, 1.8e19, true))
+                      ->capture_default_str();
     sub->callback([args, &action] { action = [args] { return run_generate(*args); }; });
 }
 

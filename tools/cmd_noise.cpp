@@ -2,6 +2,7 @@
 #include "meshdiff/io.h"
 #include "meshdiff/noise.h"
 #include "meshdiff/report/text.h"
+#include "options.h"
 
 #include <iostream>
 #include <memory>
@@ -23,6 +24,7 @@ struct NoiseArgs
 
 int run_noise(const NoiseArgs& a)
 {
+    refuse_overwriting_inputs("OUT", a.out, {a.in});
     NoiseOptions options = a.options;
     options.unit = parse_enum<NoiseUnit>(a.unit);
     options.direction = parse_enum<NoiseDirection>(a.direction);
@@ -58,7 +60,9 @@ void add_noise_command(CLI::App& app, Action& action)
     sub->add_option("--distribution", args->distribution, "uniform | gaussian")
         ->check(CLI::IsMember(enum_names<NoiseDistribution>()))
         ->capture_default_str();
-    sub->add_option("--seed", o.seed, "random seed (std::mt19937_64)")->capture_default_str();
+    sub->add_option("--seed", o.seed, "random seed (std::mt19937_64)")
+        ->check(in_range(0, 1.8e19, true))
+        ->capture_default_str();
     sub->add_flag("--move-boundary", o.move_boundary, "also move boundary and non-manifold-edge vertices");
     sub->callback([args, &action] { action = [args] { return run_noise(*args); }; });
 }

@@ -33,6 +33,8 @@ struct ProfileArgs
 int run_profile(const ProfileArgs& a)
 {
     set_threads(a.threads);
+    for (const auto& [what, out] : {std::pair{"--json", a.json}, {"--vertex-data", a.vertex_data}})
+        refuse_overwriting_inputs(what, out, {a.mesh});
     if (a.color_range < 0.0) throw InvalidArgumentError("--color-range must be > 0");
     const ProfileOptions options = to_profile_options(a.profile, !a.vertex_data.empty() || a.exact);
     const LoadedMesh loaded = read_mesh(a.mesh);
@@ -75,7 +77,8 @@ void add_profile_command(CLI::App& app, Action& action)
     sub->add_option("--vertex-data", args->vertex_data,
                     "write the normalised mesh with per-vertex H, D_L and an H colour map as PLY");
     sub->add_option("--color-range", args->color_range,
-                    "fix the symmetric H colour range [-R, R] (default: 95th percentile of |H|)");
+                    "fix the symmetric H colour range [-R, R] (default: 95th percentile of |H|)")
+        ->check(in_range(0, 1e300));
     sub->add_flag("--exact", args->exact,
                   "also compute the profile from a per-vertex H stored in the PLY (the true profile of a generated "
                   "surface) and the error of the estimated H");

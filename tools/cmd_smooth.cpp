@@ -43,6 +43,8 @@ int run_smooth(const SmoothArgs& a)
     if (a.profile_every < 0)
         throw InvalidArgumentError(fmt::format("--profile-every must be >= 1 (got {})", a.profile_every));
     if (a.profile_every > 0 && a.json.empty()) throw InvalidArgumentError("--profile-every needs --json FILE");
+    refuse_overwriting_inputs("OUT", a.out, {a.in});
+    refuse_overwriting_inputs("--json", a.json, {a.in, a.out});
     const bool record = !a.json.empty();
     RecordOptions record_options;
     if (record) {
@@ -86,6 +88,7 @@ void add_smooth_command(CLI::App& app, Action& action)
         ->capture_default_str();
     SmoothingOptions& o = args->options;
     sub->add_option("--iterations", o.iterations, "iterations (a Taubin iteration is a lambda and a mu step)")
+        ->check(in_range(0, 1e6, true))
         ->capture_default_str();
     sub->add_option("--lambda", o.lambda, "Laplacian / Taubin step, in (0, 1]")->capture_default_str();
     sub->add_option("--mu", o.mu, "Taubin negative step, < -lambda")->capture_default_str();
@@ -110,9 +113,11 @@ void add_smooth_command(CLI::App& app, Action& action)
                   "do not record the surface distance to the input beside each recorded profile");
     sub->add_option("--distance-samples", args->distance_samples,
                     "samples per direction of the recorded surface distance (default: 10 x the face count, as "
-                    "compare)");
+                    "compare)")
+        ->check(in_range(1, double(kMaxSamples), true));
     sub->add_option("--profile-every", args->profile_every,
-                    "record the roughness profile at iteration 0 and every K iterations (and the last); needs --json");
+                    "record the roughness profile at iteration 0 and every K iterations (and the last); needs --json")
+        ->check(in_range(1, 1e6, true));
     sub->add_option("--json", args->json,
                     "write the recorded profiles (schema meshdiff.smoothing/1) to FILE, or '-' for stdout; "
                     "without --profile-every only the first and last iterations are recorded");

@@ -1,15 +1,56 @@
 #include "options.h"
 
 #include "meshdiff/error.h"
+#include "meshdiff/output_file.h"
 
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 namespace meshdiff::cli {
+
+CLI::Validator in_range(double lo, double hi, bool integer)
+{
+    const std::string range = fmt::format("{} {} to {}", integer ? "a whole number from" : "a number from", lo, hi);
+    return CLI::Validator(
+        [lo, hi, integer, range](std::string& text) -> std::string {
+            std::size_t used = 0;
+            double v = 0.0;
+            try {
+                v = std::stod(text, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used != text.size() || text.empty() || !std::isfinite(v) || v < lo || v > hi ||
+                (integer && v != std::floor(v)))
+                return fmt::format("'{}' is not {}", text, range);
+            return std::string();
+        },
+        range);
+}
+
+CLI::Validator positive(double hi)
+{
+    return CLI::Validator(
+        [hi](std::string& text) -> std::string {
+            std::size_t used = 0;
+            double v = 0.0;
+            try {
+                v = std::stod(text, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used != text.size() || text.empty() || !std::isfinite(v) || !(v > 0.0) || v > hi)
+                return fmt::format("'{}' is not a finite number > 0{}", text,
+                                   hi < 1e300 ? fmt::format(" and <= {}", hi) : "");
+            return std::string();
+        },
+        "a number > 0");
+}
 
 std::vector<int> parse_levels(const std::string& text)
 {
@@ -36,9 +77,15 @@ std::vector<int> parse_levels(const std::string& text)
         } else {
             const int a = to_int(item.substr(0, dash)), b = to_int(item.substr(dash + 1));
             if (b < a) throw InvalidArgumentError(fmt::format("--levels: empty range '{}'", item));
+            if (std::size_t(b - a) >= kMaxLevels)
+                throw InvalidArgumentError(
+                    fmt::format("--levels: the range '{}' has more than the limit of {} levels", item, kMaxLevels));
             for (int l = a; l <= b; ++l) levels.push_back(l);
         }
     }
+    if (levels.size() > kMaxLevels)
+        throw InvalidArgumentError(
+            fmt::format("--levels: '{}' lists {} levels, more than the limit of {}", text, levels.size(), kMaxLevels));
     if (levels.empty() && !text.empty())
         throw InvalidArgumentError(fmt::format("--levels: '{}' is not a list like 1,2,5 or 1-20", text));
     return levels;
@@ -70,15 +117,22 @@ ProfileOptions to_profile_options(const ProfileCliOptions& o, bool keep_vertex_d
 void add_compare_options(CLI::App* sub, CompareCliOptions& o)
 {
     add_profile_options(sub, o.profile);
-    sub->add_option("-k,--k", o.k, "constant k of the roughness distance (eq. 10)")->capture_default_str();
+    sub->add_option("-k,--k", o.k, "constant k of the roughness distance (eq. 10)")
+        ->check(positive())
+        ->capture_default_str();
     sub->add_flag("--no-roughness", o.no_roughness, "skip the roughness half");
     sub->add_flag("--no-distance", o.no_distance, "skip the surface distance half");
-    sub->add_option("-n,--samples", o.samples, "samples per direction (default: 10 x the larger face count, as Metro)");
-    sub->add_option("--density", o.density, "samples per unit area instead of a count");
+    sub->add_option("-n,--samples", o.samples, "samples per direction (default: 10 x the larger face count, as Metro)")
+        ->check(in_range(1, double(kMaxSamples), true));
+    sub->add_option("--density", o.density,
+                    fmt::format("samples per unit area instead of a count (density x area <= {})", kMaxSamples))
+        ->check(positive());
     sub->add_option("--face-sampling", o.face_sampling, "face sampling scheme")
         ->check(CLI::IsMember(enum_names<FaceSampling>()))
         ->capture_default_str();
-    sub->add_option("--seed", o.seed, "seed of Monte Carlo sampling")->capture_default_str();
+    sub->add_option("--seed", o.seed, "seed of Monte Carlo sampling")
+        ->check(in_range(0, 1.8e19, true))
+        ->capture_default_str();
     sub->add_flag("--no-vertex-samples", o.no_vertex_samples, "do not sample vertices");
     sub->add_flag("--no-edge-samples", o.no_edge_samples, "do not sample edges");
     sub->add_flag("--no-face-samples", o.no_face_samples, "do not sample faces");
@@ -106,20 +160,36 @@ CompareOptions to_compare_options(const CompareCliOptions& o)
 
 void set_threads(int threads)
 {
-    if (threads < 0) throw InvalidArgumentError(fmt::format("--threads: {} must be >= 0 (0: all cores)", threads));
+    if (threads < 0 || threads > kMaxThreads)
+        throw InvalidArgumentError(fmt::format("--threads: {} is outside 0..{} (0: all cores)", threads, kMaxThreads));
     if (threads > 0) omp_set_num_threads(threads);
+}
+
+void refuse_overwriting_inputs(const std::string& what, const std::string& output,
+                               const std::vector<std::string>& inputs)
+{
+    if (output.empty() || output == "-") return;
+    for (const auto& in : inputs)
+        if (same_file(output, in))
+            throw InvalidArgumentError(fmt::format(
+                "{}: '{}' is the input file '{}'; meshdiff does not overwrite its inputs", what, output, in));
 }
 
 void write_json(const std::string& target, const nlohmann::json& j)
 {
+    // Bytes that are not UTF-8 (in a file name, say) become U+FFFD instead of an exception.
+    const std::string text = j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
     if (target == "-") {
-        std::cout << j.dump(2) << "\n";
+        std::cout << text;
         return;
     }
-    std::ofstream out(target);
-    if (!out) throw IoError(fmt::format("{}: cannot open for writing", target));
-    out << j.dump(2) << "\n";
-    if (!out) throw IoError(fmt::format("{}: write failed", target));
+    write_atomically(target, [&](const std::filesystem::path& tmp) {
+        std::ofstream out(tmp);
+        if (!out) throw IoError(fmt::format("{}: cannot open for writing", target));
+        out << text;
+        out.close();
+        if (!out) throw IoError(fmt::format("{}: write failed", target));
+    });
 }
 
 }  // namespace meshdiff::cli

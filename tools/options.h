@@ -47,10 +47,27 @@ struct CompareCliOptions
 void add_compare_options(CLI::App* sub, CompareCliOptions& o);
 CompareOptions to_compare_options(const CompareCliOptions& o);
 
+//! A validator for a numeric option: the value must parse as a finite number
+//! in [lo, hi] (and be a whole number if \p integer); the message states the range.
+CLI::Validator in_range(double lo, double hi, bool integer = false);
+//! A validator: a finite number > 0 (up to \p hi).
+CLI::Validator positive(double hi = 1e300);
+
+//! The largest thread count accepted by --threads.
+constexpr int kMaxThreads = 1024;
+//! The most levels a --levels list may hold (each level keeps a value per vertex).
+constexpr std::size_t kMaxLevels = 200;
+
 //! Sets the OpenMP thread count when \p threads > 0.
 void set_threads(int threads);
 
-//! Writes \p j to FILE, or to stdout for "-".
+//! Refuses to write the output \p output of option \p what (e.g. "--json")
+//! onto one of \p inputs: the same file, also through links.
+//! \throw InvalidArgumentError naming both.
+void refuse_overwriting_inputs(const std::string& what, const std::string& output,
+                               const std::vector<std::string>& inputs);
+
+//! Writes \p j to FILE (atomically: output_file.h), or to stdout for "-".
 //! \throw IoError if the file cannot be written.
 void write_json(const std::string& target, const nlohmann::json& j);
 

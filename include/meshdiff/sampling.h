@@ -89,8 +89,13 @@ struct SamplingOptions
     std::uint64_t seed = 1;  //!< seed of the MonteCarlo scheme (ignored otherwise)
 };
 
+//! The most samples of one surface meshdiff takes (about 10 GB of samples and
+//! distances): an explicit target, a density times the area, or the default
+//! budget above it is an InvalidArgumentError, not a run that exhausts memory.
+constexpr std::size_t kMaxSamples = 250'000'000;
+
 //! Throws InvalidArgumentError naming the field if: no kind is enabled;
-//! `samples` is 0; `density` is not finite and > 0; both `samples` and
+//! `samples` is 0 or above kMaxSamples; `density` is not finite and > 0; both `samples` and
 //! `density` are set.
 void validate(const SamplingOptions& options);
 

@@ -1,0 +1,27 @@
+//! \file output_file.h
+//! \brief Writing output files so that nothing is torn or destroyed: every
+//! file meshdiff writes goes to a temporary file in the same folder, which is
+//! renamed onto the final name only once it is complete. A run that is killed
+//! or fails leaves either the old file or the complete new one (rename is
+//! atomic within a file system on POSIX).
+#pragma once
+
+#include <filesystem>
+#include <functional>
+
+namespace meshdiff {
+
+//! Calls \p write with a temporary path in the folder of \p path (named
+//! `.<stem>.meshdiff-<pid>-<n><extension>`, so a writer that picks the format
+//! by extension sees the right one), then renames it onto \p path. If \p write
+//! throws, or the rename fails, the temporary file is removed and \p path is
+//! left as it was.
+//! \throw IoError if the rename fails; whatever \p write throws.
+void write_atomically(const std::filesystem::path& path,
+                      const std::function<void(const std::filesystem::path& temporary)>& write);
+
+//! True if \p a and \p b are the same existing file, also through symbolic or
+//! hard links (std::filesystem::equivalent); false if either does not exist.
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
+
+}  // namespace meshdiff

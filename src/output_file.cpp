@@ -1,0 +1,51 @@
+#include "meshdiff/output_file.h"
+
+#include "meshdiff/error.h"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <system_error>
+
+namespace meshdiff {
+
+namespace {
+
+std::filesystem::path temporary_for(const std::filesystem::path& path)
+{
+    static std::atomic<unsigned> counter{0};
+    const std::string name =
+        fmt::format(".{}.meshdiff-{}-{}{}", path.stem().string(), ::getpid(), counter++, path.extension().string());
+    return path.has_parent_path() ? path.parent_path() / name : std::filesystem::path(name);
+}
+
+}  // namespace
+
+void write_atomically(const std::filesystem::path& path,
+                      const std::function<void(const std::filesystem::path& temporary)>& write)
+{
+    const std::filesystem::path tmp = temporary_for(path);
+    std::error_code ignored;
+    try {
+        write(tmp);
+    } catch (...) {
+        std::filesystem::remove(tmp, ignored);
+        throw;
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ignored);
+        throw IoError(fmt::format("{}: cannot write ({})", path.string(), ec.message()));
+    }
+}
+
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b)
+{
+    std::error_code ec;
+    const bool same = std::filesystem::equivalent(a, b, ec);
+    return !ec && same;
+}
+
+}  // namespace meshdiff
