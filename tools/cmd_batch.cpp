@@ -5,13 +5,21 @@
 #include "meshdiff/io.h"
 #include "meshdiff/report/json.h"
 #include "options.h"
+#include "subprocess.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -28,7 +36,12 @@ struct BatchArgs
     CompareCliOptions compare;
     int threads = 0;
     bool quiet = false;
+    double pair_timeout = 0.0;  // seconds; 0: none
+    CLI::App* app = nullptr;    // the parsed subcommand (its options are passed on to each pair)
 };
+
+// The exit_code of a pair that ran out of time (as coreutils' timeout).
+constexpr int kPairTimeout = 124;
 
 struct Pair
 {
@@ -80,8 +93,11 @@ std::vector<Pair> read_pairs(const std::string& path)
     std::vector<Pair> pairs;
     std::string line;
     std::size_t lineno = 0;
+    std::map<std::string, std::size_t> id_line;
     while (std::getline(in, line)) {
         ++lineno;
+        // A UTF-8 byte-order mark (spreadsheet exports) is not part of the first field.
+        if (lineno == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
         const auto fields = split_csv(line);
         if (fields.size() == 1 && fields[0].empty()) continue;
         if (!fields[0].empty() && fields[0][0] == '#') continue;
@@ -94,6 +110,11 @@ std::vector<Pair> read_pairs(const std::string& path)
         p.original = resolve(fields[0]);
         p.processed = resolve(fields[1]);
         p.id = fields.size() > 2 && !fields[2].empty() ? fields[2] : fields[0] + " -> " + fields[1];
+        // Resume finds pairs by id: two pairs with one id would be one pair.
+        const auto [it, fresh] = id_line.emplace(p.id, lineno);
+        if (!fresh)
+            throw InvalidArgumentError(
+                fmt::format("{}:{}: the id '{}' is already used on line {}", path, lineno, p.id, it->second));
         pairs.push_back(std::move(p));
     }
     return pairs;
@@ -122,6 +143,87 @@ std::pair<std::size_t, std::size_t> parse_shard(const std::string& s)
     return {i, n};
 }
 
+// The command line of one pair's child process: `meshdiff compare ORIGINAL
+// PROCESSED --json -` with the batch's comparison options as they were given.
+std::vector<std::string> compare_args(const BatchArgs& a, const Pair& p)
+{
+    std::vector<std::string> args{"meshdiff", "compare", p.original, p.processed};
+    static const std::set<std::string> batch_only = {"out", "shard", "quiet", "pair-timeout", "help"};
+    for (const CLI::Option* o : a.app->get_options()) {
+        if (o->count() == 0 || o->get_lnames().empty() || batch_only.count(o->get_lnames()[0])) continue;
+        const std::string name = "--" + o->get_lnames()[0];
+        if (o->get_type_size() == 0) {
+            args.push_back(name);  // a flag
+            continue;
+        }
+        for (const auto& value : o->results()) {
+            args.push_back(name);
+            args.push_back(value);
+        }
+    }
+    args.insert(args.end(), {"--json", "-"});
+    return args;
+}
+
+// Compares one pair in a child process, so that a crash, an abort or a hang
+// (beyond --pair-timeout) of this pair becomes its error line.
+nlohmann::json compare_pair(const BatchArgs& a, const std::string& self, const Pair& p, int& code, std::string& error)
+{
+    const ChildResult r = run_child(self, compare_args(a, p), a.pair_timeout);
+    if (r.timed_out) {
+        code = kPairTimeout;
+        error = fmt::format("timed out after {} s (--pair-timeout)", a.pair_timeout);
+    } else if (r.signal != 0) {
+        code = kInternal;
+        error = fmt::format("the comparison was killed by signal {} ({})", r.signal, strsignal(r.signal));
+    } else if (r.exit_code != kOk) {
+        code = r.exit_code;
+        error = r.err;
+        if (error.rfind("meshdiff: ", 0) == 0) error = error.substr(10);
+        while (!error.empty() && (error.back() == '\n' || error.back() == '\r')) error.pop_back();
+    } else {
+        auto result = nlohmann::json::parse(r.out, nullptr, false);
+        if (!result.is_discarded()) {
+            code = kOk;
+            return batch_ok_json(p.id, p.original, p.processed, std::move(result));
+        }
+        code = kInternal;
+        error = "the comparison wrote no readable JSON";
+    }
+    return batch_error_json(p.id, p.original, p.processed, error, code);
+}
+
+// The ids recorded as ok in an existing output. A last line without its
+// newline is a record torn by a killed run: it is cut off the file (the pair
+// runs again). Any other line that is not a batch record is an error.
+std::set<std::string> finished_ids(int fd, const std::string& path)
+{
+    std::string text;
+    char buf[1 << 16];
+    ssize_t got = 0;
+    while ((got = pread(fd, buf, sizeof buf, off_t(text.size()))) > 0) text.append(buf, std::size_t(got));
+    if (!text.empty() && text.back() != '\n') {
+        const auto keep = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+        if (ftruncate(fd, off_t(keep)) != 0) throw IoError(fmt::format("{}: cannot cut a torn last line", path));
+        std::cerr << fmt::format("batch: {}: dropped a torn last line (a killed run's record)\n", path);
+        text.resize(keep);
+    }
+    std::set<std::string> done;
+    std::size_t lineno = 0, start = 0;
+    while (start < text.size()) {
+        const auto end = text.find('\n', start);
+        const std::string line = text.substr(start, end - start);
+        start = end + 1;
+        ++lineno;
+        const auto j = nlohmann::json::parse(line, nullptr, false);
+        if (j.is_discarded() || !j.is_object() || !j.contains("id") || !j["id"].is_string() || !j.contains("status"))
+            throw IoError(fmt::format("{}:{}: not a meshdiff batch record; --out must be a file that only batch writes",
+                                      path, lineno));
+        if (j["status"] == "ok") done.insert(j["id"].get<std::string>());
+    }
+    return done;
+}
+
 int run_batch(const BatchArgs& a)
 {
     set_threads(a.threads);
@@ -129,22 +231,22 @@ int run_batch(const BatchArgs& a)
     if (std::filesystem::is_directory(a.pairs))
         throw IoError(fmt::format("{}: is a directory, not a pair list", a.pairs));
     const auto [shard, n_shards] = parse_shard(a.shard);
-    const CompareOptions options = to_compare_options(a.compare);
+    to_compare_options(a.compare);  // every option checked here, before any pair runs
     const std::vector<Pair> pairs = read_pairs(a.pairs);
+    const std::string self = self_executable();
 
-    // Resume: ids already recorded as done are skipped; errors are retried.
-    std::set<std::string> done;
+    // One writer per output: a second batch on the same --out is refused.
+    const int fd = open(a.out.c_str(), O_RDWR | O_APPEND | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) throw IoError(fmt::format("{}: cannot open for appending: {}", a.out, std::strerror(errno)));
+    struct Closer
     {
-        std::ifstream prev(a.out);
-        std::string line;
-        while (prev && std::getline(prev, line)) {
-            const auto j = nlohmann::json::parse(line, nullptr, false);
-            if (j.is_discarded() || !j.is_object()) continue;  // a torn last line from a killed run
-            if (j.value("status", "") == "ok" && j.contains("id")) done.insert(j["id"].get<std::string>());
-        }
-    }
-    std::ofstream out(a.out, std::ios::app);
-    if (!out) throw IoError(fmt::format("{}: cannot open for appending", a.out));
+        int fd;
+        ~Closer() { close(fd); }
+    } closer{fd};
+    if (flock(fd, LOCK_EX | LOCK_NB) != 0)
+        throw IoError(fmt::format("{}: another meshdiff batch is writing this file (it is locked)", a.out));
+    // Resume: ids already recorded as ok are skipped; errors are retried.
+    const std::set<std::string> done = finished_ids(fd, a.out);
 
     std::size_t ok = 0, failed = 0, skipped = 0;
     for (std::size_t k = 0; k < pairs.size(); ++k) {
@@ -154,24 +256,14 @@ int run_batch(const BatchArgs& a)
             ++skipped;
             continue;
         }
-        nlohmann::json line;
         int code = kOk;
         std::string error;
-        try {
-            const LoadedMesh a_mesh = read_mesh(p.original);
-            const LoadedMesh b_mesh = read_mesh(p.processed);
-            line = batch_ok_json(p.id, p.original, p.processed, compare_meshes(a_mesh, b_mesh, options));
-            ++ok;
-        } catch (const std::exception& e) {
-            const Failure f = failure_of(e);
-            code = f.code;
-            error = f.message;
-            line = batch_error_json(p.id, p.original, p.processed, error, code);
-            ++failed;
-        }
-        out << line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
-        out.flush();
-        if (!out) throw IoError(fmt::format("{}: write failed", a.out));
+        const nlohmann::json line = compare_pair(a, self, p, code, error);
+        (code == kOk ? ok : failed) += 1;
+        // One write of the whole record with its newline: a kill leaves a whole line or a torn last one.
+        const std::string text = line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+        if (write(fd, text.data(), text.size()) != ssize_t(text.size()))
+            throw IoError(fmt::format("{}: write failed: {}", a.out, std::strerror(errno)));
         if (!a.quiet)
             std::cerr << fmt::format("[{}/{}] {} {}{}\n", k + 1, pairs.size(), code == kOk ? "ok   " : "ERROR", p.id,
                                      code == kOk ? "" : ": " + error);
@@ -200,6 +292,12 @@ void add_batch_command(CLI::App& app, Action& action)
     add_compare_options(sub, args->compare);
     sub->add_option("--threads", args->threads, "worker threads per comparison (0: all cores)");
     sub->add_flag("-q,--quiet", args->quiet, "no per-pair progress on stderr");
+    sub->add_option("--pair-timeout", args->pair_timeout,
+                    "seconds one pair may take before it is stopped and recorded as an error (exit_code 124); 0: "
+                    "no limit")
+        ->check(in_range(0, 1e7))
+        ->capture_default_str();
+    args->app = sub;
     sub->callback([args, &action] { action = [args] { return run_batch(*args); }; });
 }
 

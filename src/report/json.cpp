@@ -247,8 +247,14 @@ nlohmann::json smoothing_json(const SmoothingRecord& r, const SmoothingOptions& 
 nlohmann::json batch_ok_json(const std::string& id, const std::string& original, const std::string& processed,
                              const Comparison& c)
 {
+    return batch_ok_json(id, original, processed, comparison_json(c));
+}
+
+nlohmann::json batch_ok_json(const std::string& id, const std::string& original, const std::string& processed,
+                             nlohmann::json result)
+{
     return {
-        {"id", id}, {"original", original}, {"processed", processed}, {"result", comparison_json(c)}, {"status", "ok"}};
+        {"id", id}, {"original", original}, {"processed", processed}, {"result", std::move(result)}, {"status", "ok"}};
 }
 
 nlohmann::json batch_error_json(const std::string& id, const std::string& original, const std::string& processed,

@@ -56,6 +56,10 @@ nlohmann::json smoothing_json(const SmoothingRecord& record, const SmoothingOpti
 //! One line of `meshdiff batch` for a pair that was compared.
 nlohmann::json batch_ok_json(const std::string& id, const std::string& original, const std::string& processed,
                              const Comparison& c);
+//! The same with the comparison already as its "meshdiff.compare/1" object
+//! (from a child process).
+nlohmann::json batch_ok_json(const std::string& id, const std::string& original, const std::string& processed,
+                             nlohmann::json result);
 //! One line of `meshdiff batch` for a pair that failed with \p error (exit
 //! code \p exit_code of the tool).
 nlohmann::json batch_error_json(const std::string& id, const std::string& original, const std::string& processed,

@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# batch for thousands of pairs: a crash or a hang of one pair is that pair's
+# error line; torn and foreign lines in --out; one writer per --out; the pair
+# list's byte-order mark and duplicate ids.
+# Usage: cli_batch_test.sh MESHDIFF_BINARY DATA_DIR
+bin="$1"
+data=$(cd "$2" && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+. "$(dirname "$0")/cli_lib.sh"
+
+h="$data/hemisphere.ply"
+b3="$data/bunny_res3.ply"
+b4="$data/bunny_res4_ascii.ply"
+"$bin" generate sphere "$tmp/slow.ply" --subdivisions 8 > /dev/null  # 655,362 vertices: many seconds
+lines() { wc -l < "$1" | tr -d ' '; }
+valid_records() { python3 -c "import json,sys; [json.loads(l) for l in open(sys.argv[1])]" "$1"; }
+
+# --- a pair that runs out of time is an error line (exit_code 124); the next pair still runs
+printf 'original,processed,id\n%s,%s,slow\n%s,%s,fast\n' "$tmp/slow.ply" "$tmp/slow.ply" "$b3" "$b4" > "$tmp/p1.csv"
+expect 6 batch "$tmp/p1.csv" --out "$tmp/r1.jsonl" --levels 1 -n 2000 --pair-timeout 3 -q
+grep '"id":"slow"' "$tmp/r1.jsonl" | grep -q '"exit_code":124' && pass || fail "timeout line: $(cat "$tmp/r1.jsonl")"
+grep '"id":"fast"' "$tmp/r1.jsonl" | grep -q '"status":"ok"' && pass || fail "the pair after a timeout did not run"
+
+# --- a pair whose comparison crashes (SIGABRT sent to it) is an error line; the batch goes on
+"$bin" batch "$tmp/p1.csv" --out "$tmp/r2.jsonl" --levels 1-20 -q > /dev/null 2>&1 &
+batch_pid=$!
+child=""
+for _ in $(seq 100); do
+    child=$(pgrep -f "compare $tmp/slow.ply" | head -1)
+    [ -n "$child" ] && break
+    sleep 0.05
+done
+[ -n "$child" ] && kill -ABRT "$child"
+wait "$batch_pid"
+code=$?
+[ "$code" -eq 6 ] && pass || fail "batch with a crashed pair exited $code, want 6"
+grep '"id":"slow"' "$tmp/r2.jsonl" | grep -q 'killed by signal 6' && pass || fail "crash line: $(cat "$tmp/r2.jsonl")"
+grep '"id":"fast"' "$tmp/r2.jsonl" | grep -q '"status":"ok"' && pass || fail "the pair after a crash did not run"
+
+# --- a torn last line (a killed run) is dropped on resume; the pair runs again
+printf 'original,processed,id\n%s,%s,a\n%s,%s,b\n' "$b3" "$b4" "$h" "$h" > "$tmp/p2.csv"
+expect 0 batch "$tmp/p2.csv" --out "$tmp/r3.jsonl" --levels 1 -n 2000 -q
+head -1 "$tmp/r3.jsonl" > "$tmp/r4.jsonl"
+head -c 100 < <(sed -n 2p "$tmp/r3.jsonl") >> "$tmp/r4.jsonl"  # record b torn after 100 bytes
+expect 0 batch "$tmp/p2.csv" --out "$tmp/r4.jsonl" --levels 1 -n 2000
+grep -q "dropped a torn last line" "$tmp/stderr" && pass || fail "no word about the torn line: $(cat "$tmp/stderr")"
+grep -q "1 ok, 0 failed, 1 already done" "$tmp/stderr" && pass || fail "resume after a torn line: $(cat "$tmp/stderr")"
+[ "$(lines "$tmp/r4.jsonl")" -eq 2 ] && valid_records "$tmp/r4.jsonl" && pass || fail "records after the resume"
+
+# --- a line that is not a batch record: a clear error, the file untouched
+{ head -1 "$tmp/r3.jsonl"; echo "hello"; } > "$tmp/r5.jsonl"
+cp "$tmp/r5.jsonl" "$tmp/r5.before"
+expect 3 batch "$tmp/p2.csv" --out "$tmp/r5.jsonl" --levels 1 -n 2000 -q
+grep -q "r5.jsonl:2: not a meshdiff batch record" "$tmp/stderr" && pass || fail "foreign line: $(cat "$tmp/stderr")"
+cmp -s "$tmp/r5.jsonl" "$tmp/r5.before" && pass || fail "a refused run changed --out"
+
+# --- one writer per --out
+if command -v flock > /dev/null; then
+    touch "$tmp/r6.jsonl"
+    flock "$tmp/r6.jsonl" "$bin" batch "$tmp/p2.csv" --out "$tmp/r6.jsonl" -q > /dev/null 2> "$tmp/stderr"
+    code=$?
+    [ "$code" -eq 3 ] && grep -q "another meshdiff batch is writing" "$tmp/stderr" && pass ||
+        fail "a second writer: exit $code, $(cat "$tmp/stderr")"
+fi
+
+# --- the pair list: a UTF-8 byte-order mark is ignored; duplicate ids are an error
+printf '\357\273\277original,processed,id\n%s,%s,x\n' "$b3" "$b4" > "$tmp/bom.csv"
+expect 0 batch "$tmp/bom.csv" --out "$tmp/r7.jsonl" --levels 1 -n 2000 -q
+[ "$(lines "$tmp/r7.jsonl")" -eq 1 ] && pass || fail "BOM header was taken for a pair"
+printf '%s,%s,same\n%s,%s,same\n' "$b3" "$b4" "$h" "$h" > "$tmp/dup.csv"
+expect 2 batch "$tmp/dup.csv" --out "$tmp/r8.jsonl" -q
+grep -q "dup.csv:2: the id 'same' is already used on line 1" "$tmp/stderr" && pass || fail "duplicate ids: $(cat "$tmp/stderr")"
+
+# --- a batch killed outright and run again finishes every pair once
+printf 'original,processed,id\n' > "$tmp/p3.csv"
+for i in 1 2 3 4 5 6; do printf '%s,%s,p%s\n' "$b3" "$b4" "$i" >> "$tmp/p3.csv"; done
+"$bin" batch "$tmp/p3.csv" --out "$tmp/r9.jsonl" --levels 1-20 -q > /dev/null 2>&1 &
+batch_pid=$!
+sleep 0.5
+kill -9 "$batch_pid"
+wait "$batch_pid" 2> /dev/null
+expect 0 batch "$tmp/p3.csv" --out "$tmp/r9.jsonl" --levels 1-20 -q
+[ "$(grep -c '"status":"ok"' "$tmp/r9.jsonl")" -eq 6 ] && valid_records "$tmp/r9.jsonl" && pass ||
+    fail "after kill + resume: $(lines "$tmp/r9.jsonl") lines"
+
+finish
