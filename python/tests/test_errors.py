@@ -106,8 +106,8 @@ def test_unusable_mesh_file_raises_value_error(tmp_path):
     no_faces.write_text("OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n")
     nan = tmp_path / "nan.off"
     nan.write_text("OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n")
-    for path in (no_faces, nan):
-        with pytest.raises((ValueError, OSError)):
+    for path, message in ((no_faces, "no faces"), (nan, "non-finite")):
+        with pytest.raises(ValueError, match=message):
             meshdiff.read_mesh(path)
 
 
