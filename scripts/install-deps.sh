@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # Install the Debian packages meshdiff needs to build, test and run.
 # Usage: scripts/install-deps.sh            (build + test dependencies)
-#        scripts/install-deps.sh --reference (also MeshLab, gnuplot, OpenMesh tools for reference/)
+#        scripts/install-deps.sh --reference (also MeshLab, gnuplot, hyperfine for reference/)
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config
       libopenmesh-dev libeigen3-dev libfmt-dev
       libgtest-dev nlohmann-json3-dev libcli11-dev
-      clang-format python3)
+      clang-format python3
+      # The Python module (python/) and its tests, for Debian's /usr/bin/python3;
+      # OpenMesh's command-line decimater for examples/evaluate_decimation.py.
+      pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib libopenmesh-apps)
 if [[ "${1:-}" == "--reference" ]]; then
-    pkgs+=(meshlab xvfb xauth gnuplot-nox libopenmesh-apps hyperfine)
+    pkgs+=(meshlab xvfb xauth gnuplot-nox hyperfine)
 fi
 SUDO=""
 if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi

@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # The whole test suite, as CI runs it: installs the Debian dependencies, then
-#  1. a Release build with warnings as errors, and ctest; installs it into a
-#     temporary prefix and builds tests/consumer against it;
-#  2. a Debug build with AddressSanitizer + UndefinedBehaviorSanitizer, and ctest;
-#  3. the clang-format check of include/ src/ tools/ tests/ bench/ examples/.
+#  1. a Release build with warnings as errors (with the Python module), and
+#     ctest; installs it into a temporary prefix and builds tests/consumer
+#     against it;
+#  2. the Python module: pytest (python/tests) with the interpreter CMake chose,
+#     and an import of the module installed by cmake --install;
+#  3. a Debug build with AddressSanitizer + UndefinedBehaviorSanitizer, and ctest;
+#  4. the clang-format check of include/ src/ tools/ tests/ bench/ examples/ python/.
 # Usage: scripts/test.sh            (from anywhere; builds into build/ and build-asan/)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,23 +15,51 @@ jobs=${JOBS:-2}
 scripts/install-deps.sh
 
 echo "== Release build + tests"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DMESHDIFF_WARNINGS_AS_ERRORS=ON
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DMESHDIFF_WARNINGS_AS_ERRORS=ON -DMESHDIFF_BUILD_PYTHON=ON
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure -j"$jobs"
 
 echo "== install and build a consumer against the installed package"
 tests/consumer_test.sh build
 
+echo "== Python module + pytest"
+# The interpreter CMake chose: one that imports numpy (/usr/bin/python3 on
+# Debian; the python3 first on PATH may be another one without numpy).
+py=$(sed -n 's/^MESHDIFF_PYTHON_EXECUTABLE:[A-Z]*=//p' build/CMakeCache.txt)
+[[ -x "$py" ]] || { echo "no Python interpreter in build/CMakeCache.txt (MESHDIFF_PYTHON_EXECUTABLE)" >&2; exit 1; }
+echo "python: $py"
+# pytest exits 5 when it collects no test: a failure here, like any non-zero code.
+status=0
+MESHDIFF_BUILD_DIR="$PWD/build" "$py" -m pytest python/tests -q -p no:cacheprovider || status=$?
+if ((status == 5)); then
+    echo "pytest collected no tests (exit 5)" >&2
+    exit 1
+elif ((status != 0)); then
+    echo "pytest failed (exit $status)" >&2
+    exit 1
+fi
+# cmake --install puts the module where that interpreter imports it from the prefix.
+pyprefix=$(mktemp -d "${TMPDIR:-/tmp}/meshdiff-python.XXXXXX")
+cmake --install build --prefix "$pyprefix" --component python > /dev/null
+pydir=$(sed -n 's/^MESHDIFF_PYTHON_INSTALL_DIR:[A-Z]*=//p' build/CMakeCache.txt)
+(cd / && PYTHONPATH="$pyprefix/$pydir" "$py" -c "import meshdiff, sys; \
+    assert meshdiff.__file__.startswith('$pyprefix'), meshdiff.__file__; print('installed:', meshdiff.__file__)")
+rm -rf "$pyprefix"
+
 echo "== Debug build with AddressSanitizer + UndefinedBehaviorSanitizer + tests"
 # -O1 keeps Eigen usable under the sanitizers; asserts stay on (no NDEBUG).
+# No Python module here: an ASan-instrumented extension needs the ASan runtime
+# preloaded into the (uninstrumented) interpreter, and reports the
+# interpreter's own allocations; the C++ it binds is tested here through ctest.
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O1" \
-      -DMESHDIFF_SANITIZE=address,undefined -DMESHDIFF_BUILD_BENCH=OFF -DMESHDIFF_WARNINGS_AS_ERRORS=ON
+      -DMESHDIFF_SANITIZE=address,undefined -DMESHDIFF_BUILD_BENCH=OFF -DMESHDIFF_WARNINGS_AS_ERRORS=ON \
+      -DMESHDIFF_BUILD_PYTHON=OFF
 cmake --build build-asan -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-asan --output-on-failure -j"$jobs"
 
 echo "== clang-format"
-find include src tools tests bench examples \( -name '*.h' -o -name '*.cpp' \) -print0 |
+find include src tools tests bench examples python \( -name '*.h' -o -name '*.cpp' \) -print0 |
     xargs -0 clang-format --dry-run --Werror
 
 echo "== all tests passed"

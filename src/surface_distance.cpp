@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace meshdiff {
 
@@ -85,15 +86,23 @@ DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<do
     return s;
 }
 
-DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options)
+namespace {
+
+// The samples of \p from and their distances to \p to.
+SampledDirection sampled_direction(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options)
 {
-    const SurfaceSamples samples = sample_surface(from, options);
-    if (samples.size() == 0)
+    SampledDirection d;
+    d.samples = sample_surface(from, options);
+    if (d.samples.size() == 0)
         throw InvalidArgumentError("SamplingOptions: the enabled sample kinds give no sample on this mesh");
-    return distance_stats(samples, to.distances(samples.points));
+    d.distances = to.distances(d.samples.points);
+    return d;
 }
 
-SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances)
+// surface_distance() and surface_distance_samples(): both directions, keeping
+// the samples in \p forward and \p backward when they are given.
+SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
+                                SampledDirection* forward, SampledDirection* backward)
 {
     validate(options);
     validate(a, "surface_distance: mesh A");
@@ -104,16 +113,40 @@ SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOpt
     SurfaceDistance r;
     {
         const ClosestPointIndex index_b(b);
-        r.forward = one_sided_distance(a, index_b, opt);
+        SampledDirection d = sampled_direction(a, index_b, opt);
+        r.forward = distance_stats(d.samples, d.distances);
+        if (forward) *forward = std::move(d);
     }
     {
         const ClosestPointIndex index_a(a);
-        r.backward = one_sided_distance(b, index_a, opt);
+        SampledDirection d = sampled_direction(b, index_a, opt);
+        r.backward = distance_stats(d.samples, d.distances);
+        if (backward) *backward = std::move(d);
         if (b_vertex_distances) r.b_vertex_distance = vertex_distances(b, index_a);
     }
     r.hausdorff = std::max(r.forward.max, r.backward.max);
     r.diagonal = bounding_box(a).diagonal();
     r.metro_diagonal = metro_diagonal(a, b);
+    return r;
+}
+
+}  // namespace
+
+DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options)
+{
+    const SampledDirection d = sampled_direction(from, to, options);
+    return distance_stats(d.samples, d.distances);
+}
+
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances)
+{
+    return both_directions(a, b, options, b_vertex_distances, nullptr, nullptr);
+}
+
+SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options)
+{
+    SampledSurfaceDistance r;
+    r.distance = both_directions(a, b, options, false, &r.forward, &r.backward);
     return r;
 }
 

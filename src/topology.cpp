@@ -240,9 +240,12 @@ TopologyReport topology_report(const Mesh& mesh)
             other.clear();
             for (auto it = vf.begin(v); it != vf.end(v); ++it) {
                 const Face& t = mesh.faces[*it];
+                const std::size_t start = other.size();
                 for (auto w : t)
                     if (std::size_t(w) != v) other.push_back(std::uint32_t(w));
-                if (other.size() % 2) other.push_back(std::uint32_t(v));  // repeated-vertex face
+                // A face with a repeated corner: v stands for the missing ones
+                // (two of them if all three corners are v).
+                while (other.size() < start + 2) other.push_back(std::uint32_t(v));
             }
             fan.reset(deg);
             std::size_t fans = deg;

@@ -98,6 +98,21 @@ TEST(CompareJson, HasTheSchemaKeysAndHausdorffIsTheLargerMaximum)
     EXPECT_TRUE(all_finite(j));
 }
 
+TEST(CompareJson, SurfaceDistanceObjectIsSurfaceDistanceJson)
+{
+    const LoadedMesh a = read_mesh(data("bunny_res3.ply"));
+    const LoadedMesh b = read_mesh(data("bunny_res4_ascii.ply"));
+    CompareOptions o;
+    o.roughness = false;
+    o.sampling.samples = 8000;
+    const Comparison c = compare_meshes(a, b, o);
+    EXPECT_EQ(comparison_json(c)["surface_distance"], surface_distance_json(*c.distance, o.sampling));
+    const auto j = surface_distance_json(surface_distance(a.mesh, b.mesh, o.sampling), o.sampling);
+    EXPECT_EQ(j, comparison_json(c)["surface_distance"]);
+    EXPECT_EQ(j["sampling"]["samples_requested"], 8000);
+    EXPECT_TRUE(j["cutoff"].is_null());
+}
+
 TEST(CompareJson, EachHalfCanBeSwitchedOff)
 {
     const LoadedMesh a = read_mesh(data("hemisphere.ply"));

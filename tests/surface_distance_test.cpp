@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -294,6 +295,55 @@ TEST(SurfaceDistance, VertexDistancesMatchBruteForce)
     ASSERT_EQ(d.size(), a.n_vertices());
     for (std::size_t i = 0; i < a.n_vertices(); i += 7)
         EXPECT_NEAR(d[i], closest_point_brute_force(b, a.points[i]).distance, 1e-12 * d[i] + 1e-300);
+}
+
+TEST(SurfaceDistance, SamplesGiveTheSameStatisticsBitForBit)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    for (const FaceSampling scheme : {FaceSampling::SimilarTriangles, FaceSampling::MonteCarlo}) {
+        SamplingOptions o;
+        o.face_scheme = scheme;
+        o.seed = 5;
+        const SurfaceDistance plain = surface_distance(a, b, o);
+        const SampledSurfaceDistance kept = surface_distance_samples(a, b, o);
+        expect_identical(plain.forward, kept.distance.forward);
+        expect_identical(plain.backward, kept.distance.backward);
+        EXPECT_TRUE(same_bits(plain.hausdorff, kept.distance.hausdorff));
+        EXPECT_TRUE(same_bits(plain.diagonal, kept.distance.diagonal));
+        EXPECT_TRUE(same_bits(plain.metro_diagonal, kept.distance.metro_diagonal));
+        EXPECT_TRUE(kept.distance.b_vertex_distance.empty());
+        // The kept samples and distances are those the statistics came from.
+        for (const auto* d : {&kept.forward, &kept.backward}) {
+            ASSERT_EQ(d->distances.size(), d->samples.size());
+            ASSERT_EQ(d->samples.kind.size(), d->samples.size());
+        }
+        EXPECT_EQ(kept.forward.samples.size(), plain.forward.n_samples());
+        EXPECT_EQ(kept.backward.samples.n_face, plain.backward.n_face);
+        expect_identical(distance_stats(kept.forward.samples, kept.forward.distances), plain.forward);
+        expect_identical(distance_stats(kept.backward.samples, kept.backward.distances), plain.backward);
+        EXPECT_TRUE(same_bits(*std::max_element(kept.forward.distances.begin(), kept.forward.distances.end()),
+                              plain.forward.max));
+    }
+}
+
+TEST(SurfaceDistance, KeptSampleDistancesMatchBruteForce)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    const Mesh b = read_mesh(kData + "/hemisphere.ply").mesh;
+    SamplingOptions o;
+    o.samples = 3000;
+    const SampledSurfaceDistance r = surface_distance_samples(a, b, o);
+    // Forward: samples on a, distances to b; backward: samples on b, distances to a.
+    for (std::size_t i = 0; i < r.forward.samples.size(); i += 37)
+        EXPECT_NEAR(r.forward.distances[i], closest_point_brute_force(b, r.forward.samples.points[i]).distance,
+                    1e-12 * r.forward.distances[i] + 1e-300);
+    for (std::size_t i = 0; i < r.backward.samples.size(); i += 37)
+        EXPECT_NEAR(r.backward.distances[i], closest_point_brute_force(a, r.backward.samples.points[i]).distance,
+                    1e-12 * r.backward.distances[i] + 1e-300);
+    SamplingOptions none;
+    none.vertices = none.edges = none.faces = false;
+    EXPECT_THROW(surface_distance_samples(a, b, none), InvalidArgumentError);
 }
 
 TEST(SurfaceDistance, MetroDiagonalWidensTheUnionBoxByTwoPercent)

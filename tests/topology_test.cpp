@@ -91,6 +91,29 @@ TEST(Topology, DegenerateDuplicateAndFlippedFaces)
     EXPECT_EQ(degenerate_face_mask(m), (std::vector<char>{0, 1, 0, 0}));
 }
 
+TEST(Topology, FacesWithAllCornersEqualAreCountedNotOverrun)
+{
+    // A mesh built in code may hold faces that read_mesh() would drop: here
+    // {1, 1, 1} (one vertex three times) and {0, 0, 2}. The fan count of
+    // vertices 0 and 1 must not read past the corners it collected.
+    Mesh m;
+    m.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)};
+    m.faces = {{0, 1, 2}, {1, 1, 1}, {0, 0, 2}, {1, 3, 2}, {3, 3, 3}};
+    const auto t = topology_report(m);
+    EXPECT_EQ(t.faces, 5u);
+    EXPECT_EQ(t.degenerate_faces, 3u);
+    EXPECT_EQ(t.isolated_vertices, 0u);
+    EXPECT_EQ(t.components, 1u);
+    // A lone {0, 0, 0}: one degenerate face, no edge of its own.
+    Mesh lone;
+    lone.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+    lone.faces = {{0, 0, 0}};
+    const auto l = topology_report(lone);
+    EXPECT_EQ(l.degenerate_faces, 1u);
+    EXPECT_EQ(l.isolated_vertices, 2u);
+    EXPECT_EQ(l.non_manifold_vertices, 0u);
+}
+
 TEST(Adjacency, SortedUniqueNeighboursOnTheTorus)
 {
     const Shape s = torus(12, 8);

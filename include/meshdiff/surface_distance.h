@@ -96,6 +96,28 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
 SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options = {},
                                  bool b_vertex_distances = false);
 
+//! One direction of a surface distance with everything kept: the samples of
+//! the source surface and the exact distance of each to the other surface.
+struct SampledDirection
+{
+    SurfaceSamples samples;         //!< the samples (points, kinds, source elements), in sample order
+    std::vector<double> distances;  //!< exact distance of each sample to the other surface, same order
+};
+
+//! Result of surface_distance_samples(): the statistics, bit for bit those of
+//! surface_distance() with the same arguments, and the samples behind them
+//! (for histograms, per-kind statistics or plots of one's own).
+struct SampledSurfaceDistance
+{
+    SurfaceDistance distance;   //!< as surface_distance() returns it (no b_vertex_distance)
+    SampledDirection forward;   //!< samples on A, distances to B
+    SampledDirection backward;  //!< samples on B, distances to A
+};
+
+//! surface_distance() keeping every sample and its distance (about 40 bytes
+//! per sample and direction). Same arguments, conventions and exceptions.
+SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options = {});
+
 //! Exact distance of every vertex of \p from (unreferenced ones included) to
 //! the surface indexed by \p to, in vertex order; for per-vertex distance maps.
 std::vector<double> vertex_distances(const Mesh& from, const ClosestPointIndex& to);

@@ -150,27 +150,9 @@ nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal)
     return j;
 }
 
-nlohmann::json comparison_json(const Comparison& c)
+nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOptions& so)
 {
-    nlohmann::json j;
-    j["schema"] = "meshdiff.compare/1";
-    j["meshdiff_version"] = MESHDIFF_VERSION;
-    auto side = [&](const MeshFacts& f, const std::optional<RoughnessProfile>& p) {
-        if (p) return profile_json(f, *p);
-        nlohmann::json o;
-        o["schema"] = "meshdiff.profile/1";
-        o["mesh"] = mesh_json(f);
-        o["warnings"] = warnings_json(warnings(f));
-        return o;
-    };
-    j["original"] = side(c.original, c.original_profile);
-    j["processed"] = side(c.processed, c.processed_profile);
-    j["roughness_distance"] = c.roughness ? roughness_distance_json(*c.roughness) : nlohmann::json(nullptr);
-    if (c.distance) {
-        const auto& d = *c.distance;
-        const auto& so = c.options.sampling;
-        j["surface_distance"] = {
-            {"forward", distance_stats_json(d.forward, d.diagonal)},
+    return {{"forward", distance_stats_json(d.forward, d.diagonal)},
             {"backward", distance_stats_json(d.backward, d.diagonal)},
             {"hausdorff", d.hausdorff},
             {"hausdorff_relative", d.hausdorff / d.diagonal},
@@ -189,6 +171,26 @@ nlohmann::json comparison_json(const Comparison& c)
               {"seed", so.seed}}},
             {"forward_is", "samples on the original, distances to the processed surface"},
             {"cutoff", nullptr}};
+}
+
+nlohmann::json comparison_json(const Comparison& c)
+{
+    nlohmann::json j;
+    j["schema"] = "meshdiff.compare/1";
+    j["meshdiff_version"] = MESHDIFF_VERSION;
+    auto side = [&](const MeshFacts& f, const std::optional<RoughnessProfile>& p) {
+        if (p) return profile_json(f, *p);
+        nlohmann::json o;
+        o["schema"] = "meshdiff.profile/1";
+        o["mesh"] = mesh_json(f);
+        o["warnings"] = warnings_json(warnings(f));
+        return o;
+    };
+    j["original"] = side(c.original, c.original_profile);
+    j["processed"] = side(c.processed, c.processed_profile);
+    j["roughness_distance"] = c.roughness ? roughness_distance_json(*c.roughness) : nlohmann::json(nullptr);
+    if (c.distance) {
+        j["surface_distance"] = surface_distance_json(*c.distance, c.options.sampling);
     } else {
         j["surface_distance"] = nullptr;
     }

@@ -45,6 +45,10 @@ nlohmann::json roughness_distance_json(const RoughnessDistance& d);
 //! One direction's distance statistics (absolute, and relative to \p diagonal).
 nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal);
 
+//! The surface_distance object of "meshdiff.compare/1": both directions, the
+//! Hausdorff distance, the diagonals and the sampling \p options as requested.
+nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOptions& options);
+
 //! The "meshdiff.compare/1" object.
 nlohmann::json comparison_json(const Comparison& c);
 
