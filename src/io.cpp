@@ -4,15 +4,16 @@
 #include "meshdiff/output_file.h"
 
 #include "detail/ply_reader.h"
+#include "detail/read_util.h"
+#include "detail/readers.h"
 
 #include <fmt/format.h>
-#include <OpenMesh/Core/IO/IOManager.hh>
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/IO/exporter/ExporterT.hh>
-#include <OpenMesh/Core/IO/importer/BaseImporter.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -22,99 +23,6 @@ namespace meshdiff {
 
 namespace {
 
-using OpenMesh::EdgeHandle;
-using OpenMesh::FaceHandle;
-using OpenMesh::HalfedgeHandle;
-using OpenMesh::Vec2f;
-using OpenMesh::Vec3d;
-using OpenMesh::Vec3f;
-using OpenMesh::Vec3uc;
-using OpenMesh::Vec4f;
-using OpenMesh::Vec4uc;
-using OpenMesh::VertexHandle;
-
-// Collects the raw vertex and polygon lists from any OpenMesh reader, without
-// building a halfedge structure (which would refuse non-manifold faces).
-class SoupImporter : public OpenMesh::IO::BaseImporter
-{
-public:
-    std::vector<Vec3> points;
-    std::vector<std::vector<int>> polygons;
-
-    VertexHandle add_vertex(const Vec3f& p) override
-    {
-        points.emplace_back(double(p[0]), double(p[1]), double(p[2]));
-        return VertexHandle(int(points.size()) - 1);
-    }
-    VertexHandle add_vertex(const Vec3d& p) override
-    {
-        points.emplace_back(p[0], p[1], p[2]);
-        return VertexHandle(int(points.size()) - 1);
-    }
-    VertexHandle add_vertex() override
-    {
-        points.emplace_back(0.0, 0.0, 0.0);
-        return VertexHandle(int(points.size()) - 1);
-    }
-    HalfedgeHandle add_edge(VertexHandle, VertexHandle) override { return HalfedgeHandle(); }
-    FaceHandle add_face(const VHandles& idx) override
-    {
-        std::vector<int> poly;
-        poly.reserve(idx.size());
-        for (const auto& vh : idx) poly.push_back(vh.idx());
-        polygons.push_back(std::move(poly));
-        return FaceHandle(int(polygons.size()) - 1);
-    }
-    FaceHandle add_face(HalfedgeHandle) override { return FaceHandle(); }
-    void add_face_texcoords(FaceHandle, VertexHandle, const std::vector<Vec2f>&) override {}
-    void add_face_texcoords(FaceHandle, VertexHandle, const std::vector<Vec3f>&) override {}
-    void set_face_texindex(FaceHandle, int) override {}
-    void set_point(VertexHandle vh, const Vec3f& p) override
-    {
-        if (vh.idx() >= 0 && std::size_t(vh.idx()) < points.size())
-            points[std::size_t(vh.idx())] = Vec3(double(p[0]), double(p[1]), double(p[2]));
-    }
-    void set_halfedge(VertexHandle, HalfedgeHandle) override {}
-    void set_normal(VertexHandle, const Vec3f&) override {}
-    void set_normal(VertexHandle, const Vec3d&) override {}
-    void set_color(VertexHandle, const Vec3uc&) override {}
-    void set_color(VertexHandle, const Vec4uc&) override {}
-    void set_color(VertexHandle, const Vec3f&) override {}
-    void set_color(VertexHandle, const Vec4f&) override {}
-    void set_texcoord(VertexHandle, const Vec2f&) override {}
-    void set_status(VertexHandle, const OpenMesh::Attributes::StatusInfo&) override {}
-    void set_next(HalfedgeHandle, HalfedgeHandle) override {}
-    void set_face(HalfedgeHandle, FaceHandle) override {}
-    void request_face_texcoords2D() override {}
-    void set_texcoord(HalfedgeHandle, const Vec2f&) override {}
-    void set_texcoord(VertexHandle, const Vec3f&) override {}
-    void set_texcoord(HalfedgeHandle, const Vec3f&) override {}
-    void set_status(HalfedgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
-    void set_color(EdgeHandle, const Vec3uc&) override {}
-    void set_color(EdgeHandle, const Vec4uc&) override {}
-    void set_color(EdgeHandle, const Vec3f&) override {}
-    void set_color(EdgeHandle, const Vec4f&) override {}
-    void set_status(EdgeHandle, const OpenMesh::Attributes::StatusInfo&) override {}
-    void set_normal(FaceHandle, const Vec3f&) override {}
-    void set_normal(FaceHandle, const Vec3d&) override {}
-    void set_color(FaceHandle, const Vec3uc&) override {}
-    void set_color(FaceHandle, const Vec4uc&) override {}
-    void set_color(FaceHandle, const Vec3f&) override {}
-    void set_color(FaceHandle, const Vec4f&) override {}
-    void set_status(FaceHandle, const OpenMesh::Attributes::StatusInfo&) override {}
-    void add_texture_information(int, std::string) override {}
-    bool is_triangle_mesh() const override { return false; }
-    void reserve(unsigned int nv, unsigned int, unsigned int nf) override
-    {
-        // Header counts can be absurd in a corrupt file: cap the reservation.
-        points.reserve(std::min<std::size_t>(nv, 1u << 26));
-        polygons.reserve(std::min<std::size_t>(nf, 1u << 26));
-    }
-    size_t n_vertices() const override { return points.size(); }
-    size_t n_faces() const override { return polygons.size(); }
-    size_t n_edges() const override { return 0; }
-};
-
 std::string lower_extension(const std::filesystem::path& p)
 {
     std::string ext = p.extension().string();
@@ -122,8 +30,8 @@ std::string lower_extension(const std::filesystem::path& p)
     return ext;
 }
 
-// OpenMesh's readers report problems on its own log streams; capture them so
-// the one-line error can say why.
+// OpenMesh's writers report problems on its own log streams; keep them quiet,
+// the one-line error says what failed.
 class CaptureOpenMeshLog
 {
 public:
@@ -143,32 +51,38 @@ public:
     CaptureOpenMeshLog& operator=(const CaptureOpenMeshLog&) = delete;
 };
 
-// True if an ASCII mesh file holds a "nan" or "inf" token: OpenMesh's text
-// readers stop at one without saying why, so this names the real problem.
-bool mentions_non_finite(const std::filesystem::path& path)
+// "a FIFO" and so on, for the message refusing a file that is not regular.
+const char* file_kind(std::filesystem::file_type t)
 {
-    std::ifstream in(path);
-    std::string tok;
-    while (in >> tok) {
-        std::transform(tok.begin(), tok.end(), tok.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-        const auto b = tok.find_first_not_of("+-");
-        if (b == std::string::npos) continue;
-        const std::string t = tok.substr(b);
-        if (t == "nan" || t == "inf" || t == "infinity" || t.rfind("nan(", 0) == 0) return true;
+    using std::filesystem::file_type;
+    switch (t) {
+        case file_type::directory:
+            return "a directory";
+        case file_type::fifo:
+            return "a FIFO";
+        case file_type::character:
+            return "a character device";
+        case file_type::block:
+            return "a block device";
+        case file_type::socket:
+            return "a socket";
+        default:
+            return "of an unknown kind";
     }
-    return false;
 }
 
 }  // namespace
 
-namespace {
-LoadedMesh read_mesh_impl(const std::filesystem::path& path)
+LoadedMesh read_mesh(const std::filesystem::path& path)
 {
     const std::string name = path.string();
+    // The kind of file first, without opening it: opening a FIFO would block.
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) throw IoError(fmt::format("{}: no such file", name));
-    if (std::filesystem::is_directory(path, ec))
-        throw IoError(fmt::format("{}: is a directory, not a mesh file", name));
+    const auto status = std::filesystem::status(path, ec);
+    if (status.type() == std::filesystem::file_type::not_found) throw IoError(fmt::format("{}: no such file", name));
+    if (ec) throw IoError(fmt::format("{}: cannot access ({})", name, ec.message()));
+    if (status.type() != std::filesystem::file_type::regular)
+        throw IoError(fmt::format("{}: not a regular file ({})", name, file_kind(status.type())));
     {
         std::ifstream probe(path, std::ios::binary);
         if (!probe) throw IoError(fmt::format("{}: cannot open for reading", name));
@@ -178,52 +92,53 @@ LoadedMesh read_mesh_impl(const std::filesystem::path& path)
 
     const std::string ext = lower_extension(path);
     if (ext != ".ply" && ext != ".obj" && ext != ".off" && ext != ".stl")
-        throw IoError(fmt::format("{}: unknown mesh format '{}' (expected .ply, .obj, .off or .stl)", name, ext));
+        throw IoError(
+            fmt::format("{}: unknown mesh format {} (expected .ply, .obj, .off or .stl)", name, detail::quote(ext)));
 
-    SoupImporter importer;
+    // meshdiff's own strict readers (OpenMesh's loop forever or abort on
+    // malformed files, issue 13).
+    detail::Soup soup;
     std::vector<VertexScalar> scalars;
     if (ext == ".ply") {
-        // Our own reader: double precision and strict truncation checks.
-        detail::PlySoup soup = detail::read_ply(name);
-        importer.points = std::move(soup.points);
-        importer.polygons = std::move(soup.polygons);
-        for (std::size_t k = 0; k < soup.scalar_names.size(); ++k)
-            scalars.push_back({soup.scalar_names[k], std::move(soup.scalar_values[k])});
+        detail::PlySoup ply = detail::read_ply(name);
+        soup.points = std::move(ply.points);
+        soup.polygons = std::move(ply.polygons);
+        for (std::size_t k = 0; k < ply.scalar_names.size(); ++k)
+            scalars.push_back({ply.scalar_names[k], std::move(ply.scalar_values[k])});
+    } else if (ext == ".off") {
+        soup = detail::read_off(name);
+    } else if (ext == ".obj") {
+        soup = detail::read_obj(name);
     } else {
-        bool ok = false;
-        {
-            CaptureOpenMeshLog quiet;
-            OpenMesh::IO::Options opt;
-            ok = OpenMesh::IO::IOManager().read(name, importer, opt);
-        }
-        if (!ok || importer.points.empty() || importer.polygons.empty()) {
-            if (mentions_non_finite(path))
-                throw InvalidMeshError(fmt::format("{}: the file has a non-finite coordinate (nan or inf)", name));
-            if (!ok)
-                throw IoError(
-                    fmt::format("{}: could not parse the file as {} (corrupt or truncated?)", name, ext.substr(1)));
-        }
+        soup = detail::read_stl(name);
     }
 
     LoadedMesh out;
     out.input.path = name;
-    out.input.file_vertices = importer.points.size();
-    out.input.file_faces = importer.polygons.size();
-    if (importer.points.empty()) throw InvalidMeshError(fmt::format("{}: mesh has no vertices", name));
-    if (importer.polygons.empty()) throw InvalidMeshError(fmt::format("{}: mesh has no faces", name));
+    out.input.file_vertices = soup.points.size();
+    out.input.file_faces = soup.polygons.size();
+    if (soup.points.empty()) throw InvalidMeshError(fmt::format("{}: mesh has no vertices", name));
+    if (soup.polygons.empty()) throw InvalidMeshError(fmt::format("{}: mesh has no faces", name));
 
-    const auto nv = std::int64_t(importer.points.size());
-    for (std::size_t i = 0; i < importer.points.size(); ++i)
-        if (!importer.points[i].allFinite())
-            throw InvalidMeshError(fmt::format("{}: vertex {} has a non-finite coordinate ({}, {}, {})", name, i,
-                                               importer.points[i].x(), importer.points[i].y(), importer.points[i].z()));
+    const auto nv = std::int64_t(soup.points.size());
+    for (std::size_t i = 0; i < soup.points.size(); ++i) {
+        const Vec3& p = soup.points[i];
+        if (!p.allFinite())
+            throw InvalidMeshError(
+                fmt::format("{}: vertex {} has a non-finite coordinate ({}, {}, {})", name, i, p.x(), p.y(), p.z()));
+        for (int k = 0; k < 3; ++k)
+            if (std::abs(p[k]) > max_coordinate)
+                throw InvalidMeshError(
+                    fmt::format("{}: vertex {} has the coordinate {} beyond meshdiff's limit of +-{}", name, i, p[k],
+                                max_coordinate));
+    }
 
     // Triangulate, drop faces with a repeated corner, mark used vertices.
     std::vector<Face> faces;
-    faces.reserve(importer.polygons.size());
-    std::vector<std::int32_t> remap(importer.points.size(), -1);
-    for (std::size_t f = 0; f < importer.polygons.size(); ++f) {
-        const auto& poly = importer.polygons[f];
+    faces.reserve(soup.polygons.size());
+    std::vector<std::int32_t> remap(soup.points.size(), -1);
+    for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
+        const auto& poly = soup.polygons[f];
         if (poly.size() < 3) throw InvalidMeshError(fmt::format("{}: face {} has {} corners", name, f, poly.size()));
         for (int v : poly)
             if (v < 0 || v >= nv)
@@ -248,7 +163,7 @@ LoadedMesh read_mesh_impl(const std::filesystem::path& path)
     out.input.unreferenced_vertices = remap.size() - std::size_t(next);
     out.mesh.points.reserve(std::size_t(next));
     for (std::size_t i = 0; i < remap.size(); ++i)
-        if (remap[i] >= 0) out.mesh.points.push_back(importer.points[i]);
+        if (remap[i] >= 0) out.mesh.points.push_back(soup.points[i]);
     for (auto& t : faces)
         for (auto& v : t) v = remap[std::size_t(v)];
     out.mesh.faces = std::move(faces);
@@ -260,22 +175,6 @@ LoadedMesh read_mesh_impl(const std::filesystem::path& path)
         out.vertex_scalars.push_back(std::move(kept));
     }
     return out;
-}
-
-}  // namespace
-
-LoadedMesh read_mesh(const std::filesystem::path& path)
-{
-    try {
-        return read_mesh_impl(path);
-    } catch (const Error&) {
-        // OpenMesh's text readers stop at a "nan" token without saying so;
-        // the symptoms (missing vertices, bad indices) hide the cause.
-        const std::string ext = lower_extension(path);
-        if ((ext == ".obj" || ext == ".off") && mentions_non_finite(path))
-            throw InvalidMeshError(fmt::format("{}: the file has a non-finite coordinate (nan or inf)", path.string()));
-        throw;
-    }
 }
 
 const VertexScalar& vertex_scalar(const LoadedMesh& loaded, const std::string& name)

@@ -34,8 +34,26 @@ expect() {
     pass
 }
 
+# expect_within SECONDS CODE ARGS...: as expect, but the run is killed after
+# SECONDS (exit code 124 then), so that a hang fails the check instead of
+# blocking the test run.
+expect_within() {
+    within_s="$1"
+    within_want="$2"
+    shift 2
+    timeout "$within_s" "$bin" "$@" >"$tmp/stdout" 2>"$tmp/stderr"
+    within_got=$?
+    if [ "$within_got" -ne "$within_want" ]; then
+        [ "$within_got" -eq 124 ] && within_got="124 (killed after $within_s s)"
+        fail "meshdiff $* exited $within_got, expected $within_want: $(head -c 400 "$tmp/stderr")"
+        return 1
+    fi
+    pass
+}
+
 # json_check FILE PYTHON_EXPR: the expression over the parsed JSON `j` must be
-# true; finite(x) tells whether every number in x is finite.
+# true; finite(x) tells whether every number in x is finite, nulls(x) lists
+# the paths (e.g. "a.b[2]") of its null values.
 json_check() {
     if python3 - "$1" "$2" <<'PY'; then
 import json, math, sys
@@ -45,6 +63,10 @@ def finite(x):
     if isinstance(x, list): return all(finite(v) for v in x)
     if isinstance(x, float): return math.isfinite(x)
     return True
+def nulls(x, at=""):
+    if isinstance(x, dict): return [p for k, v in x.items() for p in nulls(v, at + "." + k if at else k)]
+    if isinstance(x, list): return [p for i, v in enumerate(x) for p in nulls(v, "%s[%d]" % (at, i))]
+    return [at] if x is None else []
 ok = eval(sys.argv[2])
 sys.exit(0 if ok else 1)
 PY

@@ -27,6 +27,98 @@ printf 'OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n' > "$tmp/nan.off"
 expect 4 profile "$tmp/nan.off" && grep -q "non-finite" "$tmp/stderr" && pass || fail "nan message"
 [ "$(wc -l < "$tmp/stderr")" -eq 1 ] && pass || fail "errors must be one line"
 
+# --- hostile input (issue 13, tests/data/hostile/README.md): the exit code within 10 s (several files hung or
+# crashed the OpenMesh readers), and an error is one printable line naming the file
+while read -r code file; do
+    expect_within 10 "$code" profile "$data/hostile/$file" --levels 1 || continue
+    [ "$code" -eq 0 ] && continue
+    grep -q "$file" "$tmp/stderr" && [ "$(wc -l < "$tmp/stderr")" -eq 1 ] && ! LC_ALL=C grep -q '[^[:print:]]' "$tmp/stderr" &&
+        pass || fail "$file: the error is not one printable line naming the file: $(head -c 300 "$tmp/stderr")"
+done <<'LIST'
+3 off_header_only.off
+3 off_negative_corner_count.off
+3 off_count_beyond_body.off
+4 off_inf.off
+4 off_overflow.off
+3 off_truncated.off
+3 off_trailing_face.off
+3 off_4off.off
+4 off_negative_index.off
+0 off_glued_counts.off
+0 off_colours_comments.off
+3 obj_empty_vertex_index.obj
+4 obj_two_corners.obj
+4 obj_zero_index.obj
+4 obj_relative_before_first.obj
+4 obj_lines_and_points.obj
+4 obj_beyond_limit.obj
+0 obj_all_corner_forms.obj
+4 stl_nan.stl
+4 stl_1e308.stl
+4 stl_nan_binary.stl
+3 stl_count_mismatch.stl
+3 stl_truncated.stl
+0 stl_two_solids.stl
+0 ply_no_property_huge_count.ply
+3 ply_count_beyond_body.ply
+3 ply_duplicate_element.ply
+3 ply_trailing_face.ply
+3 ply_control_bytes.ply
+4 ply_beyond_limit.ply
+0 ply_at_limit.ply
+LIST
+mkfifo "$tmp/fifo.ply"
+expect_within 10 3 profile "$tmp/fifo.ply" && grep -q "fifo.ply: not a regular file (a FIFO)" "$tmp/stderr" && pass ||
+    fail "FIFO message"
+expect_within 10 3 profile /dev/null && grep -q "not a regular file (a character device)" "$tmp/stderr" && pass ||
+    fail "device message"
+mkdir "$tmp/dir.ply"
+expect_within 10 3 profile "$tmp/dir.ply" && grep -q "not a regular file (a directory)" "$tmp/stderr" && pass ||
+    fail "directory message"
+mkfifo "$tmp/blocks.mtl"
+printf 'mtllib blocks.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n' > "$tmp/mtl.obj"
+expect_within 10 0 profile "$tmp/mtl.obj" --levels 1
+
+# --- the coordinate limit (io.h max_coordinate = 1e30) at both ends: just inside it, a comparison computes a
+# finite report; beyond it, exit 4 naming the vertex and the limit
+expect 0 generate sphere "$tmp/s.ply" --subdivisions 3
+expect 0 generate noisy-sphere "$tmp/ns.ply" --subdivisions 3
+# scale_ply IN OUT M: IN (binary PLY of `generate`) as ASCII PLY scaled to the largest coordinate magnitude M
+scale_ply() {
+    python3 - "$@" <<'PY'
+import struct, sys
+data = open(sys.argv[1], "rb").read()
+end = data.index(b"end_header\n") + len(b"end_header\n")
+counts, nprop, element = {}, 0, None
+for line in data[:end].decode().split("\n"):
+    t = line.split()
+    if t[:1] == ["element"]:
+        element = t[1]
+        counts[element] = int(t[2])
+    elif t[:1] == ["property"] and element == "vertex":
+        nprop += 1
+pos, points, faces = end, [], []
+for _ in range(counts["vertex"]):
+    points.append(struct.unpack_from("<%dd" % nprop, data, pos)[:3])
+    pos += 8 * nprop
+for _ in range(counts["face"]):
+    faces.append(struct.unpack_from("<B3i", data, pos)[1:])
+    pos += 13
+k = float(sys.argv[3]) / max(abs(c) for p in points for c in p)
+with open(sys.argv[2], "w") as out:
+    out.write("ply\nformat ascii 1.0\nelement vertex %d\nproperty double x\nproperty double y\nproperty double z\n"
+              "element face %d\nproperty list uchar int vertex_indices\nend_header\n" % (len(points), len(faces)))
+    out.writelines("%r %r %r\n" % tuple(c * k for c in p) for p in points)
+    out.writelines("3 %d %d %d\n" % f for f in faces)
+PY
+}
+scale_ply "$tmp/s.ply" "$tmp/big_a.ply" 0.999e30 && scale_ply "$tmp/ns.ply" "$tmp/big_b.ply" 0.999e30 &&
+    scale_ply "$tmp/ns.ply" "$tmp/over.ply" 1.001e30 && pass || fail "scale_ply"
+expect_within 60 0 "$tmp/big_a.ply" "$tmp/big_b.ply" --levels 1,2 --json "$tmp/big.json"
+json_check "$tmp/big.json" 'finite(j) and [p for p in nulls(j) if p.split(".")[-1] not in ("cutoff", "density_requested", "samples_requested")] == [] and j["surface_distance"]["hausdorff"] > 1e26 and j["roughness_distance"]["global"]["distance"] > 0'
+expect_within 10 4 profile "$tmp/over.ply" && grep -q "over.ply: vertex [0-9]* has the coordinate .* beyond meshdiff's limit of +-1e+30" "$tmp/stderr" &&
+    pass || fail "coordinate limit message"
+
 # --- profile: text, JSON keys, vertex data
 expect 0 profile "$data/fandisk.ply" --levels 1,2,5 --json "$tmp/p.json" --vertex-data "$tmp/v.ply" &&
     grep -q "global" "$tmp/stdout" && pass || fail "profile text"

@@ -1,7 +1,7 @@
 //! \file io.h
-//! \brief Reading meshes (PLY ASCII/binary, OBJ, OFF, STL through OpenMesh's
-//! readers) with the input hygiene of METHOD.md section 1, and writing PLY
-//! with per-vertex scalar properties and colours.
+//! \brief Reading meshes (PLY ASCII/binary, OBJ, OFF, STL, each through a
+//! strict reader of meshdiff's own) with the input hygiene of METHOD.md
+//! section 1, and writing PLY with per-vertex scalar properties and colours.
 #pragma once
 
 #include "meshdiff/mesh.h"
@@ -13,6 +13,15 @@
 #include <vector>
 
 namespace meshdiff {
+
+//! The largest coordinate magnitude read_mesh() accepts (a larger one is an
+//! InvalidMeshError naming the vertex). Squared lengths alone would allow
+//! ~1e150, but face areas (the norm of a cross product) and the closest-point
+//! tests multiply four coordinate differences, which overflows near 1e76 (a
+//! sphere of radius 1e78 made the comparison loop forever). 1e30 keeps products
+//! of eight differences finite, and lies inside float range, so that the limit
+//! is the same for every format. Real meshes stay many decades below it.
+inline constexpr double max_coordinate = 1e30;
 
 //! What reading did to the file's contents before anything else.
 struct InputReport
@@ -49,10 +58,15 @@ const VertexScalar& vertex_scalar(const LoadedMesh& loaded, const std::string& n
 //! Unreferenced vertices are dropped (and counted), polygons fan-triangulated,
 //! faces with a repeated corner dropped (and counted); coordinates are kept in
 //! double precision as the reader delivers them.
-//! \throw IoError if the file is missing, unreadable, of an unknown format,
-//!        empty or truncated.
-//! \throw InvalidMeshError if it has no vertices, no faces, a face index out of
-//!        range or a NaN/Inf coordinate.
+//! PLY coordinates keep the precision of the file; OBJ, OFF and STL ones are
+//! rounded to float, as OpenMesh's readers, which meshdiff used before, did.
+//! \throw IoError if the file is missing, not a regular file (a FIFO, a device,
+//!        a directory), unreadable, of an unknown format, empty, truncated,
+//!        unparsable, or if its header counts do not match its body (too few
+//!        bytes for a count, or data after the declared elements).
+//! \throw InvalidMeshError if it has no vertices, no faces, a face with fewer
+//!        than 3 corners, a face index out of range, a NaN/Inf coordinate or
+//!        one beyond max_coordinate.
 LoadedMesh read_mesh(const std::filesystem::path& path);
 
 //! Writes a binary little-endian PLY with x y z (double), the given scalar

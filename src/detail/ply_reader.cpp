@@ -2,6 +2,8 @@
 
 #include "meshdiff/error.h"
 
+#include "detail/read_util.h"
+
 #include <fmt/format.h>
 
 #include <cstdint>
@@ -72,7 +74,7 @@ struct Property
 struct Element
 {
     std::string name;
-    std::size_t count = 0;
+    std::uint64_t count = 0;
     std::vector<Property> props;
 };
 
@@ -95,17 +97,42 @@ class Source
 public:
     Source(const std::string& path, std::ifstream& in, Format f) : path_(path), in_(in), format_(f)
     {
+        const auto start = in_.tellg();
+        in_.seekg(0, std::ios::end);
+        end_ = in_.tellg();
+        in_.seekg(start);
         if (format_ != Format::Ascii) {
             // The whole body at once: one read instead of millions of small ones.
-            const auto start = in_.tellg();
-            in_.seekg(0, std::ios::end);
-            const auto end = in_.tellg();
-            in_.seekg(start);
-            body_.resize(end > start ? std::size_t(end - start) : 0);
+            body_.resize(end_ > start ? std::size_t(end_ - start) : 0);
             in_.read(body_.data(), std::streamsize(body_.size()));
             body_.resize(std::size_t(in_.gcount()));
             pos_ = 0;
         }
+    }
+
+    //! Bytes of the body not read yet.
+    std::uint64_t bytes_left()
+    {
+        if (format_ != Format::Ascii) return body_.size() - pos_;
+        const auto at = in_.tellg();
+        return at >= 0 && end_ > at ? std::uint64_t(end_ - at) : 0;
+    }
+
+    //! \throw IoError if anything but white space follows the last element.
+    void expect_end()
+    {
+        if (format_ != Format::Ascii) {
+            if (pos_ < body_.size())
+                throw IoError(
+                    fmt::format("{}: {} bytes after the last element the PLY header declares (a wrong "
+                                "count?)",
+                                path_, body_.size() - pos_));
+            return;
+        }
+        std::string tok;
+        if (in_ >> tok)
+            throw IoError(fmt::format("{}: data after the last element the PLY header declares ({}; a wrong count?)",
+                                      path_, quote(tok)));
     }
 
     double value(Type t)
@@ -177,13 +204,14 @@ private:
         const char* s = tok.c_str();
         char* end = nullptr;
         const double v = std::strtod(s, &end);
-        if (end == s || *end != '\0') throw IoError(fmt::format("{}: '{}' is not a number", path_, tok));
+        if (end == s || *end != '\0') throw IoError(fmt::format("{}: {} is not a number", path_, quote(tok)));
         return v;
     }
 
     const std::string& path_;
     std::ifstream& in_;
     Format format_;
+    std::streampos end_ = 0;
     std::string body_;
     std::size_t pos_ = 0;
 };
@@ -217,14 +245,21 @@ PlySoup read_ply(const std::string& path)
             else if (f == "binary_big_endian")
                 format = Format::BinaryBE;
             else
-                throw IoError(fmt::format("{}: unknown PLY format '{}'", path, f));
+                throw IoError(fmt::format("{}: unknown PLY format {}", path, quote(f)));
             have_format = true;
         } else if (word == "element") {
+            std::vector<std::string_view> tok;
+            split(line, tok);
+            std::int64_t count = -1;
+            if (tok.size() != 3 || !parse_integer(tok[2], count))
+                throw IoError(fmt::format("{}: malformed PLY line {}", path, quote(line)));
+            if (count < 0) throw IoError(fmt::format("{}: PLY element {} has a negative count", path, quote(tok[1])));
             Element e;
-            long long count = -1;
-            ss >> e.name >> count;
-            if (e.name.empty() || count < 0) throw IoError(fmt::format("{}: malformed PLY line '{}'", path, line));
-            e.count = std::size_t(count);
+            e.name = std::string(tok[1]);
+            e.count = std::uint64_t(count);
+            for (const Element& other : elements)
+                if (other.name == e.name)
+                    throw IoError(fmt::format("{}: two PLY elements named {}", path, quote(e.name)));
             elements.push_back(e);
         } else if (word == "property") {
             if (elements.empty()) throw IoError(fmt::format("{}: PLY property before any element", path));
@@ -236,17 +271,17 @@ PlySoup read_ply(const std::string& path)
                 ss >> ct >> it >> p.name;
                 p.is_list = true;
                 if (!parse_type(ct, p.count_type) || !parse_type(it, p.type))
-                    throw IoError(fmt::format("{}: malformed PLY line '{}'", path, line));
+                    throw IoError(fmt::format("{}: malformed PLY line {}", path, quote(line)));
             } else {
                 ss >> p.name;
-                if (!parse_type(t, p.type)) throw IoError(fmt::format("{}: unknown PLY type in '{}'", path, line));
+                if (!parse_type(t, p.type)) throw IoError(fmt::format("{}: unknown PLY type in {}", path, quote(line)));
             }
             elements.back().props.push_back(p);
         } else if (word == "end_header") {
             ended = true;
             break;
         } else {
-            throw IoError(fmt::format("{}: unexpected PLY header line '{}'", path, line));
+            throw IoError(fmt::format("{}: unexpected PLY header line {}", path, quote(line)));
         }
     }
     if (!ended || !have_format) throw IoError(fmt::format("{}: PLY header without format or end_header", path));
@@ -274,23 +309,29 @@ PlySoup read_ply(const std::string& path)
                     soup.scalar_values.emplace_back();
                 }
         }
-        if (e.name == "vertex") {
-            if (ix < 0 || iy < 0 || iz < 0) throw IoError(fmt::format("{}: PLY vertex element lacks x, y or z", path));
-            soup.points.reserve(std::min<std::size_t>(e.count, 1u << 26));
-        }
-        if (e.name == "face") {
-            if (iface < 0) throw IoError(fmt::format("{}: PLY face element lacks vertex_indices", path));
-            soup.polygons.reserve(std::min<std::size_t>(e.count, 1u << 26));
-        }
+        if (e.name == "vertex" && (ix < 0 || iy < 0 || iz < 0))
+            throw IoError(fmt::format("{}: PLY vertex element lacks x, y or z", path));
+        if (e.name == "face" && iface < 0)
+            throw IoError(fmt::format("{}: PLY face element lacks vertex_indices", path));
+        if (e.props.empty()) continue;  // no data, whatever the count
+        // Check the count against the bytes left before looping or allocating:
+        // an ASCII value takes at least 2 bytes, a binary one its size (a list
+        // at least its count).
+        std::uint64_t min_bytes = 0;
+        for (const auto& p : e.props)
+            min_bytes += format == Format::Ascii ? 2 : type_size(p.is_list ? p.count_type : p.type);
+        check_count(path, e.count, min_bytes, src.bytes_left(), fmt::format("{} elements", quote(e.name)));
+        if (e.name == "vertex") soup.points.reserve(std::size_t(e.count));
+        if (e.name == "face") soup.polygons.reserve(std::size_t(e.count));
         double xyz[3] = {0, 0, 0};
         std::vector<int> poly;
-        for (std::size_t i = 0; i < e.count; ++i) {
+        for (std::uint64_t i = 0; i < e.count; ++i) {
             for (std::size_t k = 0; k < e.props.size(); ++k) {
                 const auto& p = e.props[k];
                 if (p.is_list) {
                     const double cnt = src.value(p.count_type);
                     if (!(cnt >= 0 && cnt < 1e6))
-                        throw IoError(fmt::format("{}: {} {} has a list of {} entries", path, e.name, i, cnt));
+                        throw IoError(fmt::format("{}: {} {} has a list of {} entries", path, quote(e.name), i, cnt));
                     if (int(k) == iface) poly.clear();
                     for (std::size_t j = 0; j < std::size_t(cnt); ++j) {
                         const double v = src.value(p.type);
@@ -312,6 +353,7 @@ PlySoup read_ply(const std::string& path)
             if (e.name == "face") soup.polygons.push_back(poly);
         }
     }
+    src.expect_end();
     return soup;
 }
 
