@@ -9,7 +9,9 @@ pkgs=(build-essential cmake pkg-config
       clang-format python3
       # The Python module (python/) and its tests, for Debian's /usr/bin/python3;
       # OpenMesh's command-line decimater for examples/evaluate_decimation.py.
-      pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib libopenmesh-apps)
+      pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib libopenmesh-apps
+      # The fuzzing of the readers (scripts/fuzz.sh): clang with libFuzzer and its OpenMP runtime.
+      clang libclang-rt-14-dev libomp-dev)
 if [[ "${1:-}" == "--reference" ]]; then
     pkgs+=(meshlab xvfb xauth gnuplot-nox hyperfine)
 fi

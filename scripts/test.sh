@@ -6,7 +6,8 @@
 #  2. the Python module: pytest (python/tests) with the interpreter CMake chose,
 #     and an import of the module installed by cmake --install;
 #  3. a Debug build with AddressSanitizer + UndefinedBehaviorSanitizer, and ctest;
-#  4. the clang-format check of include/ src/ tools/ tests/ bench/ examples/ python/.
+#  4. the fuzzing of the readers (scripts/fuzz.sh: libFuzzer with clang, ASan + UBSan, 45 s per format);
+#  5. the clang-format check of include/ src/ tools/ tests/ bench/ examples/ python/.
 # Usage: scripts/test.sh            (from anywhere; builds into build/ and build-asan/)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -57,6 +58,9 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-g -O
 cmake --build build-asan -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-asan --output-on-failure -j"$jobs"
+
+echo "== fuzz the mesh readers (libFuzzer, ASan + UBSan, 45 s per format)"
+scripts/fuzz.sh "${FUZZ_SECONDS:-45}"
 
 echo "== clang-format"
 find include src tools tests bench examples python \( -name '*.h' -o -name '*.cpp' \) -print0 |
