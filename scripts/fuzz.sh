@@ -26,7 +26,7 @@ for fmt in "${formats[@]}"; do
     corpus=build-fuzz/corpus/$fmt
     artifacts=build-fuzz/artifacts/$fmt
     rm -rf "$corpus" "$artifacts"
-    mkdir -p "$corpus" "$artifacts"
+    mkdir -p "$corpus" "$artifacts" tests/fuzz/regressions/"$fmt"  # git keeps no empty folder
     echo "== fuzz $fmt for $seconds s"
     if ! ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 build-fuzz/tests/fuzz/fuzz_read_"$fmt" -seed=1 \
         -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192 -print_final_stats=1 \
