@@ -9,24 +9,36 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace meshdiff::cli {
+
+namespace {
+
+// The whole of \p text as a finite number, or nothing.
+std::optional<double> finite_number(const std::string& text)
+{
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+    if (used != text.size() || text.empty() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+}  // namespace
 
 CLI::Validator in_range(double lo, double hi, bool integer)
 {
     const std::string range = fmt::format("{} {} to {}", integer ? "a whole number from" : "a number from", lo, hi);
     return CLI::Validator(
         [lo, hi, integer, range](std::string& text) -> std::string {
-            std::size_t used = 0;
-            double v = 0.0;
-            try {
-                v = std::stod(text, &used);
-            } catch (const std::exception&) {
-                used = 0;
-            }
-            if (used != text.size() || text.empty() || !std::isfinite(v) || v < lo || v > hi ||
-                (integer && v != std::floor(v)))
+            const auto v = finite_number(text);
+            if (!v || *v < lo || *v > hi || (integer && *v != std::floor(*v)))
                 return fmt::format("'{}' is not {}", text, range);
             return std::string();
         },
@@ -37,14 +49,8 @@ CLI::Validator positive(double hi)
 {
     return CLI::Validator(
         [hi](std::string& text) -> std::string {
-            std::size_t used = 0;
-            double v = 0.0;
-            try {
-                v = std::stod(text, &used);
-            } catch (const std::exception&) {
-                used = 0;
-            }
-            if (used != text.size() || text.empty() || !std::isfinite(v) || !(v > 0.0) || v > hi)
+            const auto v = finite_number(text);
+            if (!v || !(*v > 0.0) || *v > hi)
                 return fmt::format("'{}' is not a finite number > 0{}", text,
                                    hi < 1e300 ? fmt::format(" and <= {}", hi) : "");
             return std::string();
