@@ -229,10 +229,17 @@ TopologyReport topology_report(const Mesh& mesh)
     r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
 
     // Non-manifold vertices: the faces around v, linked through shared edges
-    // (v, w), form more than one fan.
+    // (v, w), form more than one fan. Each incident face gives two "other"
+    // vertices (v itself standing in for a repeated corner); two faces are
+    // linked when they share one. Up to kPairwiseFanDegree faces every pair is
+    // tested; above (a hub) the faces are grouped by their other vertices
+    // (a sort), so a vertex costs O(deg log deg), not O(deg^2). Both give the
+    // same count: the number of classes does not depend on the union order.
     {
+        constexpr std::size_t kPairwiseFanDegree = 16;
         const Adjacency vf = vertex_faces(mesh);
-        std::vector<std::uint32_t> other;  // the two other vertices per incident face
+        std::vector<std::uint32_t> other;                         // the two other vertices per incident face
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> by;  // (other vertex, face slot), hubs only
         UnionFind fan;
         for (std::size_t v = 0; v < n; ++v) {
             const std::size_t deg = vf.degree(v);
@@ -249,12 +256,20 @@ TopologyReport topology_report(const Mesh& mesh)
             }
             fan.reset(deg);
             std::size_t fans = deg;
-            for (std::size_t a = 0; a < deg; ++a)
-                for (std::size_t b = a + 1; b < deg; ++b) {
-                    const bool share = other[2 * a] == other[2 * b] || other[2 * a] == other[2 * b + 1] ||
-                                       other[2 * a + 1] == other[2 * b] || other[2 * a + 1] == other[2 * b + 1];
-                    if (share && fan.unite(std::uint32_t(a), std::uint32_t(b))) --fans;
-                }
+            if (deg <= kPairwiseFanDegree) {
+                for (std::size_t a = 0; a < deg; ++a)
+                    for (std::size_t b = a + 1; b < deg; ++b) {
+                        const bool share = other[2 * a] == other[2 * b] || other[2 * a] == other[2 * b + 1] ||
+                                           other[2 * a + 1] == other[2 * b] || other[2 * a + 1] == other[2 * b + 1];
+                        if (share && fan.unite(std::uint32_t(a), std::uint32_t(b))) --fans;
+                    }
+            } else {
+                by.resize(2 * deg);
+                for (std::size_t k = 0; k < 2 * deg; ++k) by[k] = {other[k], std::uint32_t(k / 2)};
+                std::sort(by.begin(), by.end());
+                for (std::size_t k = 1; k < by.size(); ++k)
+                    if (by[k].first == by[k - 1].first && fan.unite(by[k].second, by[k - 1].second)) --fans;
+            }
             if (fans > 1) ++r.non_manifold_vertices;
         }
     }

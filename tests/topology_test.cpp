@@ -6,6 +6,7 @@
 #include "meshdiff/shapes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <utility>
 #include <vector>
@@ -47,7 +48,87 @@ void expect_same_edges(const std::vector<Edge>& got, const std::vector<Edge>& wa
     }
 }
 
+// Brute force: the vertices whose incident faces (linked when they share a
+// vertex other than the centre) form more than one fan, every pair tested.
+std::size_t brute_force_non_manifold_vertices(const Mesh& mesh)
+{
+    std::size_t count = 0;
+    for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
+        std::vector<std::size_t> faces;
+        for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+            for (auto c : mesh.faces[f])
+                if (std::size_t(c) == v) faces.push_back(f);  // once per corner, as vertex_faces()
+        std::vector<std::size_t> root(faces.size());
+        for (std::size_t a = 0; a < root.size(); ++a) root[a] = a;
+        auto find = [&](std::size_t x) {
+            while (root[x] != x) x = root[x];
+            return x;
+        };
+        for (std::size_t a = 0; a < faces.size(); ++a)
+            for (std::size_t b = a + 1; b < faces.size(); ++b) {
+                bool share = false;
+                for (auto x : mesh.faces[faces[a]])
+                    for (auto y : mesh.faces[faces[b]]) share = share || (x == y && std::size_t(x) != v);
+                if (share) root[find(a)] = find(b);
+            }
+        std::size_t fans = 0;
+        for (std::size_t a = 0; a < root.size(); ++a) fans += find(a) == a ? 1 : 0;
+        if (fans > 1) ++count;
+    }
+    return count;
+}
+
+// Appends a fan of \p n triangles around \p hub on a circle of radius r at
+// height z; closed (a disc) or open (a fan with a gap).
+void add_fan(Mesh& m, std::int32_t hub, int n, double r, double z, bool closed)
+{
+    const auto first = std::int32_t(m.points.size());
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * M_PI * i / n;
+        m.points.emplace_back(r * std::cos(a), r * std::sin(a), z);
+    }
+    for (int i = 0; i < (closed ? n : n - 1); ++i) m.faces.push_back({hub, first + i, first + (i + 1) % n});
+}
+
 }  // namespace
+
+TEST(Topology, NonManifoldVertexCountOfHubsEqualsTheBruteForce)
+{
+    // Vertex 0: two fans of 40 and 30 triangles touching only there (non-
+    // manifold). Vertex 1: one closed fan of 50 (manifold), then the same with
+    // a third fan of 20 joined to the first through a shared rim vertex
+    // (manifold: the faces are linked). Above 16 faces a vertex's fans are
+    // found by grouping, below by testing every pair.
+    Mesh m;
+    m.points = {Vec3(0, 0, 0), Vec3(5, 0, 0)};
+    add_fan(m, 0, 40, 1.0, 0.5, true);
+    add_fan(m, 0, 30, 1.0, -0.5, false);
+    const std::int32_t hub1 = 1;
+    const auto before = std::int32_t(m.points.size());
+    add_fan(m, hub1, 50, 1.0, 0.2, true);
+    for (auto i = before; i < std::int32_t(m.points.size()); ++i) m.points[std::size_t(i)].x() += 5.0;
+    EXPECT_EQ(topology_report(m).non_manifold_vertices, 1u);
+    EXPECT_EQ(brute_force_non_manifold_vertices(m), 1u);
+
+    // A third fan at vertex 1, sharing rim vertex `before` with the first.
+    const auto third = std::int32_t(m.points.size());
+    add_fan(m, hub1, 20, 0.5, 1.0, false);
+    for (auto i = third; i < std::int32_t(m.points.size()); ++i) m.points[std::size_t(i)].x() += 5.0;
+    m.faces.push_back({hub1, third + 19, before});
+    EXPECT_EQ(topology_report(m).non_manifold_vertices, brute_force_non_manifold_vertices(m));
+    EXPECT_EQ(topology_report(m).non_manifold_vertices, 1u);
+
+    // Now a fourth, separate fan at vertex 1: both hubs are non-manifold; and
+    // a small bowtie (2 + 2 faces) for the pairwise path.
+    add_fan(m, hub1, 25, 0.3, -1.0, false);
+    const auto bow = std::int32_t(m.points.size());
+    m.points.insert(m.points.end(),
+                    {Vec3(9, 0, 0), Vec3(10, 1, 0), Vec3(10, 0, 1), Vec3(8, 1, 0), Vec3(8, 0, 1), Vec3(10, -1, 0)});
+    m.faces.insert(m.faces.end(), {{bow, bow + 1, bow + 2}, {bow, bow + 2, bow + 5}, {bow, bow + 3, bow + 4}});
+    const auto t = topology_report(m);
+    EXPECT_EQ(t.non_manifold_vertices, brute_force_non_manifold_vertices(m));
+    EXPECT_EQ(t.non_manifold_vertices, 3u);
+}
 
 TEST(Topology, ClosedManifoldSphere)
 {
