@@ -4,6 +4,7 @@
 
 #include "detail/point_triangle.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -30,12 +31,39 @@ inline Vec3 tri_point(const Vec3& p, const Tri& t)
     return t.thin ? detail::thin_triangle_point(p, t.a, t.b, t.c) : detail::triangle_point(p, t.a, t.b, t.c);
 }
 
+// A node has an oriented box besides its axis-aligned one (Impl::obbs) when
+// this bit of `count` is set.
+constexpr std::uint32_t kHasObb = 0x80000000u;
+
 struct Node
 {
     std::array<double, 3> lo, hi;
     std::uint32_t first;  // leaf: first triangle; inner: left child (right = first + 1)
-    std::uint32_t count;  // leaf: number of triangles (> 0); inner: 0
+    std::uint32_t count;  // leaf: number of triangles (> 0); inner: 0; | kHasObb
+    std::uint32_t triangles() const { return count & ~kHasObb; }
 };
+
+// An oriented bounding box: |axis[k] . (p - centre)| <= half[k], its half
+// extents padded by kObbPad times the size of its coordinates, so that
+// rounding cannot put it farther from a query than a triangle inside it.
+struct Obb
+{
+    std::array<double, 3> centre;
+    std::array<std::array<double, 3>, 3> axis;
+    std::array<double, 3> half;
+};
+
+inline double obb_distance2(const Obb& b, const Vec3& p)
+{
+    const double dx = p.x() - b.centre[0], dy = p.y() - b.centre[1], dz = p.z() - b.centre[2];
+    double d2 = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const double s = b.axis[k][0] * dx + b.axis[k][1] * dy + b.axis[k][2] * dz;
+        const double e = std::max(std::abs(s) - b.half[k], 0.0);
+        d2 += e * e;
+    }
+    return d2;
+}
 
 inline double box_distance2(const Node& n, const Vec3& p)
 {
@@ -71,6 +99,15 @@ constexpr std::uint32_t kLeafSize = 4;
 constexpr int kBins = 16;
 constexpr std::uint32_t kMaxSahDepth = 48;
 constexpr std::size_t kBlock = 2048;  // queries per parallel block (fixed: results do not depend on threads)
+// Oriented boxes: tried for a node whose box's half area exceeds its
+// triangles' area this many times (slivers, such as the fan of triangles
+// around a vertex of very high valence, whose boxes all contain the hub), and
+// kept when their half area is below this share of the box's.
+constexpr double kObbTryRatio = 8.0;
+constexpr double kObbKeepShare = 0.25;
+// Padding of an oriented box, relative to the size of its coordinates: far
+// above the rounding of its projections, far below any distance that matters.
+constexpr double kObbPad = 1e-9;
 
 }  // namespace
 
@@ -80,8 +117,19 @@ struct ClosestPointIndex::Impl
     std::vector<Node> nodes;
     std::vector<std::uint32_t> parent_of;  // per node (root: 0)
     std::vector<std::uint32_t> leaf_of;    // per triangle position: its leaf
+    std::vector<Obb> obbs;                 // oriented boxes of the nodes with kHasObb
+    std::vector<std::uint32_t> obb_slot;   // per node: its index in obbs (read only with kHasObb)
 
     void build(const Mesh& mesh);
+    // A lower bound of the distance^2 from p to any triangle below node k: its
+    // box's, or its oriented box's if that is farther.
+    double node_distance2(std::uint32_t k, const Vec3& p) const
+    {
+        const Node& n = nodes[k];
+        const double d2 = box_distance2(n, p);
+        if (!(n.count & kHasObb)) return d2;
+        return std::max(d2, obb_distance2(obbs[obb_slot[k]], p));
+    }
     // Lexicographic minimum of (squared distance, face) over all triangles;
     // `hint` (a position in `tris`, or kNoFace) only changes the search order:
     // the search starts in the hint's leaf and climbs towards the root.
@@ -94,6 +142,7 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
     tris.resize(n);
     std::vector<Box> boxes(n);
     std::vector<Vec3> centroid(n);
+    std::vector<double> area(n);
     for (std::size_t f = 0; f < n; ++f) {
         const Face& t = mesh.faces[f];
         Tri& tri = tris[f];
@@ -107,9 +156,61 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
         boxes[f].grow(tri.b);
         boxes[f].grow(tri.c);
         centroid[f] = (tri.a + tri.b + tri.c) / 3.0;
+        area[f] = 0.5 * (tri.b - tri.a).cross(tri.c - tri.a).norm();
     }
     std::vector<std::uint32_t> order(n);
     std::iota(order.begin(), order.end(), 0u);
+    obbs.clear();
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> obb_of;  // (node, slot)
+    // The oriented box of the triangles order[begin..end): principal axes of
+    // their corners, extents over the corners, padded.
+    auto fit_obb = [&](std::uint32_t begin, std::uint32_t end, Obb& out) {
+        Vec3 mean = Vec3::Zero();
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const Tri& t = tris[order[i]];
+            mean += t.a + t.b + t.c;
+        }
+        mean /= 3.0 * double(end - begin);
+        Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const Tri& t = tris[order[i]];
+            for (const Vec3* q : {&t.a, &t.b, &t.c}) {
+                const Vec3 d = *q - mean;
+                cov += d * d.transpose();
+            }
+        }
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+        eig.computeDirect(cov);
+        Vec3 a0 = eig.eigenvectors().col(2);
+        Vec3 a1 = eig.eigenvectors().col(1);
+        if (!(a0.allFinite() && a1.allFinite() && a0.norm() > 0.5)) return false;
+        a0.normalize();
+        a1 = (a1 - a1.dot(a0) * a0);
+        if (!(a1.norm() > 0.5)) return false;
+        a1.normalize();
+        const Vec3 a2 = a0.cross(a1).normalized();
+        const std::array<Vec3, 3> ax{a0, a1, a2};
+        Vec3 lo = Vec3::Constant(kInf), hi = Vec3::Constant(-kInf);
+        for (std::uint32_t i = begin; i < end; ++i) {
+            const Tri& t = tris[order[i]];
+            for (const Vec3* q : {&t.a, &t.b, &t.c}) {
+                const Vec3 s(ax[0].dot(*q), ax[1].dot(*q), ax[2].dot(*q));
+                lo = lo.cwiseMin(s);
+                hi = hi.cwiseMax(s);
+            }
+        }
+        const Vec3 mid = (lo + hi) / 2.0;
+        const Vec3 half = (hi - lo) / 2.0;
+        const Vec3 centre = mid.x() * a0 + mid.y() * a1 + mid.z() * a2;
+        const double pad = kObbPad * (centre.cwiseAbs().maxCoeff() + half.maxCoeff() + lo.cwiseAbs().maxCoeff() +
+                                      hi.cwiseAbs().maxCoeff());
+        for (std::size_t k = 0; k < 3; ++k) {
+            out.centre[k] = centre[Eigen::Index(k)];
+            out.half[k] = half[Eigen::Index(k)] + pad;
+            for (std::size_t c = 0; c < 3; ++c) out.axis[k][c] = ax[k][Eigen::Index(c)];
+        }
+        return std::isfinite(pad);
+    };
 
     nodes.clear();
     nodes.reserve(2 * (n / kLeafSize + 1));
@@ -133,6 +234,19 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
             node.hi[std::size_t(k)] = box.hi[k];
         }
         const std::uint32_t count = task.end - task.begin;
+        double tri_area = 0.0;
+        for (std::uint32_t i = task.begin; i < task.end; ++i) tri_area += area[order[i]];
+        if (box.half_area() > kObbTryRatio * tri_area) {
+            Obb obb;
+            if (fit_obb(task.begin, task.end, obb)) {
+                const double obb_half_area =
+                    4.0 * (obb.half[0] * obb.half[1] + obb.half[1] * obb.half[2] + obb.half[2] * obb.half[0]);
+                if (obb_half_area < kObbKeepShare * box.half_area()) {
+                    obb_of.push_back({task.node, std::uint32_t(obbs.size())});
+                    obbs.push_back(obb);
+                }
+            }
+        }
         if (count <= kLeafSize) {
             node.first = task.begin;
             node.count = count;
@@ -204,12 +318,17 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
     std::vector<Tri> ordered(n);
     for (std::size_t i = 0; i < n; ++i) ordered[i] = tris[order[i]];
     tris.swap(ordered);
+    obb_slot.assign(obbs.empty() ? 0 : nodes.size(), 0);
+    for (const auto& [node, slot] : obb_of) {
+        nodes[node].count |= kHasObb;
+        obb_slot[node] = slot;
+    }
     parent_of.assign(nodes.size(), 0);
     leaf_of.assign(n, 0);
     for (std::size_t k = 0; k < nodes.size(); ++k) {
         const Node& node = nodes[k];
-        if (node.count > 0) {
-            for (std::uint32_t i = 0; i < node.count; ++i) leaf_of[node.first + i] = std::uint32_t(k);
+        if (node.triangles() > 0) {
+            for (std::uint32_t i = 0; i < node.triangles(); ++i) leaf_of[node.first + i] = std::uint32_t(k);
         } else {
             parent_of[node.first] = parent_of[node.first + 1] = std::uint32_t(k);
         }
@@ -251,12 +370,12 @@ ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, s
             const Entry e = stack[--top];
             if (e.d2 * keep > best_d2) continue;
             const Node& node = nodes[e.node];
-            if (node.count > 0) {
-                for (std::uint32_t i = 0; i < node.count; ++i) consider(node.first + i);
+            if (node.triangles() > 0) {
+                for (std::uint32_t i = 0; i < node.triangles(); ++i) consider(node.first + i);
                 continue;
             }
-            const double dl = box_distance2(nodes[node.first], p);
-            const double dr = box_distance2(nodes[node.first + 1], p);
+            const double dl = node_distance2(node.first, p);
+            const double dr = node_distance2(node.first + 1, p);
             const Entry l{node.first, dl};
             const Entry r{node.first + 1, dr};
             // Push the farther child first so that the nearer one is visited first.
@@ -268,16 +387,16 @@ ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, s
     };
 
     if (hint == kNoFace) {
-        descend(0, box_distance2(nodes[0], p));
+        descend(0, node_distance2(0, p));
     } else {
         // Start in the hint's leaf and climb to the root, searching the sibling
         // subtree at each level: every triangle is in exactly one of these.
         std::uint32_t node = leaf_of[hint];
-        for (std::uint32_t i = 0; i < nodes[node].count; ++i) consider(nodes[node].first + i);
+        for (std::uint32_t i = 0; i < nodes[node].triangles(); ++i) consider(nodes[node].first + i);
         while (node != 0) {
             const std::uint32_t parent = parent_of[node];
             const std::uint32_t sibling = node == nodes[parent].first ? node + 1 : node - 1;
-            const double d2 = box_distance2(nodes[sibling], p);
+            const double d2 = node_distance2(sibling, p);
             if (d2 * keep <= best_d2) descend(sibling, d2);
             node = parent;
         }
@@ -362,7 +481,9 @@ BoundingBox ClosestPointIndex::bounds() const
 std::size_t ClosestPointIndex::memory_bytes() const
 {
     return impl_->tris.capacity() * sizeof(Tri) + impl_->nodes.capacity() * sizeof(Node) +
-           (impl_->parent_of.capacity() + impl_->leaf_of.capacity()) * sizeof(std::uint32_t);
+           impl_->obbs.capacity() * sizeof(Obb) +
+           (impl_->parent_of.capacity() + impl_->leaf_of.capacity() + impl_->obb_slot.capacity()) *
+               sizeof(std::uint32_t);
 }
 
 }  // namespace meshdiff

@@ -162,3 +162,43 @@ TEST(ClosestPoint, IndexBoundsContainTheMesh)
     EXPECT_TRUE((index.bounds().max.array() >= b.max.array()).all());
     EXPECT_GT(index.memory_bytes(), 0u);
 }
+
+TEST(ClosestPoint, IndexEqualsBruteForceExactlyOnAFan)
+{
+    // 4000 slivers around one vertex: every triangle's box contains the hub
+    // region, so the index bounds them by oriented boxes too. Queries on the
+    // surface (along the hub's edges and inside the slivers, where the nearest
+    // triangles tie at distance 0 or nearly), off it, and the hub itself: the
+    // index's distance and face equal the brute force's (lowest face on ties).
+    Mesh m;
+    const int n = 4000;
+    m.points.emplace_back(0.0, 0.0, 0.1);
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * M_PI * i / n;
+        m.points.emplace_back(std::cos(a), std::sin(a), 0.01 * std::sin(7.0 * a));
+    }
+    for (int i = 0; i < n; ++i) m.faces.push_back({0, 1 + i, 1 + (i + 1) % n});
+    const ClosestPointIndex index(m);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<Vec3> queries = {m.points[0]};
+    for (int k = 0; k < 300; ++k) {
+        const std::size_t i = 1 + std::size_t(rng() % std::uint64_t(n));
+        const std::size_t j = 1 + i % std::size_t(n);
+        const double t = std::pow(u(rng), 3.0), s = u(rng);
+        queries.push_back(m.points[0] + t * (m.points[i] - m.points[0]));                              // on a hub edge
+        queries.push_back(m.points[0] + t * ((1 - s) * m.points[i] + s * m.points[j] - m.points[0]));  // in a sliver
+        queries.push_back(queries.back() + Vec3(0, 0, 1e-3 * (u(rng) - 0.5)));                         // just off it
+        queries.push_back(Vec3(2 * u(rng) - 1, 2 * u(rng) - 1, u(rng) - 0.5));                         // around
+    }
+    for (const Vec3& p : queries) {
+        const ClosestPoint bf = closest_point_brute_force(m, p);
+        const ClosestPoint ix = index.closest_point(p);
+        ASSERT_EQ(ix.distance, bf.distance) << p.transpose();
+        ASSERT_EQ(ix.face, bf.face) << p.transpose();
+    }
+    const auto batch = index.distances(queries);
+    for (std::size_t k = 0; k < queries.size(); ++k)
+        ASSERT_EQ(batch[k], closest_point_brute_force(m, queries[k]).distance) << k;
+    EXPECT_EQ(index.closest_point(m.points[0]).face, 0u);  // the hub: every face at distance 0
+}

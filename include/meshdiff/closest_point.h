@@ -31,7 +31,12 @@
 namespace meshdiff {
 
 //! Bounding-volume hierarchy over the triangles of a mesh, built once (binned
-//! SAH split, at most 4 triangles per leaf) and queried many times. The index
+//! SAH split, at most 4 triangles per leaf) and queried many times. A node
+//! whose axis-aligned box is far larger than its triangles (slivers: around a
+//! vertex of valence 100,000 every triangle's box holds the hub, and every
+//! query near it would visit them all) also gets an oriented box (principal
+//! axes, padded against rounding); the farther of the two bounds prunes. The
+//! answer is the same (the bounds only order and prune the search). The index
 //! keeps its own copy of the triangles; the mesh may be destroyed afterwards.
 //! Queries are const and thread-safe.
 class ClosestPointIndex
