@@ -122,6 +122,7 @@ struct BatchBfs
     const Adjacency& adj;
     const std::vector<double>& values;
     const bool all_defined;
+    const bool word_sums;  // see kWordSumDegree
     const int lmax;
     std::vector<Marks<W>> marks;
     std::vector<std::array<std::uint64_t, W>> frontier;
@@ -129,9 +130,14 @@ struct BatchBfs
     std::vector<double> sum;           // [level][kBatch], level 1..lmax
     std::vector<std::uint32_t> count;  // defined values
     std::vector<std::uint32_t> size;   // all vertices
+    // Per level and word: the values of the vertices that every centre of the
+    // word reached first at that level (word_sums only), added to each of
+    // those centres' sums after the level's own values.
+    std::vector<double> wsum;
+    std::vector<std::uint32_t> wcount, wsize;
 
-    BatchBfs(const Adjacency& a, const std::vector<double>& v, bool defined, int max_level)
-        : adj(a), values(v), all_defined(defined), lmax(max_level)
+    BatchBfs(const Adjacency& a, const std::vector<double>& v, bool defined, bool words, int max_level)
+        : adj(a), values(v), all_defined(defined), word_sums(words), lmax(max_level)
     {
         const std::size_t n = adj.size();
         marks.assign(n, Marks<W>{});
@@ -140,6 +146,9 @@ struct BatchBfs
         sum.resize(std::size_t(lmax + 1) * kBatch);
         count.resize(std::size_t(lmax + 1) * kBatch);
         size.resize(std::size_t(lmax + 1) * kBatch);
+        wsum.resize(std::size_t(lmax + 1) * W);
+        wcount.resize(std::size_t(lmax + 1) * W);
+        wsize.resize(std::size_t(lmax + 1) * W);
     }
 
     // Fills sum/count/size (cumulative over levels) for centres[0..nb).
@@ -148,6 +157,12 @@ struct BatchBfs
         std::fill(sum.begin(), sum.end(), 0.0);
         std::fill(count.begin(), count.end(), 0u);
         std::fill(size.begin(), size.end(), 0u);
+        std::fill(wsum.begin(), wsum.end(), 0.0);
+        std::fill(wcount.begin(), wcount.end(), 0u);
+        std::fill(wsize.begin(), wsize.end(), 0u);
+        // The centres of each word (a full word but in the last batch).
+        std::array<std::uint64_t, W> live{};
+        for (std::size_t k = 0; k < nb; ++k) live[k / 64] |= std::uint64_t(1) << (k % 64);
         flist.clear();
         touched.clear();
         for (std::size_t k = 0; k < nb; ++k) {
@@ -196,6 +211,16 @@ struct BatchBfs
                     m.next[w] = 0;
                     m.seen[w] |= bits;
                     frontier[v][w] = bits;
+                    if (word_sums && bits == live[w] && bits != 0) {
+                        // All centres of the word at once (around a hub): once per word.
+                        const std::size_t at = std::size_t(level) * W + std::size_t(w);
+                        ++wsize[at];
+                        if (defined) {
+                            wsum[at] += val;
+                            ++wcount[at];
+                        }
+                        continue;
+                    }
                     double* ws = lsum + 64 * w;
                     std::uint32_t* wc = lcount + 64 * w;
                     if (all_defined) {
@@ -223,6 +248,14 @@ struct BatchBfs
         }
         for (auto v : flist) frontier[v] = std::array<std::uint64_t, W>{};
         for (auto v : touched) marks[v] = Marks<W>{};
+        if (word_sums)
+            for (int level = 1; level <= lmax; ++level)
+                for (std::size_t k = 0; k < nb; ++k) {
+                    const std::size_t at = std::size_t(level) * W + k / 64, i = std::size_t(level) * kBatch + k;
+                    sum[i] += wsum[at];
+                    count[i] += wcount[at];
+                    size[i] += wsize[at];
+                }
         for (int level = 2; level <= lmax; ++level)
             for (std::size_t k = 0; k < kBatch; ++k) {
                 sum[std::size_t(level) * kBatch + k] += sum[std::size_t(level - 1) * kBatch + k];
@@ -234,6 +267,15 @@ struct BatchBfs
 };
 
 constexpr int kWords = MESHDIFF_BFS_WORDS;
+
+// Above this valence somewhere in the mesh, a vertex reached by all centres of
+// a mask word at the same level adds its value once to the word's sum, not
+// once to each centre's: around a hub of valence d, d vertices are reached by
+// whole batches at once, d x 128 additions per batch without this, so d^2 / 2
+// in all. It changes only the rounding of those sums (the order of addition),
+// so it is kept off below a valence no real mesh has, whose sums stay as
+// they were.
+constexpr std::size_t kWordSumDegree = 1024;
 
 }  // namespace
 
@@ -258,10 +300,12 @@ DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
     for (auto v : clustered_order(mesh, adj, values, BatchBfs<kWords>::kBatch)) centres.push_back(v);
     const std::size_t n_batches = (centres.size() + BatchBfs<kWords>::kBatch - 1) / BatchBfs<kWords>::kBatch;
     const bool all_defined = centres.size() == n;
+    bool word_sums = false;
+    for (std::size_t v = 0; v < n && !word_sums; ++v) word_sums = adj.degree(v) > kWordSumDegree;
 
 #pragma omp parallel
     {
-        BatchBfs<kWords> bfs(adj, values, all_defined, lmax);
+        BatchBfs<kWords> bfs(adj, values, all_defined, word_sums, lmax);
         constexpr std::size_t kBatch = BatchBfs<kWords>::kBatch;
 #pragma omp for schedule(dynamic, 2)
         for (std::ptrdiff_t ib = 0; ib < std::ptrdiff_t(n_batches); ++ib) {

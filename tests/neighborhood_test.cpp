@@ -231,3 +231,32 @@ TEST(DiskMeans, RejectLevelsBelowOneAndMismatchedSizes)
     EXPECT_THROW(disk_means(icosphere(2).mesh, adj, values, {1}), InvalidArgumentError);
     EXPECT_NO_THROW(disk_means(s.mesh, adj, values, {1, 100}));
 }
+
+TEST(DiskMeans, AgreeWithBreadthFirstSearchAroundAHub)
+{
+    // A fan of 1500 triangles around vertex 0 (valence above 1024: vertices
+    // reached by a whole mask word at once add their value once per word) and
+    // a grid beside it, joined to the rim: from level 2 on a rim centre's disk
+    // holds the whole rim. Some values undefined, so that sizes and counts
+    // differ.
+    Mesh mesh;
+    const int n = 1500;
+    mesh.points.emplace_back(0.0, 0.0, 0.1);
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * M_PI * i / n;
+        mesh.points.emplace_back(std::cos(a), std::sin(a), 0.01 * std::sin(7.0 * a));
+    }
+    for (int i = 0; i < n; ++i) mesh.faces.push_back({0, 1 + i, 1 + (i + 1) % n});
+    append(mesh, plane_grid(20, 20, 0.1).mesh, Vec3(1.5, 0, 0));
+    mesh.faces.push_back({1, n + 1, n + 2});  // rim vertex 1 to the grid's first two vertices
+    ASSERT_GT(vertex_adjacency(mesh).degree(0), 1024u);
+    std::mt19937_64 rng(11);
+    std::vector<double> values(mesh.n_vertices());
+    for (auto& v : values) v = double(rng() % 4096) / 64.0 - 30.0;
+    for (std::size_t i = 5; i < values.size(); i += 13) values[i] = std::nan("");
+    expect_brute_force_disk_means(mesh, values, {1, 2, 4, 3});
+    // All defined (one counter per centre).
+    for (auto& v : values)
+        if (std::isnan(v)) v = 0.5;
+    expect_brute_force_disk_means(mesh, values, {2, 1});
+}

@@ -37,6 +37,12 @@ struct DiskMeans
 //! in Morton order), up to the largest
 //! level. Parallel over batches with OpenMP; the result does not depend on the
 //! thread count (each centre's sums are accumulated in a fixed order).
+//! Around a hub (a mesh with a vertex of valence above 1024), a vertex that
+//! all 64 centres of a mask word reach first at the same level adds its value
+//! once to the word's sum instead of once per centre (the sum is then added to
+//! each centre's): otherwise a hub of valence d costs d^2 / 2 additions (a fan
+//! of 100,000 triangles: 5e9). Only the rounding of those sums changes, and
+//! only on such meshes.
 //! \param mesh       supplies the positions for the batch order
 //! \param levels     each >= 1, any order, duplicates allowed
 //! \param with_sizes also fill DiskMeans::size
