@@ -25,12 +25,131 @@ enum class FitResult
     Failed
 };
 
+// Squared distance, the one key of every "nearest" below.
+inline double dist2(const Vec3& a, const Vec3& b)
+{
+    return (a - b).squaredNorm();
+}
+
+using Ranked = std::pair<double, std::uint32_t>;  // (squared distance, vertex id): the order of "nearest"
+
+// A k-d tree over the neighbours of one hub vertex: the k nearest of them to a
+// point, exactly in the order (squared distance, id). First a radius that
+// certainly holds k of them: the k-th nearest within the smallest subtree on
+// the point's path that has k items; then every item within that radius (a
+// subtree is skipped only if its splitting plane alone is farther, so ties
+// are kept), and the k first of those.
+class HubTree
+{
+public:
+    HubTree(const std::vector<Vec3>& points, const std::uint32_t* first, const std::uint32_t* last)
+        : points_(&points), ids_(first, last)
+    {
+        nodes_.push_back({0, std::uint32_t(ids_.size())});
+        expand(0);
+    }
+
+    // The k nearest into `out` (cleared first), in no particular order.
+    void nearest(const Vec3& p, std::size_t k, std::vector<Ranked>& out) const
+    {
+        out.clear();
+        if (k == 0) return;
+        std::uint32_t node = 0;
+        while (nodes_[node].left != 0) {
+            const Node& n = nodes_[node];
+            const std::uint32_t child = p[n.axis] - n.split <= 0.0 ? n.left : n.left + 1;
+            if (nodes_[child].end - nodes_[child].begin < k) break;
+            node = child;
+        }
+        for (std::uint32_t i = nodes_[node].begin; i < nodes_[node].end; ++i)
+            out.push_back({dist2((*points_)[ids_[i]], p), ids_[i]});
+        if (out.size() > k) {
+            std::nth_element(out.begin(), out.begin() + std::ptrdiff_t(k - 1), out.end());
+            const double r2 = out[k - 1].first;
+            out.clear();
+            within(0, p, r2, out);
+            std::nth_element(out.begin(), out.begin() + std::ptrdiff_t(k - 1), out.end());
+            out.resize(k);
+        }
+    }
+
+private:
+    struct Node
+    {
+        std::uint32_t begin, end;  // the items of the subtree
+        std::uint32_t left = 0;    // children left, left + 1 (0: leaf)
+        int axis = 0;
+        double split = 0.0;
+    };
+    static constexpr std::uint32_t kLeaf = 8;
+    const std::vector<Vec3>* points_;
+    std::vector<std::uint32_t> ids_;
+    std::vector<Node> nodes_;
+
+    // Splits a node at the median of its longest axis, recursively; the
+    // children of a node are adjacent in nodes_. Items before the median have
+    // coordinate <= split, items from it on >= split.
+    void expand(std::uint32_t k_node)
+    {
+        const std::uint32_t begin = nodes_[k_node].begin, end = nodes_[k_node].end;
+        if (end - begin <= kLeaf) return;
+        const auto& pts = *points_;
+        Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            lo = lo.cwiseMin(pts[ids_[i]]);
+            hi = hi.cwiseMax(pts[ids_[i]]);
+        }
+        int axis = 0;
+        (hi - lo).maxCoeff(&axis);
+        const std::uint32_t mid = begin + (end - begin) / 2;
+        std::nth_element(ids_.begin() + begin, ids_.begin() + mid, ids_.begin() + end,
+                         [&](std::uint32_t a, std::uint32_t b) {
+                             const double xa = pts[a][axis], xb = pts[b][axis];
+                             return xa < xb || (xa == xb && a < b);
+                         });
+        const auto left = std::uint32_t(nodes_.size());
+        nodes_.push_back({begin, mid});
+        nodes_.push_back({mid, end});
+        nodes_[k_node].left = left;
+        nodes_[k_node].axis = axis;
+        nodes_[k_node].split = pts[ids_[mid]][axis];
+        expand(left);
+        expand(left + 1);
+    }
+
+    void within(std::uint32_t k_node, const Vec3& p, double r2, std::vector<Ranked>& out) const
+    {
+        const Node& n = nodes_[k_node];
+        if (n.left == 0) {
+            for (std::uint32_t i = n.begin; i < n.end; ++i) {
+                const double d2 = dist2((*points_)[ids_[i]], p);
+                if (d2 <= r2) out.push_back({d2, ids_[i]});
+            }
+            return;
+        }
+        const double diff = p[n.axis] - n.split;
+        if (diff <= 0.0 || diff * diff <= r2) within(n.left, p, r2, out);
+        if (diff >= 0.0 || diff * diff <= r2) within(n.left + 1, p, r2, out);
+    }
+};
+
+// The k-d trees of the vertices of degree above kMaxFitNeighbors + 1 (hubs):
+// a 2-ring through such a vertex is always capped.
+struct HubTrees
+{
+    std::vector<std::int32_t> slot;  // per vertex: index in `trees`, or -1
+    std::vector<HubTree> trees;
+};
+
+constexpr std::size_t kHubDegree = kMaxFitNeighbors + 1;
+
 // Scratch space per thread: neighbourhood and least-squares system.
 struct FitScratch
 {
     std::vector<std::uint32_t> nbrs;
     std::vector<std::uint32_t> stamp;  // visited marks for the 2-ring
     std::uint32_t mark = 0;
+    std::vector<Ranked> rest, near;  // candidates of a capped 2-ring
     Eigen::Matrix<double, Eigen::Dynamic, 7> M;
     Eigen::VectorXd rhs;
     Eigen::Matrix<double, Eigen::Dynamic, 3> Q;
@@ -40,10 +159,15 @@ struct FitScratch
     Eigen::VectorXd qrhs;
 };
 
-void gather_neighbourhood(std::size_t v, const Adjacency& adj, int min_neighbors, FitScratch& s, bool& widened)
+// The fitting neighbourhood of v into s.nbrs: the 1-ring, or, below
+// min_neighbors, the 2-ring (1-ring first, then in the order found), cut to
+// the 1-ring and the nearest others, kMaxFitNeighbors in all, when larger.
+void gather_neighbourhood(std::size_t v, const Mesh& mesh, const Adjacency& adj, const HubTrees& hubs,
+                          int min_neighbors, FitScratch& s, bool& widened, bool& capped)
 {
     s.nbrs.assign(adj.begin(v), adj.end(v));
     widened = false;
+    capped = false;
     if (int(s.nbrs.size()) >= min_neighbors) return;
     widened = true;
     if (++s.mark == 0) {
@@ -53,12 +177,43 @@ void gather_neighbourhood(std::size_t v, const Adjacency& adj, int min_neighbors
     s.stamp[v] = s.mark;
     for (auto w : s.nbrs) s.stamp[w] = s.mark;
     const std::size_t ring1 = s.nbrs.size();
-    for (std::size_t k = 0; k < ring1; ++k)
+    bool through_hub = false;
+    for (std::size_t k = 0; k < ring1; ++k) {
+        if (!hubs.slot.empty() && hubs.slot[s.nbrs[k]] >= 0) {
+            through_hub = true;
+            continue;
+        }
         for (auto it = adj.begin(s.nbrs[k]); it != adj.end(s.nbrs[k]); ++it)
             if (s.stamp[*it] != s.mark) {
                 s.stamp[*it] = s.mark;
                 s.nbrs.push_back(*it);
             }
+    }
+    if (!through_hub && s.nbrs.size() <= kMaxFitNeighbors) return;
+
+    // Capped: the 1-ring and the `keep` nearest of the rest of the 2-ring. The
+    // nearest `keep` of a hub's neighbours outside the 1-ring and v are among
+    // its keep + ring1 + 1 nearest (v and the 1-ring can take ring1 places).
+    capped = true;
+    const Vec3& p = mesh.points[v];
+    const std::size_t keep = kMaxFitNeighbors - ring1;
+    s.rest.clear();
+    for (std::size_t k = ring1; k < s.nbrs.size(); ++k) s.rest.push_back({dist2(mesh.points[s.nbrs[k]], p), s.nbrs[k]});
+    for (std::size_t k = 0; k < ring1; ++k) {
+        const std::int32_t slot = hubs.slot.empty() ? -1 : hubs.slot[s.nbrs[k]];
+        if (slot < 0) continue;
+        hubs.trees[std::size_t(slot)].nearest(p, keep + ring1 + 1, s.near);
+        for (const Ranked& r : s.near)
+            if (s.stamp[r.second] != s.mark) {
+                s.stamp[r.second] = s.mark;
+                s.rest.push_back(r);
+            }
+    }
+    const std::size_t take = std::min(keep, s.rest.size());
+    if (take < s.rest.size()) std::nth_element(s.rest.begin(), s.rest.begin() + std::ptrdiff_t(take), s.rest.end());
+    std::sort(s.rest.begin(), s.rest.begin() + std::ptrdiff_t(take));
+    s.nbrs.resize(ring1);
+    for (std::size_t k = 0; k < take; ++k) s.nbrs.push_back(s.rest[k].second);
 }
 
 // The fitting estimators (cubic with quadric fallback, or quadric only).
@@ -152,7 +307,14 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
     const bool cubic = opt.method == CurvatureMethod::GoldfeatherCubic;
     CurvatureField field;
     field.H.assign(n, kNaN);
-    std::vector<unsigned char> how(n, 0);  // bit 0 widened, bit 1 fallback, bit 2 no normal
+    std::vector<unsigned char> how(n, 0);  // bit 0 widened, bit 1 fallback, bit 2 no normal, bit 3 capped
+    HubTrees hubs;
+    for (std::size_t v = 0; v < n; ++v)
+        if (adj.degree(v) > kHubDegree) {
+            if (hubs.slot.empty()) hubs.slot.assign(n, -1);
+            hubs.slot[v] = std::int32_t(hubs.trees.size());
+            hubs.trees.emplace_back(mesh.points, adj.begin(v), adj.end(v));
+        }
 #pragma omp parallel
     {
         FitScratch s;
@@ -164,14 +326,16 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
                 how[v] = 4;
                 continue;
             }
-            bool widened = false;
-            gather_neighbourhood(v, adj, opt.min_neighbors, s, widened);
+            bool widened = false, capped = false;
+            gather_neighbourhood(v, mesh, adj, hubs, opt.min_neighbors, s, widened, capped);
+            if (capped) how[v] = 8;
             if (s.nbrs.size() < 3) continue;
             double H = kNaN;
             const FitResult r = fit_vertex(v, mesh, normals, opt, cubic, s, H);
             if (r == FitResult::Failed) continue;
             field.H[v] = H;
-            how[v] = static_cast<unsigned char>((widened ? 1 : 0) | (cubic && r == FitResult::Quadric ? 2 : 0));
+            how[v] = static_cast<unsigned char>((widened ? 1 : 0) | (cubic && r == FitResult::Quadric ? 2 : 0) |
+                                                (capped ? 8 : 0));
         }
     }
     for (std::size_t v = 0; v < n; ++v) {
@@ -179,6 +343,10 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
         if (how[v] & 1) ++field.widened;
         if (how[v] & 2) ++field.quadric_fallback;
         if (how[v] & 4) ++field.no_normal;
+        if (how[v] & 8) {
+            ++field.capped;
+            if (field.capped_vertices.size() < kCappedVerticesListed) field.capped_vertices.push_back(std::uint32_t(v));
+        }
     }
     return field;
 }

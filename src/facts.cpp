@@ -1,6 +1,7 @@
 #include "meshdiff/facts.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace meshdiff {
 
@@ -55,6 +56,12 @@ std::vector<Warning> warnings(const MeshFacts& f, const RoughnessProfile* p)
         if (p->curvature_undefined)
             add(WarningKind::UndefinedCurvature, double(p->curvature_undefined),
                 fmt::format("{} vertices have undefined curvature and are left out", p->curvature_undefined));
+        if (p->curvature_capped)
+            add(WarningKind::CappedNeighbourhoods, double(p->curvature_capped),
+                fmt::format("{} curvature fits beside a vertex of very high valence used a capped 2-ring (the "
+                            "1-ring and the nearest others, {} in all; vertices {}{})",
+                            p->curvature_capped, kMaxFitNeighbors, fmt::join(p->curvature_capped_vertices, ", "),
+                            p->curvature_capped > p->curvature_capped_vertices.size() ? ", ..." : ""));
         auto check = [&](const LevelRoughness& l, const std::string& name) {
             if (l.top_share > 0.5)
                 add(WarningKind::OutliersDominate, l.top_share,

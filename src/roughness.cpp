@@ -131,6 +131,8 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
     p.curvature_undefined = field.undefined;
     p.curvature_widened = field.widened;
     p.curvature_fallback = field.quadric_fallback;
+    p.curvature_capped = field.capped;
+    p.curvature_capped_vertices = field.capped_vertices;
     profile_from_H(p, unit, adj, std::move(field.H), field.undefined, options);
     return p;
 }

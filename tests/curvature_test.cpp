@@ -4,9 +4,12 @@
 
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
+#include "meshdiff/normals.h"
 #include "meshdiff/shapes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 using namespace meshdiff;
@@ -158,4 +161,121 @@ TEST(MeanCurvature, RejectsBadOptions)
     EXPECT_THROW(mean_curvature(s.mesh, o), InvalidArgumentError);
     EXPECT_THROW(parse_enum<CurvatureMethod>("rusinkiewicz"), InvalidArgumentError);
     EXPECT_EQ(parse_enum<CurvatureMethod>("meyer"), CurvatureMethod::MeyerCotangent);
+}
+
+namespace {
+
+// A fan of n triangles around vertex 0 at (0, 0, 0.1): rim vertices 1..n on a
+// circle of radius 1 + jitter x (a number in [0, 1)), z = 0.01 sin(7a).
+Mesh fan(int n, double jitter = 0.0)
+{
+    Mesh m;
+    m.points.emplace_back(0.0, 0.0, 0.1);
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * M_PI * i / n;
+        const double r = 1.0 + jitter * std::fmod(0.618034 * i * i, 1.0);
+        m.points.emplace_back(r * std::cos(a), r * std::sin(a), 0.01 * std::sin(7.0 * a));
+    }
+    for (int i = 0; i < n; ++i) m.faces.push_back({0, 1 + i, 1 + (i + 1) % n});
+    return m;
+}
+
+// The capped neighbourhood of v by its definition: the 1-ring in adjacency
+// order, then the nearest of the rest of the 2-ring by (squared distance, id),
+// kMaxFitNeighbors in all.
+std::vector<std::uint32_t> brute_force_capped(const Mesh& m, const Adjacency& adj, std::size_t v)
+{
+    std::vector<std::uint32_t> out(adj.begin(v), adj.end(v));
+    std::vector<std::pair<double, std::uint32_t>> rest;
+    for (auto it = adj.begin(v); it != adj.end(v); ++it)
+        for (auto jt = adj.begin(*it); jt != adj.end(*it); ++jt)
+            if (*jt != v && std::find(out.begin(), out.end(), *jt) == out.end())
+                rest.push_back({(m.points[*jt] - m.points[v]).squaredNorm(), *jt});
+    std::sort(rest.begin(), rest.end());
+    rest.erase(std::unique(rest.begin(), rest.end()), rest.end());
+    EXPECT_GT(out.size() + rest.size(), kMaxFitNeighbors) << "vertex " << v << " is not capped";
+    for (std::size_t k = 0; out.size() < kMaxFitNeighbors; ++k) out.push_back(rest[k].second);
+    return out;
+}
+
+// H of \p check computed on neighbourhoods given as the adjacency rows of
+// those vertices (1-ring fits, never widened), the same normals.
+std::vector<double> fit_on_rows(const Mesh& m, const Adjacency& adj, const std::vector<std::size_t>& check)
+{
+    Adjacency rows;
+    rows.offset.push_back(0);
+    for (std::size_t v = 0; v < adj.size(); ++v) {
+        if (std::find(check.begin(), check.end(), v) != check.end()) {
+            const auto hood = brute_force_capped(m, adj, v);
+            rows.index.insert(rows.index.end(), hood.begin(), hood.end());
+        } else {
+            rows.index.insert(rows.index.end(), adj.begin(v), adj.end(v));
+        }
+        rows.offset.push_back(std::uint32_t(rows.index.size()));
+    }
+    const auto H = mean_curvature(m, rows, vertex_normals(m)).H;
+    std::vector<double> out;
+    for (auto v : check) out.push_back(H[v]);
+    return out;
+}
+
+}  // namespace
+
+TEST(MeanCurvature, CapEngagesBesideAHubAndCountsTheFits)
+{
+    // Every rim vertex of a fan has 3 neighbours, so widens to its 2-ring,
+    // which holds the whole rim: capped. The hub fits on its 1-ring (never capped).
+    const int n = 2000;
+    const auto f = mean_curvature(fan(n));
+    EXPECT_EQ(f.capped, std::size_t(n));
+    EXPECT_EQ(f.widened, std::size_t(n));
+    EXPECT_EQ(f.undefined, 0u);
+    EXPECT_EQ(f.capped_vertices, (std::vector<std::uint32_t>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10}));
+    // A rim vertex's 2-ring holds the hub and the other n - 1 rim vertices: n
+    // in all. Up to the cap nothing changes; one more, and every rim vertex is
+    // capped (scanned and cut at n = cap + 1, through the hub's k-d tree above).
+    const auto at_cap = mean_curvature(fan(int(kMaxFitNeighbors)));
+    EXPECT_EQ(at_cap.capped, 0u);
+    EXPECT_TRUE(at_cap.capped_vertices.empty());
+    EXPECT_EQ(at_cap.widened, kMaxFitNeighbors);
+    for (std::size_t k : {kMaxFitNeighbors + 1, kMaxFitNeighbors + 2}) EXPECT_EQ(mean_curvature(fan(int(k))).capped, k);
+    // The largest latitude-longitude sphere of the estimator tables (poles of
+    // valence 128) is not capped; one with 400 longitudes is, beside its poles.
+    EXPECT_EQ(mean_curvature(uv_sphere(128, 64).mesh).capped, 0u);
+    EXPECT_EQ(mean_curvature(uv_sphere(400, 40).mesh).capped, 800u);
+}
+
+TEST(MeanCurvature, CappedFitIsTheFitOnTheNearestOfTheTwoRing)
+{
+    // Through a hub (k-d tree of its neighbours, degree above kMaxFitNeighbors + 1):
+    // rim vertices of a fan with irregular radii. H equals, bit for bit, the
+    // fit on the neighbourhood built by the definition.
+    const Mesh m = fan(3000, 0.3);
+    const Adjacency adj = vertex_adjacency(m);
+    const std::vector<std::size_t> check = {1, 2, 77, 1500, 2999, 3000};
+    const auto H = mean_curvature(m).H;
+    const auto want = fit_on_rows(m, adj, check);
+    for (std::size_t k = 0; k < check.size(); ++k) EXPECT_EQ(H[check[k]], want[k]) << "vertex " << check[k];
+
+    // Without a hub (every 2-ring scanned, then cut): vertex 0 with neighbours
+    // 1, 2, 3, where 1 and 2 are centres of fans of 200 triangles (2-ring of
+    // more than 400 vertices).
+    Mesh two;
+    two.points = {Vec3(0, 0, 0.2), Vec3(-1.2, 0, 0), Vec3(1.2, 0, 0), Vec3(0, 1, 0)};
+    two.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}};
+    for (int hub : {1, 2}) {
+        const auto first = std::int32_t(two.points.size());
+        for (int i = 0; i < 200; ++i) {
+            const double a = 2.0 * M_PI * i / 200;
+            two.points.push_back(two.points[std::size_t(hub)] +
+                                 Vec3(std::cos(a), std::sin(a), 0.05 * std::cos(3 * a)) * (1.0 + 0.001 * i));
+        }
+        for (int i = 0; i < 200; ++i) two.faces.push_back({hub, first + i, first + (i + 1) % 200});
+    }
+    const Adjacency adj2 = vertex_adjacency(two);
+    ASSERT_LE(adj2.degree(1), kMaxFitNeighbors + 1);
+    const auto f = mean_curvature(two);
+    EXPECT_GE(f.capped, 1u);
+    EXPECT_EQ(f.capped_vertices.front(), 0u);
+    EXPECT_EQ(f.H[0], fit_on_rows(two, adj2, {0})[0]);
 }

@@ -41,7 +41,7 @@ MESHDIFF_SPELLINGS(SmoothingUpdate, "post", "pre");
 MESHDIFF_SPELLINGS(StepControl, "fixed", "adaptive");
 MESHDIFF_SPELLINGS(WarningKind, "unreferenced-vertices", "repeated-corner-faces", "isolated-vertices", "non-manifold",
                    "orientation-conflicts", "degenerate-faces", "duplicate-faces", "open-surface", "components",
-                   "undefined-curvature", "outliers-dominate", "no-defined-d");
+                   "undefined-curvature", "outliers-dominate", "no-defined-d", "capped-neighbourhoods");
 #undef MESHDIFF_SPELLINGS
 
 template <class E>

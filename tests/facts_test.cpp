@@ -219,6 +219,30 @@ TEST(Warnings, NoDefinedDAtEveryLevelWhenOneVertexAloneHasH)
     }
 }
 
+TEST(Warnings, CappedNeighbourhoodsNameTheCountAndTheFirstVertices)
+{
+    // A fan of 300 triangles: every rim vertex widens to a 2-ring of 300
+    // vertices, above kMaxFitNeighbors.
+    LoadedMesh m;
+    m.mesh.points.emplace_back(0.0, 0.0, 0.1);
+    for (int i = 0; i < 300; ++i)
+        m.mesh.points.emplace_back(std::cos(i * M_PI / 150), std::sin(i * M_PI / 150), 0.01 * std::sin(i * M_PI / 50));
+    for (int i = 0; i < 300; ++i) m.mesh.faces.push_back({0, 1 + i, 1 + (i + 1) % 300});
+    ProfileOptions o;
+    o.levels = {1};
+    const auto p = roughness_profile(m.mesh, o);
+    EXPECT_EQ(p.curvature_capped, 300u);
+    EXPECT_EQ(p.curvature_capped_vertices, (std::vector<std::uint32_t>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10}));
+    const auto w = warnings(mesh_facts(m), &p);
+    ASSERT_EQ(kinds(w), (std::vector<WarningKind>{WarningKind::OpenSurface, WarningKind::CappedNeighbourhoods}));
+    EXPECT_EQ(w[1].value, 300.0);
+    EXPECT_EQ(w[1].level, -1);
+    EXPECT_NE(w[1].text.find("300 curvature fits"), std::string::npos) << w[1].text;
+    EXPECT_NE(w[1].text.find("256 in all; vertices 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, ...)"), std::string::npos)
+        << w[1].text;
+    // Without a capped fit there is no such warning (NoneForACleanIcosphereAndItsProfile).
+}
+
 TEST(WarningKind, NamesRoundTrip)
 {
     for (const auto& entry : EnumNames<WarningKind>::names) {

@@ -68,9 +68,29 @@ TEST(ProfileJson, HasTheSchemaKeysAndOnlyFiniteNumbers)
     EXPECT_EQ(j["levels"], nlohmann::json({1, 2, 5}));
     EXPECT_EQ(j["mesh"]["components"], 4);
     EXPECT_TRUE(j["curvature"].contains("undefined_vertices"));
+    EXPECT_FALSE(j["curvature"].contains("capped_neighbourhoods"));  // only when a fit was capped
     EXPECT_GT(j["mesh"]["scale_factor"].get<double>(), 0.0);
     EXPECT_TRUE(all_finite(j));
     EXPECT_FALSE(j["warnings"].empty());
+}
+
+TEST(ProfileJson, CappedNeighbourhoodsAreListedOnlyWhenThereAreSome)
+{
+    // A fan of 400 triangles: its 400 rim vertices fit on capped 2-rings.
+    LoadedMesh m;
+    m.mesh.points.emplace_back(0.0, 0.0, 0.1);
+    for (int i = 0; i < 400; ++i) m.mesh.points.emplace_back(std::cos(i * M_PI / 200), std::sin(i * M_PI / 200), 0.0);
+    for (int i = 0; i < 400; ++i) m.mesh.faces.push_back({0, 1 + i, 1 + (i + 1) % 400});
+    ProfileOptions o;
+    o.levels = {1};
+    const auto j = profile_json(mesh_facts(m), roughness_profile(m.mesh, o));
+    EXPECT_EQ(j["curvature"]["capped_neighbourhoods"], 400);
+    EXPECT_EQ(j["curvature"]["capped_vertices"], nlohmann::json({1, 2, 3, 4, 5, 6, 7, 8, 9, 10}));
+    EXPECT_EQ(j["curvature"]["max_fit_neighbors"], kMaxFitNeighbors);
+    bool warned = false;
+    for (const auto& w : j["warnings"])
+        warned = warned || w.get<std::string>().find("capped 2-ring") != std::string::npos;
+    EXPECT_TRUE(warned);
 }
 
 TEST(CompareJson, HasTheSchemaKeysAndHausdorffIsTheLargerMaximum)

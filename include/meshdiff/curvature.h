@@ -25,6 +25,18 @@
 //!   normal rows are used only if its normal is within `max_normal_angle_deg`
 //!   of the vertex normal; if the system is rank-deficient, fall back to the
 //!   position-only quadric; if that fails too, H is undefined (NaN).
+//!   Cap of the widened neighbourhood (not in METHOD.md; docs/accuracy.md):
+//!   a 2-ring of more than kMaxFitNeighbors vertices, which only a vertex
+//!   beside a hub of very high valence has (a fan of 100,000 triangles around
+//!   one vertex: every rim vertex's 2-ring holds the whole rim), is cut to its
+//!   1-ring plus the nearest other 2-ring vertices, kMaxFitNeighbors in all
+//!   ("nearest": by squared distance, ties by the lower vertex id; these
+//!   follow the 1-ring nearest first). Without the cap such a mesh costs
+//!   valence^2 (20,000 fits of 20,000 neighbours at valence 20,000). The largest
+//!   2-ring of any vertex of the meshes in ../shared/data/meshes is 88
+//!   (teapot.obj), so no real mesh is affected (a latitude-longitude sphere
+//!   is, beside its poles, from 250 longitudes on); capped fits are counted
+//!   (CurvatureField::capped) and reported as a warning.
 //! - Quadric: the position-only quadric z = A/2 x^2 + B xy + C/2 y^2 on the
 //!   same neighbourhood (Goldfeather & Interrante's "method 2").
 //! - MeyerCotangent: Meyer, Desbrun, Schroeder, Barr, "Discrete
@@ -37,6 +49,7 @@
 #include "meshdiff/mesh.h"
 #include "meshdiff/topology.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -73,6 +86,13 @@ struct EnumNames<RowWeighting>
         {{RowWeighting::None, "none"}, {RowWeighting::InverseSquare, "inverse-square"}}};
 };
 
+//! Largest fitting neighbourhood of a widened (2-ring) fit: see the file
+//! comment. Fits on the 1-ring are never capped.
+constexpr std::size_t kMaxFitNeighbors = 256;
+
+//! How many capped vertex ids CurvatureField::capped_vertices keeps.
+constexpr std::size_t kCappedVerticesListed = 10;
+
 struct CurvatureOptions
 {
     CurvatureMethod method = CurvatureMethod::GoldfeatherCubic;  //!< estimator
@@ -85,10 +105,12 @@ struct CurvatureOptions
 struct CurvatureField
 {
     std::vector<double> H;
-    std::size_t undefined = 0;         //!< vertices with NaN H
-    std::size_t widened = 0;           //!< fits that used the 2-ring
-    std::size_t quadric_fallback = 0;  //!< cubic fits that fell back to the quadric
-    std::size_t no_normal = 0;         //!< vertices without a vertex normal (all faces degenerate)
+    std::size_t undefined = 0;                   //!< vertices with NaN H
+    std::size_t widened = 0;                     //!< fits that used the 2-ring
+    std::size_t quadric_fallback = 0;            //!< cubic fits that fell back to the quadric
+    std::size_t no_normal = 0;                   //!< vertices without a vertex normal (all faces degenerate)
+    std::size_t capped = 0;                      //!< 2-ring neighbourhoods cut to kMaxFitNeighbors (fit defined or not)
+    std::vector<std::uint32_t> capped_vertices;  //!< the lowest ids of those (at most kCappedVerticesListed)
 };
 
 //! The error of an estimated H against a reference H (an exact one).

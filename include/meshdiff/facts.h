@@ -43,14 +43,15 @@ enum class WarningKind
     Components,            //!< value: connected components (more than 1)
     UndefinedCurvature,    //!< value: vertices with undefined H
     OutliersDominate,      //!< level: the level; value: top_share (above 0.5)
-    NoDefinedD             //!< level: the level; value: 0 (no vertex has a defined D)
+    NoDefinedD,            //!< level: the level; value: 0 (no vertex has a defined D)
+    CappedNeighbourhoods   //!< value: curvature fits on a capped 2-ring (curvature.h, kMaxFitNeighbors)
 };
 
 template <>
 struct EnumNames<WarningKind>
 {
     static constexpr const char* what = "warning kind";
-    static constexpr std::array<EnumName<WarningKind>, 12> names{
+    static constexpr std::array<EnumName<WarningKind>, 13> names{
         {{WarningKind::UnreferencedVertices, "unreferenced-vertices"},
          {WarningKind::RepeatedCornerFaces, "repeated-corner-faces"},
          {WarningKind::IsolatedVertices, "isolated-vertices"},
@@ -62,7 +63,8 @@ struct EnumNames<WarningKind>
          {WarningKind::Components, "components"},
          {WarningKind::UndefinedCurvature, "undefined-curvature"},
          {WarningKind::OutliersDominate, "outliers-dominate"},
-         {WarningKind::NoDefinedD, "no-defined-d"}}};
+         {WarningKind::NoDefinedD, "no-defined-d"},
+         {WarningKind::CappedNeighbourhoods, "capped-neighbourhoods"}}};
 };
 
 //! One warning about a mesh or its profile.
@@ -75,8 +77,8 @@ struct Warning
 };
 
 //! The warnings about \p facts (defects of the mesh) and, with \p profile,
-//! about its profile (undefined curvature, outlier-dominated levels, levels
-//! without a defined D), in that order.
+//! about its profile (undefined curvature, capped curvature neighbourhoods,
+//! outlier-dominated levels, levels without a defined D), in that order.
 std::vector<Warning> warnings(const MeshFacts& facts, const RoughnessProfile* profile = nullptr);
 
 }  // namespace meshdiff

@@ -49,14 +49,16 @@ struct LevelRoughness
 
 struct RoughnessProfile
 {
-    Normalization normalization;           //!< c and s of the unit-sphere scaling
-    std::size_t vertices = 0;              //!< vertices of the mesh
-    CurvatureOptions curvature_options{};  //!< as used
-    std::size_t curvature_undefined = 0;   //!< vertices with undefined H
-    std::size_t curvature_widened = 0;     //!< fits widened to the 2-ring
-    std::size_t curvature_fallback = 0;    //!< cubic fits that fell back to the quadric
-    double outlier_fraction = 0.001;       //!< ProfileOptions::outlier_fraction as used (top_share)
-    std::vector<LevelRoughness> levels;    //!< in the order of ProfileOptions::levels
+    Normalization normalization;                           //!< c and s of the unit-sphere scaling
+    std::size_t vertices = 0;                              //!< vertices of the mesh
+    CurvatureOptions curvature_options{};                  //!< as used
+    std::size_t curvature_undefined = 0;                   //!< vertices with undefined H
+    std::size_t curvature_widened = 0;                     //!< fits widened to the 2-ring
+    std::size_t curvature_fallback = 0;                    //!< cubic fits that fell back to the quadric
+    std::size_t curvature_capped = 0;                      //!< 2-ring neighbourhoods capped (CurvatureField::capped)
+    std::vector<std::uint32_t> curvature_capped_vertices;  //!< the lowest ids of those (at most 10)
+    double outlier_fraction = 0.001;                       //!< ProfileOptions::outlier_fraction as used (top_share)
+    std::vector<LevelRoughness> levels;                    //!< in the order of ProfileOptions::levels
     bool has_global = false;
     LevelRoughness global;  //!< level 0
 

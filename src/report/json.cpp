@@ -78,6 +78,11 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
                       {"quadric_fallback", p.curvature_fallback},
                       {"sign_convention", "H > 0 where convex with outward normals (unit sphere: +1)"},
                       {"units", "1/length on the mesh scaled to mean vertex distance 1 from the centroid"}};
+    if (p.curvature_capped) {  // only then: reports of meshes without a capped fit are unchanged
+        j["curvature"]["capped_neighbourhoods"] = p.curvature_capped;
+        j["curvature"]["capped_vertices"] = p.curvature_capped_vertices;
+        j["curvature"]["max_fit_neighbors"] = kMaxFitNeighbors;
+    }
     nlohmann::json levels = nlohmann::json::array(), sigma = nlohmann::json::array(), details = nlohmann::json::array();
     for (const auto& l : p.levels) {
         levels.push_back(l.level);

@@ -121,7 +121,7 @@ std::string comparison_text(const Comparison& c)
                              pb.curvature_undefined);
         for (const auto* p : {&pa, &pb})
             for (const auto& w : warnings(p == &pa ? c.original : c.processed, p))
-                if (w.kind == WarningKind::OutliersDominate)
+                if (w.kind == WarningKind::OutliersDominate || w.kind == WarningKind::CappedNeighbourhoods)
                     s += fmt::format("  ! {}: {}\n", p == &pa ? "original" : "processed", w.text);
     }
     if (c.distance) {
