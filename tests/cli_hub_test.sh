@@ -4,10 +4,13 @@
 # quadratic: about 17 minutes), and the reports say which curvature fits were
 # capped. Not a timing test: the limits are 8 to 20 times the times measured on
 # the project's 2-core machine (profile 3 s, compare 8 s; docs/performance.md),
-# there only to catch a return of the quadratic paths.
-# Usage: cli_hub_test.sh MESHDIFF_BINARY TEMP_DIR
+# there only to catch a return of the quadratic paths. A sanitizer build runs
+# 5 to 10 times slower, so its ctest passes a larger LIMIT (300 s: still far
+# below the quadratic 17 minutes).
+# Usage: cli_hub_test.sh MESHDIFF_BINARY TEMP_DIR [LIMIT_SECONDS]
 bin="$1"
 tmp="$2"
+limit="${3:-60}"
 if [ -z "$bin" ] || [ -z "$tmp" ]; then
     echo "usage: $0 MESHDIFF_BINARY TEMP_DIR" >&2
     exit 2
@@ -50,7 +53,7 @@ within() {
 
 fan 100000 "$tmp/fan.ply" && pass || fail "could not write the fan"
 
-if within 60 profile "$tmp/fan.ply" --json "$tmp/profile.json"; then
+if within "$limit" profile "$tmp/fan.ply" --json "$tmp/profile.json"; then
     grep -q "100000 curvature fits beside a vertex of very high valence used a capped 2-ring" "$tmp/stdout" &&
         pass || fail "profile: no capped-neighbourhood warning: $(tail -5 "$tmp/stdout")"
     grep -q "vertices 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, ...)" "$tmp/stdout" && pass || fail "profile: no capped vertex ids"
@@ -60,7 +63,7 @@ j['curvature']['capped_vertices'][:3] == [1, 2, 3] and j['mesh']['non_manifold_v
 len(j['sigma']) == 20 and finite(j['sigma']) and j['level_details'][0]['vertices_used'] == 100001"
 fi
 
-if within 60 "$tmp/fan.ply" "$tmp/fan.ply" --json "$tmp/compare.json"; then
+if within "$limit" "$tmp/fan.ply" "$tmp/fan.ply" --json "$tmp/compare.json"; then
     grep -q "! original: 100000 curvature fits beside a vertex of very high valence" "$tmp/stdout" &&
         pass || fail "compare: no capped-neighbourhood warning for the original"
     grep -q "! processed: 100000 curvature fits" "$tmp/stdout" && pass || fail "compare: none for the processed"
