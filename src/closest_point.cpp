@@ -117,6 +117,7 @@ struct ClosestPointIndex::Impl
     std::vector<Node> nodes;
     std::vector<std::uint32_t> parent_of;  // per node (root: 0)
     std::vector<std::uint32_t> leaf_of;    // per triangle position: its leaf
+    std::vector<std::uint32_t> position_of;  // per face: its position in tris
     std::vector<Obb> obbs;                 // oriented boxes of the nodes with kHasObb
     std::vector<std::uint32_t> obb_slot;   // per node: its index in obbs (read only with kHasObb)
 
@@ -134,6 +135,9 @@ struct ClosestPointIndex::Impl
     // `hint` (a position in `tris`, or kNoFace) only changes the search order:
     // the search starts in the hint's leaf and climbs towards the root.
     ClosestPoint query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const;
+    // Smallest over triangles of the largest squared distance from the corners
+    // c to the triangle, stopping at the first value <= good2.
+    double hull_query(const std::array<Vec3, 3>& c, double good2, std::uint32_t* face) const;
 };
 
 void ClosestPointIndex::Impl::build(const Mesh& mesh)
@@ -325,6 +329,8 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
     }
     parent_of.assign(nodes.size(), 0);
     leaf_of.assign(n, 0);
+    position_of.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) position_of[tris[i].face] = std::uint32_t(i);
     for (std::size_t k = 0; k < nodes.size(); ++k) {
         const Node& node = nodes[k];
         if (node.triangles() > 0) {
@@ -409,6 +415,58 @@ ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, s
     return r;
 }
 
+double ClosestPointIndex::Impl::hull_query(const std::array<Vec3, 3>& c, double good2, std::uint32_t* face) const
+{
+    double best = kInf;
+    std::uint32_t best_face = kNoFace;
+    // A node's bound: no triangle below it is closer to corner i than its
+    // box, so the largest of the three box distances bounds the value of
+    // every triangle below it from below.
+    auto bound = [&](std::uint32_t k) {
+        return std::max({node_distance2(k, c[0]), node_distance2(k, c[1]), node_distance2(k, c[2])});
+    };
+    struct Entry
+    {
+        std::uint32_t node;
+        double d2;
+    };
+    std::array<Entry, 128> stack;
+    std::size_t top = 0;
+    stack[top++] = {0, bound(0)};
+    while (top > 0) {
+        const Entry e = stack[--top];
+        if (e.d2 >= best) continue;
+        const Node& node = nodes[e.node];
+        if (node.triangles() > 0) {
+            for (std::uint32_t i = 0; i < node.triangles(); ++i) {
+                const Tri& t = tris[node.first + i];
+                double v = 0.0;
+                for (const Vec3& q : c) {
+                    v = std::max(v, (q - tri_point(q, t)).squaredNorm());
+                    if (v >= best) break;
+                }
+                if (v < best) {
+                    best = v;
+                    best_face = t.face;
+                    if (best <= good2) {
+                        if (face) *face = best_face;
+                        return best;
+                    }
+                }
+            }
+            continue;
+        }
+        const Entry l{node.first, bound(node.first)};
+        const Entry r{node.first + 1, bound(node.first + 1)};
+        const Entry& near = l.d2 <= r.d2 ? l : r;
+        const Entry& far = l.d2 <= r.d2 ? r : l;
+        if (far.d2 < best) stack[top++] = far;
+        if (near.d2 < best) stack[top++] = near;
+    }
+    if (face) *face = best_face;
+    return best;
+}
+
 ClosestPointIndex::ClosestPointIndex(const Mesh& mesh) : impl_(std::make_unique<Impl>())
 {
     validate(mesh, "ClosestPointIndex");
@@ -422,6 +480,12 @@ ClosestPointIndex& ClosestPointIndex::operator=(ClosestPointIndex&&) noexcept = 
 ClosestPoint ClosestPointIndex::closest_point(const Vec3& p) const
 {
     return impl_->query(p, kNoFace, nullptr);
+}
+
+ClosestPoint ClosestPointIndex::closest_point(const Vec3& p, std::uint32_t near_face) const
+{
+    const std::uint32_t hint = near_face < impl_->position_of.size() ? impl_->position_of[near_face] : kNoFace;
+    return impl_->query(p, hint, nullptr);
 }
 
 namespace {
@@ -464,6 +528,17 @@ std::vector<double> ClosestPointIndex::distances(const std::vector<Vec3>& querie
     return out;
 }
 
+double ClosestPointIndex::hull_distance_bound(const std::array<Vec3, 3>& corners, double good_enough,
+                                              std::uint32_t* face) const
+{
+    if (impl_->tris.empty()) {
+        if (face) *face = kNoFace;
+        return kInf;
+    }
+    const double good2 = good_enough > 0.0 ? good_enough * good_enough : (good_enough == 0.0 ? 0.0 : -1.0);
+    return std::sqrt(impl_->hull_query(corners, good2, face));
+}
+
 std::size_t ClosestPointIndex::n_faces() const
 {
     return impl_->tris.size();
@@ -482,7 +557,8 @@ std::size_t ClosestPointIndex::memory_bytes() const
 {
     return impl_->tris.capacity() * sizeof(Tri) + impl_->nodes.capacity() * sizeof(Node) +
            impl_->obbs.capacity() * sizeof(Obb) +
-           (impl_->parent_of.capacity() + impl_->leaf_of.capacity() + impl_->obb_slot.capacity()) *
+           (impl_->parent_of.capacity() + impl_->leaf_of.capacity() + impl_->obb_slot.capacity() +
+            impl_->position_of.capacity()) *
                sizeof(std::uint32_t);
 }
 

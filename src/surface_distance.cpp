@@ -68,12 +68,20 @@ DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<do
     Sum sum, sum2;
     s.min = distances[0];
     s.max = distances[0];
-    for (double d : distances) {
+    std::size_t at_max = 0;
+    for (std::size_t i = 0; i < distances.size(); ++i) {
+        const double d = distances[i];
         s.min = std::min(s.min, d);
-        s.max = std::max(s.max, d);
+        if (d > s.max) {
+            s.max = d;
+            at_max = i;
+        }
         sum.add(d);
         sum2.add(d * d);
     }
+    s.max_point = samples.points[at_max];
+    s.max_kind = samples.kind[at_max];
+    s.max_element = samples.element[at_max];
     s.mean = sum.value() / n;
     s.rms = std::sqrt(sum2.value() / n);
     Sum dev;
@@ -99,12 +107,31 @@ SampledDirection sampled_direction(const Mesh& from, const ClosestPointIndex& to
     return d;
 }
 
+// The seed of a certified Hausdorff distance: the sampled maximum of \p s,
+// on a face of \p from (for a vertex sample, the lowest-index face using it).
+HausdorffSeed seed_of(const Mesh& from, const DistanceStats& s)
+{
+    HausdorffSeed seed{s.max_point, s.max_element, s.max};
+    if (s.max_kind == SampleKind::OnVertex) {
+        for (std::size_t f = 0; f < from.n_faces(); ++f) {
+            const Face& t = from.faces[f];
+            if (std::find(t.begin(), t.end(), int(s.max_element)) != t.end()) {
+                seed.face = std::uint32_t(f);
+                break;
+            }
+        }
+    }
+    return seed;
+}
+
 // surface_distance() and surface_distance_samples(): both directions, keeping
 // the samples in \p forward and \p backward when they are given.
 SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
-                                SampledDirection* forward, SampledDirection* backward)
+                                SampledDirection* forward, SampledDirection* backward,
+                                const std::optional<HausdorffOptions>& certify = std::nullopt)
 {
     validate(options);
+    if (certify) validate(*certify);
     validate(a, "surface_distance: mesh A");
     validate(b, "surface_distance: mesh B");
     SamplingOptions opt = options;
@@ -116,6 +143,7 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         SampledDirection d = sampled_direction(a, index_b, opt);
         r.forward = distance_stats(d.samples, d.distances);
         if (forward) *forward = std::move(d);
+        if (certify) r.forward_hausdorff = certified_hausdorff(a, b, index_b, *certify, seed_of(a, r.forward));
     }
     {
         const ClosestPointIndex index_a(a);
@@ -123,6 +151,7 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         r.backward = distance_stats(d.samples, d.distances);
         if (backward) *backward = std::move(d);
         if (b_vertex_distances) r.b_vertex_distance = vertex_distances(b, index_a);
+        if (certify) r.backward_hausdorff = certified_hausdorff(b, a, index_a, *certify, seed_of(b, r.backward));
     }
     r.hausdorff = std::max(r.forward.max, r.backward.max);
     r.diagonal = bounding_box(a).diagonal();
@@ -138,9 +167,10 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
     return distance_stats(d.samples, d.distances);
 }
 
-SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances)
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
+                                 const std::optional<HausdorffOptions>& certify)
 {
-    return both_directions(a, b, options, b_vertex_distances, nullptr, nullptr);
+    return both_directions(a, b, options, b_vertex_distances, nullptr, nullptr, certify);
 }
 
 SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options)

@@ -24,6 +24,7 @@
 #include "meshdiff/mesh.h"
 #include "meshdiff/point_triangle.h"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -54,12 +55,29 @@ public:
     //! Exact closest point to \p p.
     ClosestPoint closest_point(const Vec3& p) const;
 
+    //! The same answer, the search starting at face \p near_face (faster when
+    //! that face is close to \p p; any value is allowed).
+    ClosestPoint closest_point(const Vec3& p, std::uint32_t near_face) const;
+
     //! Closest points of many queries, in parallel (OpenMP) over fixed blocks
     //! of queries; the result does not depend on the thread count.
     std::vector<ClosestPoint> closest_points(const std::vector<Vec3>& queries) const;
 
     //! As closest_points(), distances only (less memory).
     std::vector<double> distances(const std::vector<Vec3>& queries) const;
+
+    //! An upper bound of the distance to the mesh of every point of the
+    //! triangle (or segment, or point) spanned by \p corners: the smallest,
+    //! over the indexed triangles t, of the largest distance from a corner to
+    //! t. The distance to one triangle is a convex function of the query
+    //! point, so over the spanned triangle it is largest at a corner; the
+    //! distance to the mesh is at most the distance to any one triangle. The
+    //! search (branch and bound, a node's bound being the largest distance
+    //! from a corner to its box) stops at the first triangle whose value is
+    //! at most \p good_enough (pass 0 for the smallest value). \p face gets
+    //! that triangle. +inf for an index without triangles.
+    double hull_distance_bound(const std::array<Vec3, 3>& corners, double good_enough,
+                               std::uint32_t* face = nullptr) const;
 
     std::size_t n_faces() const;       //!< number of indexed triangles
     BoundingBox bounds() const;        //!< box of the indexed triangles

@@ -12,6 +12,7 @@
 #include "meshdiff/enum_names.h"
 #include "meshdiff/error.h"
 #include "meshdiff/facts.h"
+#include "meshdiff/hausdorff.h"
 #include "meshdiff/io.h"
 #include "meshdiff/mesh.h"
 #include "meshdiff/neighborhood.h"

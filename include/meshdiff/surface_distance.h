@@ -30,10 +30,13 @@
 #pragma once
 
 #include "meshdiff/closest_point.h"
+#include "meshdiff/hausdorff.h"
 #include "meshdiff/mesh.h"
 #include "meshdiff/sampling.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace meshdiff {
@@ -52,6 +55,11 @@ struct DistanceStats
     std::size_t n_vertex = 0;  //!< vertex samples
     std::size_t n_edge = 0;    //!< edge samples
     std::size_t n_face = 0;    //!< face samples
+    //! Where the maximum lies: the first sample (in sample order) at `max`,
+    //! its kind and source element (SurfaceSamples::element).
+    Vec3 max_point = Vec3::Zero();
+    SampleKind max_kind = SampleKind::OnVertex;
+    std::uint32_t max_element = 0;
     std::size_t n_samples() const { return n_vertex + n_edge + n_face; }
 };
 
@@ -70,6 +78,11 @@ struct SurfaceDistance
     //! its own diagonal on every side of every axis.
     double metro_diagonal = 0.0;
     double relative_hausdorff() const { return hausdorff / diagonal; }  //!< hausdorff / diagonal
+    //! Only when asked for: the certified one-sided Hausdorff distances
+    //! (hausdorff.h), their lower bounds seeded with the sampled maxima, so
+    //! that lower >= forward.max (backward.max).
+    std::optional<CertifiedHausdorff> forward_hausdorff;
+    std::optional<CertifiedHausdorff> backward_hausdorff;
     //! Only when asked for: the exact distance of every vertex of B (unreferenced
     //! ones included) to the surface of A, in vertex order, from the index of A
     //! that the backward direction built (a per-vertex distance map of B).
@@ -91,10 +104,13 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
 //! \p a is the original, \p b the processed mesh; \p options apply to both
 //! directions (an unset target means 10 x max(#faces A, #faces B)). With
 //! \p b_vertex_distances, SurfaceDistance::b_vertex_distance is filled too.
+//! With \p certify, both one-sided Hausdorff distances are also certified
+//! (hausdorff.h), reusing the indexes of the sampling.
 //! \throw InvalidArgumentError for invalid options or if they give no sample.
 //! \throw InvalidMeshError if a mesh is invalid (meshdiff::validate()).
 SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options = {},
-                                 bool b_vertex_distances = false);
+                                 bool b_vertex_distances = false,
+                                 const std::optional<HausdorffOptions>& certify = std::nullopt);
 
 //! One direction of a surface distance with everything kept: the samples of
 //! the source surface and the exact distance of each to the other surface.

@@ -1,0 +1,117 @@
+//! \file hausdorff.h
+//! \brief The certified one-sided Hausdorff distance between two triangle
+//! meshes: an interval [lower, upper] that contains the true value
+//! max over p on A of d(p, B), with upper - lower within a tolerance, and the
+//! point of A where the lower bound is attained (METHOD.md section 6).
+//!
+//! Method: branch and bound over the triangles of A (after Tang, Lee, Kim,
+//! "Interactive Hausdorff distance computation for general polygonal models",
+//! SIGGRAPH 2009, and CGAL's bounded_error_Hausdorff_distance).
+//! - Lower bound: the largest exact distance to B of a point of A evaluated so
+//!   far: every vertex of A that a face uses, the maximum of the Metro samples
+//!   when given, and every corner the search creates.
+//! - Upper bound of a triangle T of A: for any one triangle t of B, the
+//!   distance to t is convex over T, so its maximum over T is at a corner of T;
+//!   and d(p, B) <= d(p, t). So U(T) = min over t of max over corners c of
+//!   d(c, t) bounds d(p, B) on all of T. It is found first among the closest
+//!   triangles of T's corners, then by a search of B's bounding-volume
+//!   hierarchy (ClosestPointIndex::hull_distance_bound()). A second, cheaper
+//!   bound comes first: d(., B) is 1-Lipschitz and every point of T lies
+//!   within diam(T) / sqrt(3) of a corner, so U(T) <= max d(c, B) +
+//!   diam(T) / sqrt(3). A T too wide for any triangle of B to be near all
+//!   its corners (diam(T) > 2 x threshold + B's longest edge) is split
+//!   without a search.
+//! - Pruning: T is done when U(T) <= lower + tolerance; otherwise it is split
+//!   into four at its edge midpoints, whose distances raise the lower bound.
+//!   The upper bound of the result is the largest U of the triangles that
+//!   were done, so the interval always contains the true value.
+//! - The search runs in rounds (all open triangles of a round in parallel,
+//!   the lower bound updated between rounds), so the interval and the
+//!   location do not depend on the number of threads.
+//! - It stops when no triangle is open (certified), or when the evaluations of
+//!   upper bounds reach a budget: then the interval reached is returned with
+//!   `certified` false (never an endless loop on adversarial input).
+//!
+//! Exactness. Distances are computed in double precision with the exact
+//! point-to-triangle query of point_triangle.h; the interval is exact up to
+//! that rounding (about 1e-15 of the coordinates) and, for the lower bound,
+//! up to the thin-triangle guard of that query (kThinTriangleSine of a thin
+//! triangle's longest edge). The tolerance never goes below 1e-13 of the
+//! largest coordinate magnitude of the two meshes (the rounding level of the
+//! distances), so that two copies of one mesh end at once.
+#pragma once
+
+#include "meshdiff/closest_point.h"
+#include "meshdiff/mesh.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+
+namespace meshdiff {
+
+struct HausdorffOptions
+{
+    //! Width of the interval asked for, relative to the lower bound: 1e-4
+    //! gives four certain digits. The larger of this (times the lower bound)
+    //! and absolute_tolerance is used.
+    double relative_tolerance = 1e-4;
+    //! Width asked for in the meshes' length unit (0: relative only).
+    double absolute_tolerance = 0.0;
+    //! Budget of upper-bound evaluations (triangles of A bounded); 0 means
+    //! the default, 2,000,000 + 20 x #faces of A.
+    std::size_t max_evaluations = 0;
+};
+
+//! \throw InvalidArgumentError unless both tolerances are finite and >= 0
+//! (relative below 1) and at least one is > 0.
+void validate(const HausdorffOptions& options);
+
+//! Where a one-sided Hausdorff distance is attained: a point of the sampled
+//! mesh and its closest point on the other.
+struct HausdorffLocation
+{
+    Vec3 point = Vec3::Zero();          //!< on the sampled mesh A
+    std::uint32_t face = 0;             //!< a face of A holding it (lowest index among its sources)
+    Vec3 closest_point = Vec3::Zero();  //!< the closest point of B
+    std::uint32_t closest_face = 0;     //!< the face of B holding it (lowest index on ties)
+};
+
+//! A certified one-sided Hausdorff distance, in the meshes' length unit.
+struct CertifiedHausdorff
+{
+    double lower = 0.0;      //!< the distance of `location.point` to B: a point value, so h >= lower
+    double upper = 0.0;      //!< h <= upper
+    double tolerance = 0.0;  //!< the width asked for, in the length unit, at the final lower bound
+    bool certified = false;  //!< upper - lower <= tolerance (false only when the budget ran out)
+    HausdorffLocation location;
+    std::size_t bound_evaluations = 0;  //!< upper bounds of triangles evaluated
+    std::size_t point_evaluations = 0;  //!< exact point distances evaluated (vertices and new corners)
+    int rounds = 0;                     //!< subdivision rounds run
+    bool budget_exhausted = false;      //!< the search stopped at max_evaluations
+};
+
+//! A seed of the lower bound: a point of A with its exact distance to B (the
+//! largest Metro sample, for example).
+struct HausdorffSeed
+{
+    Vec3 point = Vec3::Zero();
+    std::uint32_t face = 0;  //!< a face of A holding the point
+    double distance = 0.0;   //!< its exact distance to B
+};
+
+//! The one-sided Hausdorff distance from \p a to \p b (indexed by \p b_index,
+//! built from \p b), certified as described in the file comment. \p seed, when
+//! given, joins the lower bound (so lower >= seed->distance).
+//! \throw InvalidArgumentError for invalid options or an index that does not
+//!        hold B's faces.
+//! \throw InvalidMeshError if a mesh is invalid (meshdiff::validate(): no
+//!        face, an index out of range, a non-finite coordinate).
+CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
+                                       const HausdorffOptions& options = {},
+                                       const std::optional<HausdorffSeed>& seed = std::nullopt);
+
+//! As above, building the index of \p b.
+CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const HausdorffOptions& options = {});
+
+}  // namespace meshdiff

@@ -1,0 +1,336 @@
+#include "meshdiff/hausdorff.h"
+
+#include "meshdiff/error.h"
+#include "meshdiff/io.h"
+#include "meshdiff/shapes.h"
+#include "meshdiff/surface_distance.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <string>
+
+using namespace meshdiff;
+
+namespace {
+
+const std::string kData = MESHDIFF_TEST_DATA_DIR;
+
+// A triangle with three equal corners: a point of the mesh.
+void add_point(Mesh& m, const Vec3& p)
+{
+    const int v = int(m.points.size());
+    m.points.push_back(p);
+    m.faces.push_back({v, v, v});
+}
+
+void add_triangle(Mesh& m, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    const int v = int(m.points.size());
+    m.points.insert(m.points.end(), {a, b, c});
+    m.faces.push_back({v, v + 1, v + 2});
+}
+
+// The largest distance to B over a dense barycentric lattice of every face of
+// A, (n + 1)(n + 2) / 2 points per face: a lower bound of the true value, up
+// to the rounding of the lattice points (which may lie an ulp off the face:
+// the comparisons with an upper bound allow 1e-12).
+double dense_maximum(const Mesh& a, const Mesh& b, int n)
+{
+    const ClosestPointIndex index(b);
+    std::vector<Vec3> q;
+    for (const Face& f : a.faces)
+        for (int i = 0; i <= n; ++i)
+            for (int j = 0; i + j <= n; ++j) {
+                const double u = double(i) / n, v = double(j) / n;
+                q.push_back((1 - u - v) * a.points[std::size_t(f[0])] + u * a.points[std::size_t(f[1])] +
+                            v * a.points[std::size_t(f[2])]);
+            }
+    const std::vector<double> d = index.distances(q);
+    return *std::max_element(d.begin(), d.end());
+}
+
+void expect_contains(const CertifiedHausdorff& h, double exact, double slack = 1e-14)
+{
+    EXPECT_LE(h.lower, exact + slack * std::max(1.0, exact));
+    EXPECT_GE(h.upper, exact - slack * std::max(1.0, exact));
+}
+
+void expect_certified(const CertifiedHausdorff& h)
+{
+    EXPECT_TRUE(h.certified);
+    EXPECT_FALSE(h.budget_exhausted);
+    EXPECT_LE(h.lower, h.upper);
+    EXPECT_LE(h.upper - h.lower, h.tolerance);
+}
+
+bool same_bits(double x, double y)
+{
+    return std::memcmp(&x, &y, sizeof(double)) == 0;
+}
+
+// Three points of B (degenerate triangles) around a small triangle of A: the
+// distance to B is largest at their circumcentre (0, 5/12), inside A's
+// triangle, where it is the circumradius 13/12; every corner and edge of A is
+// closer.
+struct Circumcentre
+{
+    Mesh a, b;
+    Circumcentre()
+    {
+        add_point(b, {-1, 0, 0});
+        add_point(b, {1, 0, 0});
+        add_point(b, {0, 1.5, 0});
+        add_triangle(a, {-0.3, 0.2, 0}, {0.3, 0.2, 0}, {0, 0.7, 0});
+    }
+};
+
+}  // namespace
+
+TEST(HausdorffBound, EqualsBruteForceMinimumOfMaximumCornerDistance)
+{
+    const Mesh b = noisy_sphere(2, 0.05, 7).mesh;
+    const ClosestPointIndex index(b);
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(-1.5, 1.5);
+    for (int trial = 0; trial < 200; ++trial) {
+        const Vec3 o(u(rng), u(rng), u(rng));
+        const double s = trial % 2 ? 0.05 : 0.5;
+        const std::array<Vec3, 3> c{o, o + s * Vec3(u(rng), u(rng), u(rng)), o + s * Vec3(u(rng), u(rng), u(rng))};
+        double brute = std::numeric_limits<double>::infinity();
+        for (const Face& f : b.faces) {
+            double v = 0.0;
+            for (const Vec3& q : c)
+                v = std::max(v, closest_point_on_triangle(q, b.points[std::size_t(f[0])], b.points[std::size_t(f[1])],
+                                                          b.points[std::size_t(f[2])])
+                                    .distance);
+            brute = std::min(brute, v);
+        }
+        std::uint32_t face = 0;
+        const double got = index.hull_distance_bound(c, 0.0, &face);
+        EXPECT_NEAR(got, brute, 1e-15) << trial;
+        // A good-enough value stops the search at a value below it (still a bound).
+        const double early = index.hull_distance_bound(c, 2.0 * brute + 0.1);
+        EXPECT_LE(early, 2.0 * brute + 0.1);
+        EXPECT_GE(early, brute - 1e-15);
+        // It is an upper bound of the distance of the triangle's points.
+        for (double w : {0.2, 0.5}) EXPECT_LE(index.closest_point(w * c[0] + (1 - w) / 2 * (c[1] + c[2])).distance, got);
+    }
+}
+
+TEST(Hausdorff, InteriorMaximumAtACircumcentre)
+{
+    const Circumcentre t;
+    const double exact = 13.0 / 12.0;
+    for (double rel : {1e-3, 1e-6, 1e-9}) {
+        HausdorffOptions o;
+        o.relative_tolerance = rel;
+        const CertifiedHausdorff h = certified_hausdorff(t.a, t.b, o);
+        expect_certified(h);
+        expect_contains(h, exact);
+        EXPECT_NEAR(h.tolerance, rel * h.lower, 1e-15);
+        // The location is where the lower bound is attained, near the circumcentre.
+        EXPECT_DOUBLE_EQ(h.lower, (h.location.point - h.location.closest_point).norm());
+        EXPECT_LT((h.location.point - Vec3(0, 5.0 / 12.0, 0)).norm(), 10 * std::sqrt(rel)) << rel;
+        EXPECT_EQ(h.location.face, 0u);
+        EXPECT_GT(h.rounds, 0);
+    }
+    // Metro's sampling misses the interior maximum; the certified lower bound does not.
+    const SurfaceDistance sd = surface_distance(t.a, t.b);
+    EXPECT_LT(sd.forward.max, exact - 1e-4);
+}
+
+TEST(Hausdorff, RaisedCentreOfASquareInBothDirections)
+{
+    // A: the square [-1, 1]^2 as a fan of four triangles around its centre;
+    // B: the same with the centre raised to height h, a pyramid.
+    const double h = 0.3;
+    Mesh a;
+    a.points = {{0, 0, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}};
+    a.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}};
+    Mesh b = a;
+    b.points[0].z() = h;
+    // A -> B: the centre of A is farthest, at distance h / sqrt(1 + h^2) from
+    // each slanted face. B -> A: the apex, at height h above A.
+    const CertifiedHausdorff f = certified_hausdorff(a, b, {});
+    const CertifiedHausdorff g = certified_hausdorff(b, a, {});
+    expect_certified(f);
+    expect_certified(g);
+    expect_contains(f, h / std::sqrt(1 + h * h));
+    expect_contains(g, h);
+    EXPECT_LT((f.location.point - Vec3::Zero()).norm(), 1e-12);
+    EXPECT_LT((g.location.point - Vec3(0, 0, h)).norm(), 1e-12);
+    EXPECT_LT((g.location.closest_point - Vec3::Zero()).norm(), 1e-12);
+}
+
+TEST(Hausdorff, ParallelPlanesAndTheMeshItself)
+{
+    const Mesh a = plane_grid(9, 7, 0.25).mesh;
+    Mesh b = a;
+    for (Vec3& p : b.points) p.z() += 0.125;
+    for (const auto& h : {certified_hausdorff(a, b, {}), certified_hausdorff(b, a, {})}) {
+        expect_certified(h);
+        EXPECT_DOUBLE_EQ(h.lower, 0.125);
+        EXPECT_LE(h.upper, 0.125 * (1 + 1e-4));
+    }
+    // A mesh against itself: [0, tiny], at once.
+    const Mesh s = icosphere(3).mesh;
+    const CertifiedHausdorff self = certified_hausdorff(s, s, {});
+    expect_certified(self);
+    EXPECT_EQ(self.lower, 0.0);
+    EXPECT_LE(self.upper, 1e-12);
+    EXPECT_EQ(self.rounds, 0);
+}
+
+TEST(Hausdorff, FarApartMeshes)
+{
+    // One triangle against a cloud of triangles 100 units away.
+    Mesh a;
+    add_triangle(a, {0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+    Mesh b;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 60; ++i) {
+        const Vec3 o = 100.0 * Vec3(u(rng), u(rng), u(rng)).normalized();
+        add_triangle(b, o, o + Vec3(u(rng), u(rng), u(rng)), o + Vec3(u(rng), u(rng), u(rng)));
+    }
+    HausdorffOptions o;
+    o.relative_tolerance = 1e-9;
+    const CertifiedHausdorff h = certified_hausdorff(a, b, o);
+    expect_certified(h);
+    const double dense = dense_maximum(a, b, 200);
+    EXPECT_LE(dense, h.upper * (1 + 1e-12));
+    EXPECT_GE(h.lower, dense - o.relative_tolerance * 100 * 2);
+    EXPECT_GT(h.lower, 90.0);
+}
+
+TEST(Hausdorff, CoarseSphereAgainstAFineOneBeatsSampling)
+{
+    // The maxima lie inside faces (the flat faces of the coarse sphere sag
+    // below the fine one), where vertex and edge samples are not.
+    const Mesh a = icosphere(2).mesh;
+    const Mesh b = icosphere(5).mesh;
+    const SurfaceDistance sd = surface_distance(a, b, {}, false, HausdorffOptions{});
+    ASSERT_TRUE(sd.forward_hausdorff && sd.backward_hausdorff);
+    for (const auto* h : {&*sd.forward_hausdorff, &*sd.backward_hausdorff}) {
+        expect_certified(*h);
+        EXPECT_GT(h->lower, 0.0);
+    }
+    EXPECT_GE(sd.forward_hausdorff->lower, sd.forward.max);
+    EXPECT_GE(sd.backward_hausdorff->lower, sd.backward.max);
+    const double dense_forward = dense_maximum(a, b, 64);
+    EXPECT_LE(dense_forward, sd.forward_hausdorff->upper * (1 + 1e-12));
+    EXPECT_GE(sd.forward_hausdorff->lower, dense_forward * (1 - 1e-4));
+    const double dense_backward = dense_maximum(b, a, 4);
+    EXPECT_LE(dense_backward, sd.backward_hausdorff->upper * (1 + 1e-12));
+}
+
+TEST(Hausdorff, OneTenThousandthGivesFourCertainDigitsOnRealMeshes)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    for (const auto& [x, y] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+        const CertifiedHausdorff h = certified_hausdorff(*x, *y, {});
+        expect_certified(h);
+        EXPECT_LE(h.upper - h.lower, 1e-4 * h.lower);
+        EXPECT_LE(dense_maximum(*x, *y, 6), h.upper * (1 + 1e-12));
+        const ClosestPoint q = ClosestPointIndex(*y).closest_point(h.location.point);
+        EXPECT_DOUBLE_EQ(q.distance, h.lower);
+        EXPECT_EQ(q.face, h.location.closest_face);
+    }
+}
+
+TEST(Hausdorff, DegenerateAndNonManifoldMeshes)
+{
+    // A: an open strip with a zero-area face (repeated corner) and a sliver;
+    // B: three triangles sharing one edge (non-manifold) and a point.
+    Mesh a;
+    a.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0.2}, {1, 1, 0.1}, {2, 0, 0}, {2, 1e-9, 0}};
+    a.faces = {{0, 1, 2}, {1, 3, 2}, {1, 1, 3}, {1, 4, 5}};
+    Mesh b;
+    b.points = {{0, 0, 0.5}, {2, 0, 0.5}, {1, 1, 0.5}, {1, -1, 0.6}, {1, 0.2, 1.5}, {3, 3, 3}};
+    b.faces = {{0, 1, 2}, {0, 1, 3}, {0, 1, 4}, {5, 5, 5}};
+    for (const auto& [x, y] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+        HausdorffOptions o;
+        o.relative_tolerance = 1e-7;
+        const CertifiedHausdorff h = certified_hausdorff(*x, *y, o);
+        expect_certified(h);
+        EXPECT_LE(dense_maximum(*x, *y, 300), h.upper * (1 + 1e-12));
+        EXPECT_GE(h.lower, dense_maximum(*x, *y, 300) * (1 - 1e-4));
+    }
+}
+
+TEST(Hausdorff, SameIntervalAndLocationForAnyThreadCount)
+{
+    const Mesh a = noisy_sphere(3, 0.03, 5).mesh;
+    const Mesh b = icosphere(4).mesh;
+    HausdorffOptions o;
+    o.relative_tolerance = 1e-8;
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const CertifiedHausdorff one = certified_hausdorff(a, b, o);
+    omp_set_num_threads(std::max(2, threads));
+    const CertifiedHausdorff many = certified_hausdorff(a, b, o);
+    omp_set_num_threads(threads);
+    EXPECT_TRUE(same_bits(one.lower, many.lower));
+    EXPECT_TRUE(same_bits(one.upper, many.upper));
+    EXPECT_EQ(one.location.point, many.location.point);
+    EXPECT_EQ(one.location.face, many.location.face);
+    EXPECT_EQ(one.location.closest_face, many.location.closest_face);
+    EXPECT_EQ(one.bound_evaluations, many.bound_evaluations);
+    EXPECT_EQ(one.rounds, many.rounds);
+}
+
+TEST(Hausdorff, BudgetStopsWithAValidInterval)
+{
+    const Circumcentre t;
+    HausdorffOptions o;
+    o.relative_tolerance = 1e-12;
+    o.max_evaluations = 40;
+    const CertifiedHausdorff h = certified_hausdorff(t.a, t.b, o);
+    EXPECT_TRUE(h.budget_exhausted);
+    EXPECT_FALSE(h.certified);
+    EXPECT_LE(h.bound_evaluations, 40u);
+    expect_contains(h, 13.0 / 12.0);
+    EXPECT_GT(h.upper - h.lower, h.tolerance);
+}
+
+TEST(Hausdorff, AbsoluteToleranceAndSeed)
+{
+    const Circumcentre t;
+    HausdorffOptions o;
+    o.relative_tolerance = 0.0;
+    o.absolute_tolerance = 2e-7;
+    const CertifiedHausdorff h = certified_hausdorff(t.a, t.b, o);
+    expect_certified(h);
+    EXPECT_EQ(h.tolerance, 2e-7);
+    expect_contains(h, 13.0 / 12.0);
+    // A seed joins the lower bound.
+    const ClosestPointIndex index(t.b);
+    const Vec3 p(0, 5.0 / 12.0, 0);
+    const HausdorffSeed seed{p, 0, index.closest_point(p).distance};
+    const CertifiedHausdorff s = certified_hausdorff(t.a, t.b, index, o, seed);
+    EXPECT_GE(s.lower, seed.distance);
+    EXPECT_EQ(s.location.point, p);
+}
+
+TEST(Hausdorff, RejectsBadOptionsAndMismatchedIndex)
+{
+    const Circumcentre t;
+    for (auto [rel, abs] : {std::pair{-1e-4, 0.0}, std::pair{1.0, 0.0}, std::pair{0.0, 0.0}, std::pair{std::nan(""), 1e-3},
+                            std::pair{1e-4, -1.0}, std::pair{1e-4, HUGE_VAL}}) {
+        HausdorffOptions o;
+        o.relative_tolerance = rel;
+        o.absolute_tolerance = abs;
+        EXPECT_THROW(certified_hausdorff(t.a, t.b, o), InvalidArgumentError) << rel << " " << abs;
+    }
+    const ClosestPointIndex wrong(t.a);
+    EXPECT_THROW(certified_hausdorff(t.a, t.b, wrong), InvalidArgumentError);
+    Mesh empty;
+    empty.points = {{0, 0, 0}};
+    EXPECT_THROW(certified_hausdorff(empty, t.b, {}), InvalidMeshError);
+}
