@@ -80,8 +80,8 @@ DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<do
         sum2.add(d * d);
     }
     s.max_point = samples.points[at_max];
-    s.max_kind = samples.kind[at_max];
-    s.max_element = samples.element[at_max];
+    if (at_max < samples.kind.size()) s.max_kind = samples.kind[at_max];  // hand-made samples may lack them
+    if (at_max < samples.element.size()) s.max_element = samples.element[at_max];
     s.mean = sum.value() / n;
     s.rms = std::sqrt(sum2.value() / n);
     Sum dev;
