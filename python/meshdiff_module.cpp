@@ -427,7 +427,8 @@ CompareOptions compare_options(const py::object& levels, bool global_level, cons
                                const std::string& weighting, double k, bool roughness, bool distance,
                                const std::optional<long long>& samples, const std::optional<double>& density,
                                const std::string& face_sampling, std::uint64_t seed, bool vertex_samples,
-                               bool edge_samples, bool face_samples)
+                               bool edge_samples, bool face_samples, const std::string& hausdorff,
+                               double hausdorff_tolerance, const std::optional<double>& hausdorff_abs_tolerance)
 {
     CompareOptions c;
     c.profile = profile_options(levels, global_level, curvature, weighting, false);
@@ -437,6 +438,18 @@ CompareOptions compare_options(const py::object& levels, bool global_level, cons
     c.distance = distance;
     if (!roughness && !distance) bad("roughness=False and distance=False: nothing to compare");
     c.sampling = sampling_options(samples, density, face_sampling, seed, vertex_samples, edge_samples, face_samples);
+    if (hausdorff == "sampled") {
+        c.hausdorff.reset();
+    } else if (hausdorff == "certified") {
+        c.hausdorff->relative_tolerance = hausdorff_abs_tolerance ? 0.0 : hausdorff_tolerance;
+        c.hausdorff->absolute_tolerance = hausdorff_abs_tolerance.value_or(0.0);
+        if (!(hausdorff_tolerance >= 1e-12 && hausdorff_tolerance <= 0.5))
+            bad(fmt::format("hausdorff_tolerance: {} is outside [1e-12, 0.5]", hausdorff_tolerance));
+        if (hausdorff_abs_tolerance && !(*hausdorff_abs_tolerance > 0.0 && std::isfinite(*hausdorff_abs_tolerance)))
+            bad(fmt::format("hausdorff_abs_tolerance: {} must be finite and > 0", *hausdorff_abs_tolerance));
+    } else {
+        bad(fmt::format("hausdorff: '{}' is not certified or sampled", hausdorff));
+    }
     return c;
 }
 
@@ -456,11 +469,12 @@ py::dict py_compare(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V
                     const std::string& weighting, double k, bool roughness, bool distance,
                     const std::optional<long long>& samples, const std::optional<double>& density,
                     const std::string& face_sampling, std::uint64_t seed, bool vertex_samples, bool edge_samples,
-                    bool face_samples, int threads)
+                    bool face_samples, const std::string& hausdorff, double hausdorff_tolerance,
+                    const std::optional<double>& hausdorff_abs_tolerance, int threads)
 {
-    const CompareOptions options =
-        compare_options(levels, global_level, curvature, weighting, k, roughness, distance, samples, density,
-                        face_sampling, seed, vertex_samples, edge_samples, face_samples);
+    const CompareOptions options = compare_options(
+        levels, global_level, curvature, weighting, k, roughness, distance, samples, density, face_sampling, seed,
+        vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance);
     const LoadedMesh a = mesh_from(V1, F1, "V1", "F1");
     const LoadedMesh b = mesh_from(V2, F2, "V2", "F2");
     return run_compare(a, b, options, threads);
@@ -470,11 +484,12 @@ py::dict py_compare_files(const py::object& original, const py::object& processe
                           bool global_level, const std::string& curvature, const std::string& weighting, double k,
                           bool roughness, bool distance, const std::optional<long long>& samples,
                           const std::optional<double>& density, const std::string& face_sampling, std::uint64_t seed,
-                          bool vertex_samples, bool edge_samples, bool face_samples, int threads)
+                          bool vertex_samples, bool edge_samples, bool face_samples, const std::string& hausdorff,
+                          double hausdorff_tolerance, const std::optional<double>& hausdorff_abs_tolerance, int threads)
 {
-    const CompareOptions options =
-        compare_options(levels, global_level, curvature, weighting, k, roughness, distance, samples, density,
-                        face_sampling, seed, vertex_samples, edge_samples, face_samples);
+    const CompareOptions options = compare_options(
+        levels, global_level, curvature, weighting, k, roughness, distance, samples, density, face_sampling, seed,
+        vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance);
     const std::string pa = path_from(original, "original"), pb = path_from(processed, "processed");
     LoadedMesh a, b;
     {
@@ -705,13 +720,18 @@ Options (keyword-only, named like the CLI flags of `meshdiff compare`):
   face_sampling="similar"  face sampling: similar (Metro's lattice) or montecarlo  [--face-sampling]
   seed=1                seed of montecarlo sampling                        [--seed]
   vertex_samples=True, edge_samples=True, face_samples=True   sample kinds [--no-*-samples]
+  hausdorff="certified" certified: an interval [lower, upper] holding each one-sided Hausdorff
+                        distance, with where it is attained; sampled: the sampled maxima only
+                                                                           [--hausdorff]
+  hausdorff_tolerance=1e-4  width of that interval relative to the value   [--hausdorff-tolerance]
+  hausdorff_abs_tolerance=None  the width in the meshes' unit instead      [--hausdorff-abs-tolerance]
   threads=0             OpenMP threads, 0: all cores                        [--threads]
 )doc";
 
 constexpr const char* kCompareDoc = R"doc(Compares the original mesh (V1, F1) with the processed mesh (V2, F2): both
 roughness profiles, the per-level roughness distance d_L and the Metro-style
 surface distance. Returns the dict of `meshdiff ORIGINAL PROCESSED --json`
-(schema "meshdiff.compare/1"): keys schema, meshdiff_version, original,
+(schema "meshdiff.compare/2"): keys schema, meshdiff_version, original,
 processed (each a "meshdiff.profile/1" dict), roughness_distance,
 surface_distance (None for a half switched off). Surface distances are in the
 meshes' unit; "forward" samples the original (V1, F1); "relative" values divide
@@ -719,7 +739,7 @@ by the original's bounding-box diagonal. The arrays' "path" is "<array V1>" and
 "<array V2>"; arrays get no input hygiene (isolated vertices are reported as
 warnings).
 
-Example: meshdiff.compare(V, F, V2, F2, levels=[1, 5, 20])["surface_distance"]["hausdorff"]
+Example: meshdiff.compare(V, F, V2, F2, levels=[1, 5, 20])["surface_distance"]["hausdorff"]["upper"]
 )doc";
 
 constexpr const char* kCompareFilesDoc =
@@ -821,7 +841,8 @@ PYBIND11_MODULE(meshdiff, m)
             py::arg("weighting") = "none", py::arg("k") = 1e-4, py::arg("roughness") = true, py::arg("distance") = true,
             py::arg("samples") = py::none(), py::arg("density") = py::none(), py::arg("face_sampling") = "similar",
             py::arg("seed") = 1, py::arg("vertex_samples") = true, py::arg("edge_samples") = true,
-            py::arg("face_samples") = true, py::arg("threads") = 0);
+            py::arg("face_samples") = true, py::arg("hausdorff") = "certified", py::arg("hausdorff_tolerance") = 1e-4,
+            py::arg("hausdorff_abs_tolerance") = py::none(), py::arg("threads") = 0);
     };
     compare_options_args([&](auto... options) {
         m.def("compare", &py_compare, compare_doc.c_str(), py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"),

@@ -16,6 +16,6 @@ build/meshdiff tests/data/bunny_res3.ply tests/data/bunny_res4_ascii.ply --level
 echo
 # The interpreter CMake chose (one that imports numpy: /usr/bin/python3 on Debian).
 py=$(sed -n 's/^MESHDIFF_PYTHON_EXECUTABLE:[A-Z]*=//p' build/CMakeCache.txt)
-code="import meshdiff; print(meshdiff.compare_files('tests/data/bunny_res3.ply', 'tests/data/bunny_res4_ascii.ply')['surface_distance']['hausdorff'])"
+code="import meshdiff; print(meshdiff.compare_files('tests/data/bunny_res3.ply', 'tests/data/bunny_res4_ascii.ply')['surface_distance']['hausdorff']['upper'])"
 echo "\$ PYTHONPATH=build/python $py -c \"$code\""
 PYTHONPATH=build/python "$py" -c "$code"

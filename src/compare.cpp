@@ -17,6 +17,7 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
     if (!(options.k > 0.0) || !std::isfinite(options.k))
         throw InvalidArgumentError(fmt::format("compare: k = {} must be > 0", options.k));
     validate(options.sampling);
+    if (options.hausdorff) validate(*options.hausdorff);
     Comparison c;
     c.options = options;
     // The serial topology reports overlap the (partly serial) analyses.
@@ -28,7 +29,7 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         c.roughness = roughness_distance(*c.original_profile, *c.processed_profile, options.k);
     }
     if (options.distance) {
-        c.distance = surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances);
+        c.distance = surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff);
         c.processed_vertex_distance = std::move(c.distance->b_vertex_distance);
         c.distance->b_vertex_distance.clear();
     } else if (options.vertex_distances) {

@@ -76,8 +76,8 @@ void validate(const HausdorffOptions& o)
         throw InvalidArgumentError(
             fmt::format("HausdorffOptions: relative_tolerance = {} must be in [0, 1)", o.relative_tolerance));
     if (!(std::isfinite(o.absolute_tolerance) && o.absolute_tolerance >= 0.0))
-        throw InvalidArgumentError(fmt::format("HausdorffOptions: absolute_tolerance = {} must be finite and >= 0",
-                                               o.absolute_tolerance));
+        throw InvalidArgumentError(
+            fmt::format("HausdorffOptions: absolute_tolerance = {} must be finite and >= 0", o.absolute_tolerance));
     if (o.relative_tolerance == 0.0 && o.absolute_tolerance == 0.0)
         throw InvalidArgumentError("HausdorffOptions: relative_tolerance and absolute_tolerance are both 0");
 }
@@ -138,7 +138,8 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
     double longest_b = 0.0;
     for (const Face& f : b.faces)
         for (std::size_t k = 0; k < 3; ++k)
-            longest_b = std::max(longest_b, (b.points[std::size_t(f[k])] - b.points[std::size_t(f[(k + 1) % 3])]).norm());
+            longest_b =
+                std::max(longest_b, (b.points[std::size_t(f[k])] - b.points[std::size_t(f[(k + 1) % 3])]).norm());
     auto diameter = [](const Cell& c) {
         return std::max({(c.corner[0] - c.corner[1]).norm(), (c.corner[1] - c.corner[2]).norm(),
                          (c.corner[2] - c.corner[0]).norm()});
@@ -164,8 +165,8 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
             std::array<std::uint32_t, 4> tried{c.closest[0], c.closest[1], c.closest[2], c.hint};
             for (std::size_t k = 0; k < 4; ++k) {
                 const std::uint32_t t = tried[k];
-                if (t == kNone || std::find(tried.begin(), tried.begin() + std::ptrdiff_t(k), t) !=
-                                      tried.begin() + std::ptrdiff_t(k))
+                if (t == kNone ||
+                    std::find(tried.begin(), tried.begin() + std::ptrdiff_t(k), t) != tried.begin() + std::ptrdiff_t(k))
                     continue;
                 u = std::min(u, max_corner_distance(c.corner, b, t, u));
             }

@@ -28,6 +28,21 @@ VertexMap distance_map(const Comparison& c, std::optional<std::pair<double, doub
     m.comments = {
         fmt::format("per-vertex distance of {} to the surface of {}", c.processed.input.path, c.original.input.path),
         fmt::format("colour: blue (low) to red (high) over [{:.9g}, {:.9g}]", lo, hi)};
+    // Where the certified one-sided Hausdorff distances are attained on this
+    // (the processed) mesh: the backward one at a point of it, the forward one
+    // at the closest point of it to a point of the original.
+    if (c.distance && c.distance->backward_hausdorff && c.distance->forward_hausdorff) {
+        const HausdorffLocation& b = c.distance->backward_hausdorff->location;
+        const HausdorffLocation& f = c.distance->forward_hausdorff->location;
+        m.comments.push_back(
+            fmt::format("hausdorff processed->original in [{:.9g}, {:.9g}] attained at {:.9g} {:.9g} {:.9g} on face {}",
+                        c.distance->backward_hausdorff->lower, c.distance->backward_hausdorff->upper, b.point.x(),
+                        b.point.y(), b.point.z(), b.face));
+        m.comments.push_back(fmt::format(
+            "hausdorff original->processed in [{:.9g}, {:.9g}] attained nearest to {:.9g} {:.9g} {:.9g} on face {}",
+            c.distance->forward_hausdorff->lower, c.distance->forward_hausdorff->upper, f.closest_point.x(),
+            f.closest_point.y(), f.closest_point.z(), f.closest_face));
+    }
     return m;
 }
 

@@ -68,7 +68,7 @@ if within "$limit" "$tmp/fan.ply" "$tmp/fan.ply" --json "$tmp/compare.json"; the
         pass || fail "compare: no capped-neighbourhood warning for the original"
     grep -q "! processed: 100000 curvature fits" "$tmp/stdout" && pass || fail "compare: none for the processed"
     json_check "$tmp/compare.json" "j['original']['curvature']['capped_neighbourhoods'] == 100000 and \
-j['surface_distance']['hausdorff'] < 1e-12 and j['surface_distance']['forward']['samples'] == 1000000"
+j['surface_distance']['hausdorff']['upper'] < 1e-12 and j['surface_distance']['hausdorff']['certified'] and j['surface_distance']['forward']['samples'] == 1000000"
 fi
 
 rm -f "$tmp"/*.ply "$tmp"/*.json

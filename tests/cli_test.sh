@@ -115,7 +115,7 @@ PY
 scale_ply "$tmp/s.ply" "$tmp/big_a.ply" 0.999e30 && scale_ply "$tmp/ns.ply" "$tmp/big_b.ply" 0.999e30 &&
     scale_ply "$tmp/ns.ply" "$tmp/over.ply" 1.001e30 && pass || fail "scale_ply"
 expect_within 60 0 "$tmp/big_a.ply" "$tmp/big_b.ply" --levels 1,2 --json "$tmp/big.json"
-json_check "$tmp/big.json" 'finite(j) and [p for p in nulls(j) if p.split(".")[-1] not in ("cutoff", "density_requested", "samples_requested")] == [] and j["surface_distance"]["hausdorff"] > 1e26 and j["roughness_distance"]["global"]["distance"] > 0'
+json_check "$tmp/big.json" 'finite(j) and [p for p in nulls(j) if p.split(".")[-1] not in ("cutoff", "density_requested", "samples_requested")] == [] and j["surface_distance"]["hausdorff"]["lower"] > 1e26 and j["surface_distance"]["hausdorff"]["certified"] and j["roughness_distance"]["global"]["distance"] > 0'
 expect_within 10 4 profile "$tmp/over.ply" && grep -q "over.ply: vertex [0-9]* has the coordinate .* beyond meshdiff's limit of +-1e+30" "$tmp/stderr" &&
     pass || fail "coordinate limit message"
 
@@ -152,13 +152,33 @@ expect 0 "$data/sphere_ico_2562.ply" "$data/ellipsoid_150_100_100.ply" --levels 
     grep -q "Hausdorff distance" "$tmp/stdout" && pass || fail "compare text"
 expect 0 compare "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --levels 1,5 --json "$tmp/c1.json" \
     --threads 1 --distance-map "$tmp/dm.ply" --color-range 0 0.01
-json_check "$tmp/c1.json" 'j["schema"] == "meshdiff.compare/1" and j["original"]["schema"] == "meshdiff.profile/1" and j["roughness_distance"]["k"] == 1e-4 and len(j["roughness_distance"]["distance"]) == 2 and "global" in j["roughness_distance"] and all(k in j["surface_distance"]["forward"] for k in ("min","max","mean","rms","samples")) and j["surface_distance"]["hausdorff"] == max(j["surface_distance"]["forward"]["max"], j["surface_distance"]["backward"]["max"]) and j["surface_distance"]["diagonal"] > 0 and finite(j)'
+json_check "$tmp/c1.json" 'j["schema"] == "meshdiff.compare/2" and j["original"]["schema"] == "meshdiff.profile/1" and j["roughness_distance"]["k"] == 1e-4 and len(j["roughness_distance"]["distance"]) == 2 and "global" in j["roughness_distance"] and all(k in j["surface_distance"]["forward"] for k in ("min","max","mean","rms","samples")) and j["surface_distance"]["sampled_hausdorff"] == max(j["surface_distance"]["forward"]["max"], j["surface_distance"]["backward"]["max"]) and j["surface_distance"]["hausdorff"]["lower"] >= j["surface_distance"]["sampled_hausdorff"] and j["surface_distance"]["hausdorff"]["certified"] and j["surface_distance"]["diagonal"] > 0 and finite(j)'
 head -c 2000 "$tmp/dm.ply" | grep -q "property double distance" && pass || fail "distance map lacks distance"
 expect 0 compare "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --levels 1,5 --json "$tmp/c2.json" --threads 2
 python3 -c "import json,sys; a=json.load(open(sys.argv[1])); b=json.load(open(sys.argv[2])); sys.exit(0 if a==b else 1)" \
     "$tmp/c1.json" "$tmp/c2.json" && pass || fail "compare JSON differs between 1 and 2 threads"
 expect 0 "$data/hemisphere.ply" "$data/hemisphere.ply" --no-roughness --json "$tmp/self.json"
-json_check "$tmp/self.json" 'j["surface_distance"]["hausdorff"] < 1e-12 * j["surface_distance"]["diagonal"] and j["roughness_distance"] is None'
+json_check "$tmp/self.json" 'j["surface_distance"]["hausdorff"]["upper"] < 1e-12 * j["surface_distance"]["diagonal"] and j["surface_distance"]["hausdorff"]["certified"] and j["roughness_distance"] is None'
+# --- certified Hausdorff distance (issue 10): the options, the text, and --hausdorff sampled
+expect 0 "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-roughness &&
+    grep -Eq "^Hausdorff distance: [0-9.e-]+ \.\. [0-9.e-]+ \(.*\), certified$" "$tmp/stdout" &&
+    grep -Eq "^  forward  \(M1 -> M2\): [0-9.e-]+ \.\. [0-9.e-]+, at \(.*\) on face [0-9]+ of M1, closest point" "$tmp/stdout" &&
+    grep -Eq "^Sampled maximum: " "$tmp/stdout" && pass || fail "certified Hausdorff text: $(grep -i hausdorff "$tmp/stdout")"
+expect 0 "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-roughness --hausdorff sampled &&
+    grep -Eq "^Hausdorff distance: [0-9.e-]+ \([0-9.e-]+ wrt bounding box diagonal" "$tmp/stdout" &&
+    ! grep -q "Sampled maximum\|certified" "$tmp/stdout" && pass || fail "--hausdorff sampled text"
+expect 0 "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-roughness --hausdorff-tolerance 1e-9 --json "$tmp/h9.json"
+json_check "$tmp/h9.json" 'all(j["surface_distance"][d]["hausdorff"]["upper"] - j["surface_distance"][d]["hausdorff"]["lower"] <= 1e-9 * j["surface_distance"][d]["hausdorff"]["lower"] and j["surface_distance"][d]["hausdorff"]["certified"] for d in ("forward", "backward"))'
+expect 0 "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-roughness --hausdorff-abs-tolerance 2e-7 --json "$tmp/ha.json"
+json_check "$tmp/ha.json" 'all(j["surface_distance"][d]["hausdorff"]["tolerance"] == 2e-7 and j["surface_distance"][d]["hausdorff"]["upper"] - j["surface_distance"][d]["hausdorff"]["lower"] <= 2e-7 for d in ("forward", "backward"))'
+expect 0 "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-roughness --hausdorff-tolerance 1e-12 --hausdorff-budget 5 --json "$tmp/hb.json" &&
+    grep -q "NOT certified: the evaluation budget ran out" "$tmp/stdout" && pass || fail "budget text"
+json_check "$tmp/hb.json" 'not j["surface_distance"]["hausdorff"]["certified"] and j["surface_distance"]["backward"]["hausdorff"]["budget_exhausted"] and j["surface_distance"]["hausdorff"]["upper"] >= j["surface_distance"]["hausdorff"]["lower"] and finite(j)'
+for bad in "--hausdorff exact" "--hausdorff-tolerance 0" "--hausdorff-tolerance 1" "--hausdorff-tolerance nan" \
+    "--hausdorff-abs-tolerance -1" "--hausdorff-abs-tolerance inf" "--hausdorff-budget 0" "--hausdorff-budget 2.5"; do
+    # shellcheck disable=SC2086
+    expect 2 "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" $bad
+done
 expect 0 "$data/sphere_ico_2562.ply" "$data/sphere_ico_2562.ply" --no-distance --json "$tmp/same.json"
 json_check "$tmp/same.json" 'all(d == 0 for d in j["roughness_distance"]["distance"]) and j["roughness_distance"]["global"]["distance"] == 0'
 expect 0 "$data/torus_R1_r025.ply" "$data/hemisphere.ply" --face-sampling montecarlo --seed 7 --samples 5000 --json "$tmp/mc1.json" --no-roughness

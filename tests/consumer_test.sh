@@ -62,11 +62,11 @@ for line in '^meshdiff [0-9]+\.[0-9]+\.[0-9]+: ' '^levels: 20 \+ global$' '^  d_
     grep -Eq "$line" <<<"$out" || fail "no line matching /$line/"
 done
 
-echo "-- meshdiff::report: the comparison as meshdiff.compare/1 JSON"
+echo "-- meshdiff::report: the comparison as meshdiff.compare/2 JSON"
 json_out="$("$tmp/consumer/compare_json" "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply")" ||
     fail "compare_json exited with $?"
 echo "$json_out"
-grep -Eq '^meshdiff.compare/1 hausdorff [0-9.e-]+$' <<<"$json_out" || fail "compare_json output"
+grep -Eq '^meshdiff.compare/2 hausdorff [0-9.e-]+$' <<<"$json_out" || fail "compare_json output"
 
 echo "-- a missing file: nonzero exit and a message"
 set +e

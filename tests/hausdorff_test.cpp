@@ -118,7 +118,8 @@ TEST(HausdorffBound, EqualsBruteForceMinimumOfMaximumCornerDistance)
         EXPECT_LE(early, 2.0 * brute + 0.1);
         EXPECT_GE(early, brute - 1e-15);
         // It is an upper bound of the distance of the triangle's points.
-        for (double w : {0.2, 0.5}) EXPECT_LE(index.closest_point(w * c[0] + (1 - w) / 2 * (c[1] + c[2])).distance, got);
+        for (double w : {0.2, 0.5})
+            EXPECT_LE(index.closest_point(w * c[0] + (1 - w) / 2 * (c[1] + c[2])).distance, got);
     }
 }
 
@@ -321,8 +322,8 @@ TEST(Hausdorff, AbsoluteToleranceAndSeed)
 TEST(Hausdorff, RejectsBadOptionsAndMismatchedIndex)
 {
     const Circumcentre t;
-    for (auto [rel, abs] : {std::pair{-1e-4, 0.0}, std::pair{1.0, 0.0}, std::pair{0.0, 0.0}, std::pair{std::nan(""), 1e-3},
-                            std::pair{1e-4, -1.0}, std::pair{1e-4, HUGE_VAL}}) {
+    for (auto [rel, abs] : {std::pair{-1e-4, 0.0}, std::pair{1.0, 0.0}, std::pair{0.0, 0.0},
+                            std::pair{std::nan(""), 1e-3}, std::pair{1e-4, -1.0}, std::pair{1e-4, HUGE_VAL}}) {
         HausdorffOptions o;
         o.relative_tolerance = rel;
         o.absolute_tolerance = abs;

@@ -101,7 +101,7 @@ TEST(CompareJson, HasTheSchemaKeysAndHausdorffIsTheLargerMaximum)
     o.profile.levels = {1, 10};
     o.sampling.samples = 20000;
     const auto j = comparison_json(compare_meshes(a, b, o));
-    EXPECT_EQ(j["schema"], "meshdiff.compare/1");
+    EXPECT_EQ(j["schema"], "meshdiff.compare/2");
     EXPECT_EQ(j["original"]["schema"], "meshdiff.profile/1");
     const auto& rd = j["roughness_distance"];
     for (const char* key : {"k", "levels", "distance", "relative_change", "global"}) EXPECT_TRUE(rd.contains(key));
@@ -111,11 +111,35 @@ TEST(CompareJson, HasTheSchemaKeysAndHausdorffIsTheLargerMaximum)
         EXPECT_TRUE(sd["forward"].contains(key));
         EXPECT_TRUE(sd["backward"].contains(key));
     }
-    EXPECT_EQ(sd["hausdorff"].get<double>(),
+    EXPECT_EQ(sd["sampled_hausdorff"].get<double>(),
               std::max(sd["forward"]["max"].get<double>(), sd["backward"]["max"].get<double>()));
+    // Certified by default: the interval holds the sampled maxima and is the
+    // larger of the one-sided intervals.
+    const auto& h = sd["hausdorff"];
+    EXPECT_EQ(h["method"], "certified");
+    EXPECT_TRUE(h["certified"].get<bool>());
+    EXPECT_GE(h["lower"].get<double>(), sd["sampled_hausdorff"].get<double>());
+    EXPECT_EQ(h["lower"].get<double>(), std::max(sd["forward"]["hausdorff"]["lower"].get<double>(),
+                                                 sd["backward"]["hausdorff"]["lower"].get<double>()));
+    EXPECT_EQ(h["upper"].get<double>(), std::max(sd["forward"]["hausdorff"]["upper"].get<double>(),
+                                                 sd["backward"]["hausdorff"]["upper"].get<double>()));
+    for (const char* dir : {"forward", "backward"}) {
+        const auto& d = sd[dir]["hausdorff"];
+        EXPECT_LE(d["upper"].get<double>() - d["lower"].get<double>(), d["tolerance"].get<double>());
+        EXPECT_EQ(d["location"]["point"].size(), 3u);
+        for (const char* key : {"face", "closest_point", "closest_face", "bound_evaluations"})
+            EXPECT_TRUE(d["location"].contains(key) || d.contains(key)) << key;
+    }
     // The stretched sphere reaches 0.5 beyond the unit sphere along x.
-    EXPECT_NEAR(sd["hausdorff"].get<double>(), 0.5, 0.01);
+    EXPECT_NEAR(h["lower"].get<double>(), 0.5, 0.01);
     EXPECT_TRUE(all_finite(j));
+    // --hausdorff sampled: the sampled maximum as the lower bound, no upper bound.
+    o.hausdorff.reset();
+    const auto s = comparison_json(compare_meshes(a, b, o))["surface_distance"];
+    EXPECT_EQ(s["hausdorff"]["method"], "sampled");
+    EXPECT_EQ(s["hausdorff"]["lower"], s["sampled_hausdorff"]);
+    EXPECT_TRUE(s["hausdorff"]["upper"].is_null());
+    EXPECT_TRUE(s["forward"]["hausdorff"].is_null());
 }
 
 TEST(CompareJson, SurfaceDistanceObjectIsSurfaceDistanceJson)
@@ -127,7 +151,7 @@ TEST(CompareJson, SurfaceDistanceObjectIsSurfaceDistanceJson)
     o.sampling.samples = 8000;
     const Comparison c = compare_meshes(a, b, o);
     EXPECT_EQ(comparison_json(c)["surface_distance"], surface_distance_json(*c.distance, o.sampling));
-    const auto j = surface_distance_json(surface_distance(a.mesh, b.mesh, o.sampling), o.sampling);
+    const auto j = surface_distance_json(surface_distance(a.mesh, b.mesh, o.sampling, false, o.hausdorff), o.sampling);
     EXPECT_EQ(j, comparison_json(c)["surface_distance"]);
     EXPECT_EQ(j["sampling"]["samples_requested"], 8000);
     EXPECT_TRUE(j["cutoff"].is_null());
@@ -140,7 +164,7 @@ TEST(CompareJson, EachHalfCanBeSwitchedOff)
     o.roughness = false;
     auto j = comparison_json(compare_meshes(a, a, o));
     EXPECT_TRUE(j["roughness_distance"].is_null());
-    EXPECT_LT(j["surface_distance"]["hausdorff"].get<double>(), 1e-12);
+    EXPECT_LT(j["surface_distance"]["hausdorff"]["upper"].get<double>(), 1e-12);
     o.roughness = true;
     o.distance = false;
     j = comparison_json(compare_meshes(a, a, o));
@@ -207,7 +231,7 @@ TEST(BatchJson, OkAndErrorLinesHaveTheirKeys)
     EXPECT_EQ(keys(ok), (std::vector<std::string>{"id", "original", "processed", "result", "status"}));
     EXPECT_EQ(ok["status"], "ok");
     EXPECT_EQ(ok["id"], "p1");
-    EXPECT_EQ(ok["result"]["schema"], "meshdiff.compare/1");
+    EXPECT_EQ(ok["result"]["schema"], "meshdiff.compare/2");
     const auto err = batch_error_json("p2", "a.ply", "missing.ply", "missing.ply: cannot open", 3);
     EXPECT_EQ(keys(err), (std::vector<std::string>{"error", "exit_code", "id", "original", "processed", "status"}));
     EXPECT_EQ(err["status"], "error");

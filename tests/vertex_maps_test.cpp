@@ -94,7 +94,11 @@ TEST(DistanceMap, DefaultRangeIsZeroToTheMaximumFromBlueToRed)
             EXPECT_EQ(m.colors[i], kBlue) << i;
         }
     EXPECT_EQ(m.colors, sequential_colors(d, 0.0, *hi));
-    ASSERT_EQ(m.comments.size(), 2u);
+    // Two comments, and two more that mark where the certified Hausdorff
+    // distances are attained.
+    ASSERT_EQ(m.comments.size(), 4u);
+    EXPECT_EQ(m.comments[2].rfind("hausdorff processed->original in [", 0), 0u) << m.comments[2];
+    EXPECT_EQ(m.comments[3].rfind("hausdorff original->processed in [", 0), 0u) << m.comments[3];
     EXPECT_NE(m.comments[0].find(ellipsoid().input.path), std::string::npos) << m.comments[0];
     EXPECT_NE(m.comments[0].find(sphere().input.path), std::string::npos) << m.comments[0];
 }

@@ -142,6 +142,22 @@ void add_compare_options(CLI::App* sub, CompareCliOptions& o)
     sub->add_flag("--no-vertex-samples", o.no_vertex_samples, "do not sample vertices");
     sub->add_flag("--no-edge-samples", o.no_edge_samples, "do not sample edges");
     sub->add_flag("--no-face-samples", o.no_face_samples, "do not sample faces");
+    sub->add_option("--hausdorff", o.hausdorff,
+                    "certified: also an interval [lower, upper] holding the true one-sided Hausdorff distances, "
+                    "and where they are attained; sampled: the sampled maxima only (Metro)")
+        ->check(CLI::IsMember({"certified", "sampled"}))
+        ->capture_default_str();
+    sub->add_option("--hausdorff-tolerance", o.hausdorff_tolerance,
+                    "width of the certified interval relative to the value (default 1e-4: four certain digits)")
+        ->check(in_range(1e-12, 0.5));
+    sub->add_option("--hausdorff-abs-tolerance", o.hausdorff_abs_tolerance,
+                    "width of the certified interval in the meshes' unit instead (with both tolerances, the "
+                    "larger wins)")
+        ->check(in_range(1e-300, 1e300));
+    sub->add_option("--hausdorff-budget", o.hausdorff_budget,
+                    "most triangle bounds per direction before the interval reached is reported (default "
+                    "2,000,000 + 20 x the faces of the sampled mesh)")
+        ->check(in_range(1, kMaxHausdorffBudget, true));
 }
 
 CompareOptions to_compare_options(const CompareCliOptions& o)
@@ -161,6 +177,15 @@ CompareOptions to_compare_options(const CompareCliOptions& o)
     c.sampling.edges = !o.no_edge_samples;
     c.sampling.faces = !o.no_face_samples;
     validate(c.sampling);
+    if (o.hausdorff == "sampled") {
+        c.hausdorff.reset();
+    } else {
+        c.hausdorff->relative_tolerance =
+            o.hausdorff_tolerance > 0.0 ? o.hausdorff_tolerance : (o.hausdorff_abs_tolerance > 0.0 ? 0.0 : 1e-4);
+        c.hausdorff->absolute_tolerance = o.hausdorff_abs_tolerance;
+        c.hausdorff->max_evaluations = o.hausdorff_budget;
+        validate(*c.hausdorff);
+    }
     return c;
 }
 

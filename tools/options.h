@@ -43,6 +43,10 @@ struct CompareCliOptions
     std::string face_sampling = "similar";
     std::uint64_t seed = 1;
     bool no_vertex_samples = false, no_edge_samples = false, no_face_samples = false;
+    std::string hausdorff = "certified";
+    double hausdorff_tolerance = 0.0;  // 0: 1e-4, or none when an absolute tolerance is given
+    double hausdorff_abs_tolerance = 0.0;
+    std::size_t hausdorff_budget = 0;  // 0: the library's default
 };
 void add_compare_options(CLI::App* sub, CompareCliOptions& o);
 CompareOptions to_compare_options(const CompareCliOptions& o);
@@ -55,6 +59,9 @@ CLI::Validator positive(double hi = 1e300);
 
 //! The largest thread count accepted by --threads.
 constexpr int kMaxThreads = 1024;
+//! The largest --hausdorff-budget (bounds of triangles; each costs some 100
+//! bytes while open).
+constexpr double kMaxHausdorffBudget = 1e9;
 //! The most levels a --levels list may hold (each level keeps a value per vertex).
 constexpr std::size_t kMaxLevels = 200;
 

@@ -3,10 +3,11 @@
 //! `meshdiff ORIGINAL PROCESSED` reports: both roughness profiles, the
 //! per-level roughness distance (roughness_distance.h) and the Metro-style
 //! surface distance (surface_distance.h), with the facts of both meshes. The
-//! JSON (schema "meshdiff.compare/1") and text forms are in meshdiff/report/.
+//! JSON (schema "meshdiff.compare/2") and text forms are in meshdiff/report/.
 #pragma once
 
 #include "meshdiff/facts.h"
+#include "meshdiff/hausdorff.h"
 #include "meshdiff/io.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/roughness_distance.h"
@@ -25,6 +26,10 @@ struct CompareOptions
     bool roughness = true;       //!< compute the profiles and their distance
     bool distance = true;        //!< compute the surface distance
     SamplingOptions sampling{};  //!< surface sampling (Metro defaults)
+    //! Certify both one-sided Hausdorff distances (hausdorff.h) with these
+    //! options, the lower bounds seeded with the sampled maxima; std::nullopt
+    //! keeps the sampled maximum only (`--hausdorff sampled`).
+    std::optional<HausdorffOptions> hausdorff = HausdorffOptions{};
     //! Also the exact distance of every vertex of the processed mesh to the
     //! original surface (Comparison::processed_vertex_distance), for a
     //! distance map; it reuses the index of the surface distance.

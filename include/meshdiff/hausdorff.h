@@ -2,7 +2,7 @@
 //! \brief The certified one-sided Hausdorff distance between two triangle
 //! meshes: an interval [lower, upper] that contains the true value
 //! max over p on A of d(p, B), with upper - lower within a tolerance, and the
-//! point of A where the lower bound is attained (METHOD.md section 6).
+//! point of A where the lower bound is attained (docs/accuracy.md).
 //!
 //! Method: branch and bound over the triangles of A (after Tang, Lee, Kim,
 //! "Interactive Hausdorff distance computation for general polygonal models",

@@ -27,7 +27,9 @@ struct VertexMap
 //! The distance map of a comparison made with CompareOptions::vertex_distances:
 //! per vertex of the processed mesh its exact distance to the original surface
 //! (property "distance"), coloured by sequential_colors() over
-//! \p color_range, by default [0, largest distance].
+//! \p color_range, by default [0, largest distance]. With certified Hausdorff
+//! distances, two comments mark where they are attained on the processed
+//! mesh (point and face).
 //! \throw InvalidArgumentError if the comparison has no vertex distances or
 //!        the range is not MIN < MAX.
 VertexMap distance_map(const Comparison& comparison, std::optional<std::pair<double, double>> color_range = {});

@@ -109,5 +109,30 @@ def test_surface_distance_samples_are_those_of_the_statistics(bunny, data):
         np.testing.assert_allclose(s["distances"][pick], brute_force_distance(s["points"][pick], Vb, Fb),
                                    rtol=1e-9, atol=1e-15)
         assert np.all(brute_force_distance(s["points"][pick[:30]], Va, Fa) < 1e-12)
-    assert r["hausdorff"] == plain["hausdorff"] == max(r["forward"]["max"], r["backward"]["max"])
+    assert r["sampled_hausdorff"] == plain["sampled_hausdorff"] == max(r["forward"]["max"], r["backward"]["max"])
+    assert r["hausdorff"]["method"] == "sampled" and r["forward"]["hausdorff"] is None
     assert r["forward_is"].startswith("samples on the original")
+
+
+def test_compare_certifies_the_hausdorff_distance(data):
+    # A flat square against the same square with its centre raised by 0.3: the
+    # backward Hausdorff distance is 0.3 exactly (at the apex).
+    V = np.array([[0, 0, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0], [-1, -1, 0]], dtype=float)
+    F = np.array([[0, 1, 2], [0, 2, 3], [0, 3, 4], [0, 4, 1]])
+    W = V.copy()
+    W[0, 2] = 0.3
+    sd = meshdiff.compare(V, F, W, F, roughness=False, hausdorff_tolerance=1e-9)["surface_distance"]
+    h = sd["hausdorff"]
+    assert h["method"] == "certified" and h["certified"]
+    assert h["lower"] <= 0.3 <= h["upper"] and h["upper"] - h["lower"] <= 1e-9 * 0.3 + 1e-15
+    assert h["attained"] == "backward"
+    np.testing.assert_allclose(sd["backward"]["hausdorff"]["location"]["point"], [0, 0, 0.3], atol=1e-12)
+    assert sd["forward"]["hausdorff"]["lower"] == pytest.approx(0.3 / np.sqrt(1.09), rel=1e-9)
+    absolute = meshdiff.compare(V, F, W, F, roughness=False, hausdorff_abs_tolerance=1e-6)["surface_distance"]
+    assert absolute["backward"]["hausdorff"]["tolerance"] == 1e-6
+    sampled = meshdiff.compare(V, F, W, F, roughness=False, hausdorff="sampled")["surface_distance"]
+    assert sampled["hausdorff"]["method"] == "sampled" and sampled["hausdorff"]["upper"] is None
+    assert sampled["forward"]["hausdorff"] is None
+    for bad in ({"hausdorff": "exact"}, {"hausdorff_tolerance": 0.0}, {"hausdorff_abs_tolerance": -1.0}):
+        with pytest.raises(ValueError):
+            meshdiff.compare(V, F, W, F, roughness=False, **bad)

@@ -2,7 +2,9 @@
 
 #include "meshdiff/version.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace meshdiff {
 
@@ -155,16 +157,75 @@ nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal)
     return j;
 }
 
+namespace {
+
+nlohmann::json point_json(const Vec3& p)
+{
+    return {p.x(), p.y(), p.z()};
+}
+
+// One direction's certified Hausdorff distance, or null (sampled only).
+nlohmann::json certified_json(const std::optional<CertifiedHausdorff>& h, double diagonal)
+{
+    if (!h) return nullptr;
+    return {{"lower", h->lower},
+            {"upper", number_or_null(h->upper)},
+            {"tolerance", h->tolerance},
+            {"certified", h->certified},
+            {"budget_exhausted", h->budget_exhausted},
+            {"relative", {{"lower", h->lower / diagonal}, {"upper", number_or_null(h->upper / diagonal)}}},
+            {"location",
+             {{"point", point_json(h->location.point)},
+              {"face", h->location.face},
+              {"closest_point", point_json(h->location.closest_point)},
+              {"closest_face", h->location.closest_face}}},
+            {"bound_evaluations", h->bound_evaluations},
+            {"point_evaluations", h->point_evaluations},
+            {"rounds", h->rounds}};
+}
+
+}  // namespace
+
 nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOptions& so)
 {
-    return {{"forward", distance_stats_json(d.forward, d.diagonal)},
-            {"backward", distance_stats_json(d.backward, d.diagonal)},
-            {"hausdorff", d.hausdorff},
-            {"hausdorff_relative", d.hausdorff / d.diagonal},
+    nlohmann::json forward = distance_stats_json(d.forward, d.diagonal);
+    nlohmann::json backward = distance_stats_json(d.backward, d.diagonal);
+    forward["hausdorff"] = certified_json(d.forward_hausdorff, d.diagonal);
+    backward["hausdorff"] = certified_json(d.backward_hausdorff, d.diagonal);
+    // The symmetric distance: max of the one-sided ones, so its interval is
+    // [max of the lowers, max of the uppers].
+    nlohmann::json hausdorff;
+    if (d.forward_hausdorff && d.backward_hausdorff) {
+        const CertifiedHausdorff& f = *d.forward_hausdorff;
+        const CertifiedHausdorff& b = *d.backward_hausdorff;
+        const double lower = std::max(f.lower, b.lower);
+        const double upper = std::max(f.upper, b.upper);
+        hausdorff = {{"method", "certified"},
+                     {"lower", lower},
+                     {"upper", number_or_null(upper)},
+                     {"certified", f.certified && b.certified},
+                     {"attained", f.lower >= b.lower ? "forward" : "backward"},
+                     {"relative", {{"lower", lower / d.diagonal}, {"upper", number_or_null(upper / d.diagonal)}}},
+                     {"relative_metro",
+                      {{"lower", lower / d.metro_diagonal}, {"upper", number_or_null(upper / d.metro_diagonal)}}}};
+    } else {
+        hausdorff = {{"method", "sampled"},
+                     {"lower", d.hausdorff},
+                     {"upper", nullptr},
+                     {"certified", false},
+                     {"attained", d.forward.max >= d.backward.max ? "forward" : "backward"},
+                     {"relative", {{"lower", d.hausdorff / d.diagonal}, {"upper", nullptr}}},
+                     {"relative_metro", {{"lower", d.hausdorff / d.metro_diagonal}, {"upper", nullptr}}}};
+    }
+    return {{"forward", forward},
+            {"backward", backward},
+            {"hausdorff", hausdorff},
+            {"sampled_hausdorff", d.hausdorff},
+            {"sampled_hausdorff_relative", d.hausdorff / d.diagonal},
             {"diagonal", d.diagonal},
             {"diagonal_of", "bounding box of the original mesh"},
             {"metro_diagonal", d.metro_diagonal},
-            {"hausdorff_relative_metro", d.hausdorff / d.metro_diagonal},
+            {"sampled_hausdorff_relative_metro", d.hausdorff / d.metro_diagonal},
             {"metro_diagonal_of", "union bounding box of both meshes widened by 2% of its diagonal on every side"},
             {"sampling",
              {{"face_scheme", to_string(so.face_scheme)},
@@ -181,7 +242,7 @@ nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOpt
 nlohmann::json comparison_json(const Comparison& c)
 {
     nlohmann::json j;
-    j["schema"] = "meshdiff.compare/1";
+    j["schema"] = "meshdiff.compare/2";
     j["meshdiff_version"] = MESHDIFF_VERSION;
     auto side = [&](const MeshFacts& f, const std::optional<RoughnessProfile>& p) {
         if (p) return profile_json(f, *p);

@@ -133,10 +133,36 @@ std::string comparison_text(const Comparison& c)
         s += fmt::format("  diagonal = bounding-box diagonal of the original = {:.6g}\n", d.diagonal);
         s += stats_text("Forward distance (M1 -> M2):", d.forward, d.diagonal);
         s += stats_text("Backward distance (M2 -> M1):", d.backward, d.diagonal);
-        s += fmt::format(
-            "Hausdorff distance: {:.6g} ({:.6g} wrt bounding box diagonal; {:.6g} wrt Metro's "
-            "widened union box, diagonal {:.6g})\n",
-            d.hausdorff, d.hausdorff / d.diagonal, d.hausdorff / d.metro_diagonal, d.metro_diagonal);
+        if (d.forward_hausdorff && d.backward_hausdorff) {
+            const CertifiedHausdorff& f = *d.forward_hausdorff;
+            const CertifiedHausdorff& b = *d.backward_hausdorff;
+            const double lower = std::max(f.lower, b.lower), upper = std::max(f.upper, b.upper);
+            const bool certified = f.certified && b.certified;
+            s += fmt::format("Hausdorff distance: {:.8g} .. {:.8g} ({:.8g} .. {:.8g} wrt bounding box diagonal), {}\n",
+                             lower, upper, lower / d.diagonal, upper / d.diagonal,
+                             certified ? "certified" : "NOT certified: the evaluation budget ran out");
+            auto side = [&](const char* name, const CertifiedHausdorff& h, const char* from, const char* to) {
+                s += fmt::format(
+                    "  {} {:.8g} .. {:.8g}{}, at ({:.9g}, {:.9g}, {:.9g}) on face {} of {}, closest point "
+                    "({:.9g}, {:.9g}, {:.9g}) on face {} of {}\n",
+                    name, h.lower, h.upper, h.certified ? "" : " (not certified)", h.location.point.x(),
+                    h.location.point.y(), h.location.point.z(), h.location.face, from, h.location.closest_point.x(),
+                    h.location.closest_point.y(), h.location.closest_point.z(), h.location.closest_face, to);
+            };
+            side("forward  (M1 -> M2):", f, "M1", "M2");
+            side("backward (M2 -> M1):", b, "M2", "M1");
+            s += fmt::format("  widths asked: {:.3g} and {:.3g}; triangle bounds evaluated: {} and {}\n", f.tolerance,
+                             b.tolerance, f.bound_evaluations, b.bound_evaluations);
+            s += fmt::format(
+                "Sampled maximum: {:.6g} ({:.6g} wrt bounding box diagonal; {:.6g} wrt Metro's "
+                "widened union box, diagonal {:.6g})\n",
+                d.hausdorff, d.hausdorff / d.diagonal, d.hausdorff / d.metro_diagonal, d.metro_diagonal);
+        } else {
+            s += fmt::format(
+                "Hausdorff distance: {:.6g} ({:.6g} wrt bounding box diagonal; {:.6g} wrt Metro's "
+                "widened union box, diagonal {:.6g})\n",
+                d.hausdorff, d.hausdorff / d.diagonal, d.hausdorff / d.metro_diagonal, d.metro_diagonal);
+        }
     }
     return s;
 }

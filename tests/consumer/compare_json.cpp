@@ -21,7 +21,8 @@ int main(int argc, char** argv)
         const meshdiff::Comparison c =
             meshdiff::compare_meshes(meshdiff::read_mesh(argv[1]), meshdiff::read_mesh(argv[2]), options);
         const nlohmann::json j = meshdiff::comparison_json(c);
-        std::cout << j["schema"].get<std::string>() << " hausdorff " << j["surface_distance"]["hausdorff"] << "\n";
+        std::cout << j["schema"].get<std::string>() << " hausdorff " << j["surface_distance"]["hausdorff"]["upper"]
+                  << "\n";
     } catch (const meshdiff::Error& e) {
         std::cerr << "error: " << e.what() << "\n";
         return 1;

@@ -1,6 +1,6 @@
 //! \file report/json.h
 //! \brief The JSON reports of meshdiff (presentation layer, target
-//! meshdiff::report): schemas "meshdiff.profile/1", "meshdiff.compare/1",
+//! meshdiff::report): schemas "meshdiff.profile/1", "meshdiff.compare/2",
 //! "meshdiff.smoothing/1" and the batch lines, built from the plain structs the
 //! library returns. No computing file includes this header. JSON never holds
 //! NaN or Inf: undefined numbers are null and are explained by a count or a
@@ -39,17 +39,20 @@ nlohmann::json profile_json(const MeshFacts& facts, const RoughnessProfile& prof
 nlohmann::json exact_profile_json(const RoughnessProfile& estimated, const ExactProfile& exact,
                                   const std::string& property);
 
-//! The roughness_distance object of "meshdiff.compare/1".
+//! The roughness_distance object of "meshdiff.compare/2".
 nlohmann::json roughness_distance_json(const RoughnessDistance& d);
 
 //! One direction's distance statistics (absolute, and relative to \p diagonal).
 nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal);
 
-//! The surface_distance object of "meshdiff.compare/1": both directions, the
-//! Hausdorff distance, the diagonals and the sampling \p options as requested.
+//! The surface_distance object of "meshdiff.compare/2": both directions (with
+//! their certified Hausdorff distances when computed, else null), the
+//! symmetric Hausdorff distance as an interval (`hausdorff`: method
+//! "certified", or "sampled" with a null upper bound), the sampled maximum
+//! (`sampled_hausdorff`), the diagonals and the sampling \p options as requested.
 nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOptions& options);
 
-//! The "meshdiff.compare/1" object.
+//! The "meshdiff.compare/2" object.
 nlohmann::json comparison_json(const Comparison& c);
 
 //! The "meshdiff.smoothing/1" object of a smoothing of the file \p input
@@ -60,7 +63,7 @@ nlohmann::json smoothing_json(const SmoothingRecord& record, const SmoothingOpti
 //! One line of `meshdiff batch` for a pair that was compared.
 nlohmann::json batch_ok_json(const std::string& id, const std::string& original, const std::string& processed,
                              const Comparison& c);
-//! The same with the comparison already as its "meshdiff.compare/1" object
+//! The same with the comparison already as its "meshdiff.compare/2" object
 //! (from a child process).
 nlohmann::json batch_ok_json(const std::string& id, const std::string& original, const std::string& processed,
                              nlohmann::json result);
