@@ -12,7 +12,7 @@ plot_bumps.sh and studies.sh; run with a python3 that has numpy and matplotlib (
       One panel per recorded level (global last), sigma against iterations. Runs "X post" and
       "X pre" of one method share a colour (post solid, pre dashed). --ref: dashed black line
       at the clean mesh's sigma in every panel. The y range ignores values above F times the
-      largest starting sigma of the panel (default 30); runs cut off by it are named in the
+      largest starting sigma of the panel (default 10); runs cut off by it are named in the
       panel ("off scale").
   plot.py bumps OUT.png TITLE DIR NAME ... [--cb 0.3]
       Ellipsoid front halves coloured by D_3 (DIR/ellipsoid_NAME_vertices.dat), valence-5 circled.
@@ -57,6 +57,29 @@ def split_arg(arg):
     return os.path.basename(arg).rsplit(".", 1)[0], arg
 
 
+def short(y, _pos=None):
+    """Tick label: at most 3 significant digits, exponent form for small and large values."""
+    if y == 0:
+        return "0"
+    t = f"{y:.3g}"
+    if "e" in t:
+        m, e = t.split("e")
+        m = "" if m == "1" else m + "·"
+        return f"{m}1e{int(e)}" if m == "" else f"{m}1e{int(e)}".replace("·1e", "e")
+    return t
+
+
+def log_ticks(ax):
+    """Call after the y range is set: short labels; minor ticks labelled only within one decade."""
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+    lo, hi = ax.get_ylim()
+    ax.yaxis.set_major_formatter(FuncFormatter(short))
+    if lo > 0 and hi / lo < 30:
+        ax.yaxis.set_minor_formatter(FuncFormatter(short))
+    else:
+        ax.yaxis.set_minor_formatter(NullFormatter())
+
+
 def tidy_axis(ax, logy):
     if logy:
         ax.set_yscale("log")
@@ -94,12 +117,15 @@ def profiles(a):
         if ex:
             el = ex.get("levels", lv)
             es = ex["sigma"]
-            pts = [(L, s) for L, s in zip(el, es) if s is not None]
+            pts = [(L, s) for L, s in zip(el, es) if s is not None and (s > 1e-12 or not a.logy)]
             if pts:
                 ax.plot([p[0] for p in pts], [p[1] for p in pts], ":", color=col, lw=1.5,
                         label=f"{name} (exact H)")
-            if ex.get("sigma_global") is not None:
-                ax.plot([gx], [ex["sigma_global"]], "x", color=col, ms=7)
+            else:
+                ax.plot([], [], ":", color=col, lw=1.5, label=f"{name} (exact H: 0, off the log axis)")
+            eg = ex.get("sigma_global")
+            if eg is not None and (eg > 1e-12 or not a.logy):
+                ax.plot([gx], [eg], "x", color=col, ms=7)
     ax.set_xlabel("level L (rings); G = global")
     ax.set_ylabel("sigma_L (scaled mesh, 1/length)")
     step = 1 if lmax <= 12 else 2
@@ -110,6 +136,8 @@ def profiles(a):
     tidy_axis(ax, a.logy)
     if not a.logy:
         ax.set_ylim(bottom=0)
+    else:
+        log_ticks(ax)
     ax.set_title(a.title, fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1), fontsize=8, frameon=False)
     fig.tight_layout()
@@ -182,11 +210,14 @@ def smoothing(a):
                 ax.set_ylim(0, cap * 1.02)
             else:
                 ax.set_ylim(min(lo) / 1.5, min(cap, max(lo)) * 1.5)
-        if off:
-            ax.text(0.98, 0.97, "off scale (clipped at %gx the start):\n" % a.clip + "\n".join(off),
-                    transform=ax.transAxes, ha="right", va="top", fontsize=7, color="#a00000",
-                    bbox=dict(facecolor="white", alpha=0.8, edgecolor="#a00000"))
-        ax.set_title("level %s" % key if key != "global" else "global level", fontsize=10)
+        if not a.linear:
+            log_ticks(ax)
+        title = "level %s" % key if key != "global" else "global level"
+        ax.set_title(title, fontsize=10)
+        if off:  # named under the title, outside the data area
+            ax.set_title(title + "\n", fontsize=10)
+            ax.text(0.5, 1.01, "clipped at %gx the start: %s off scale" % (a.clip, ", ".join(off)),
+                    transform=ax.transAxes, ha="center", va="bottom", fontsize=7, color="#a00000")
         ax.set_xlabel("iteration")
         ax.set_ylabel("sigma")
     for p in range(len(keys), nrow * ncol):
@@ -296,7 +327,7 @@ def fig3(a):
                         label="sigma_G of r_mean/r_i (sphere through each vertex: geometry, zeroth order)")
             ax.set_yscale("log")
             ax.set_ylim(1e-8, 1)
-            ax.yaxis.set_major_formatter(LogFormatterSciNotation())
+            log_ticks(ax)
             ax.grid(True, alpha=0.3)
             ax.set_xlabel("iteration")
             ax.set_ylabel("sigma_1" if key == "sigma_1" else "sigma_G")
@@ -327,7 +358,7 @@ def main():
     q.set_defaults(func=profiles)
     q = s.add_parser("smoothing")
     q.add_argument("out"); q.add_argument("title"); q.add_argument("items", nargs="+")
-    q.add_argument("--ref"); q.add_argument("--clip", type=float, default=30.0)
+    q.add_argument("--ref"); q.add_argument("--clip", type=float, default=10.0)
     q.add_argument("--linear", action="store_true")
     q.set_defaults(func=smoothing)
     q = s.add_parser("bumps")

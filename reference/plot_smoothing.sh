@@ -9,7 +9,7 @@
 # (columns name,iteration,level,sigma). The levels are those of the first report. Runs named
 # "M post" and "M pre" share a colour (post solid, pre dashed).
 # Environment: CLEAN_REF=PROFILE.json[#member] draws the clean mesh's sigma as a dashed black line in
-# every panel; CLIP=30: the y range ignores values above CLIP times the largest starting sigma
+# every panel; CLIP=10: the y range ignores values above CLIP times the largest starting sigma
 # (runs cut off are named in the panel); LOGY=0 for a linear sigma axis (default logarithmic);
 # PYNUM = python3 with numpy and matplotlib (default /usr/bin/python3).
 set -euo pipefail
@@ -23,7 +23,7 @@ out=$1
 title=$2
 shift 2
 python3 "$here/json2csv.py" smoothing "${out%.*}.csv" "$@"
-opts=(--clip "${CLIP:-30}")
+opts=(--clip "${CLIP:-10}")
 [[ -n ${CLEAN_REF:-} ]] && opts+=(--ref "$CLEAN_REF")
 [[ ${LOGY:-1} == 0 ]] && opts+=(--linear)
 "${PYNUM:-/usr/bin/python3}" "$here/plot.py" smoothing "$out" "$title" "$@" "${opts[@]}"
