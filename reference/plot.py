@@ -255,7 +255,9 @@ def bumps(a):
         ax.set_ylabel("y (scaled)")
     for p in range(n, nrow * ncol):
         axes[p // ncol][p % ncol].axis("off")
-    fig.suptitle(a.title, fontsize=11)
+    d0 = np.loadtxt(os.path.join(a.dir, f"ellipsoid_{a.names[0]}_vertices.dat"))
+    ratio = np.ptp(d0[:, 0]) / np.ptp(d0[:, 1])
+    fig.suptitle(a.title.replace("Ellipsoid", f"Ellipsoid ({ratio:.2g}, 1, 1)", 1), fontsize=11)
     fig.tight_layout(rect=(0, 0, 0.92, 0.95))
     cax = fig.add_axes((0.93, 0.15, 0.015, 0.7))
     cb = fig.colorbar(sc, cax=cax, extend="both")
