@@ -427,7 +427,7 @@ section done
 } | sort -n > "$WORK/timing.merged"
 {
     cat "$WORK/timing.merged"
-    echo "total of the sections above: $(awk -F': ' '{ sub(/ s$/, "", $2); t += $2 } END { print t }' "$WORK/timing.merged") s"
+    echo "total of the sections above: $(awk '{ t += $(NF - 1) } END { print t }' "$WORK/timing.merged") s"
     echo "last run: sections $SECTIONS, $((SECONDS - start_all)) s, $(date -u +%Y-%m-%d)"
     echo "machine: $(uname -sm), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
     echo "meshdiff: $("$MESHDIFF" --version 2>&1 | head -1); exact profiles: ${EXACT[*]:-not available}"

@@ -498,7 +498,9 @@ for sub, mesh in ((P7, "sphere4"), (P7, "bunny"), (P7, "igea"), (P7, "rocker_arm
 if parts:
     V.append(("Fig. 8 Laplacian removes local roughness best (lowest s1 of the five, post)", "; ".join(parts)))
 st = [(nm, SMOOTH.get(("3_smoothing", mesh, "post", "mcf"))) for nm, mesh in (("bunny", "bunny_noisy"), ("igea", "igea_noisy"))]
-st += [(nm + " (paper input)", SMOOTH.get((P7, mesh, "post", "mcf"))) for nm, mesh in (("bunny", "bunny"), ("igea", "igea"))]
+st += [(nm + " (paper input)", SMOOTH.get((P7, mesh, "post", "mcf")))
+       for nm, mesh in (("bunny", "bunny"), ("igea", "igea"), ("rocker_arm", "rocker_arm"), ("sphere 4%", "sphere4"))]
+st += [("sphere 2% (extra)", SMOOTH.get(("3_smoothing", "noisy_sphere", "post", "mcf")))]
 xs = [f"{nm}: first {f(d['flow']['stability_ratio'][0], 3)}, max {f(max(d['flow']['stability_ratio']), 3)}"
       for nm, d in st if d and d.get("flow")]
 if xs:
