@@ -7,7 +7,7 @@
       = s^2 (1 + 1/n). With n_L(i) = |N_L(i)| from the mesh, the white-noise prediction is
       sigma_L / sigma_G = sqrt(mean_i (1 + 1/n_L(i)) / (1 + 1/(N - 1))). Also writes the
       measured ratio from the H stored in VERTEXDATA.ply (`meshdiff profile --vertex-data`)
-      and the correlation of H between 1-ring neighbours.
+      and the correlation of H between vertices one and exactly two edges apart.
 
   analysis.py fig3 DIR ITERATIONS > DIR/fig3.json
       Collects the reports of studies.sh section 8 (Fig. 3) into one file.
@@ -87,6 +87,14 @@ def cmd_ringnoise(a):
     e = e[ok[e[:, 0]] & ok[e[:, 1]]]
     out["sigma_global"] = float(sG)
     out["h_correlation_1_ring"] = float(np.mean(Hc[e[:, 0]] * Hc[e[:, 1]]) / np.mean(Hc[ok] ** 2))
+    # Correlation between vertices exactly two edges apart.
+    A2 = (A @ A).tocoo()
+    two = (A2.row != A2.col)
+    r, c = A2.row[two], A2.col[two]
+    near = np.asarray(A[r, c]).ravel() == 0
+    r, c = r[near], c[near]
+    keep = ok[r] & ok[c]
+    out["h_correlation_2_ring"] = float(np.mean(Hc[r[keep]] * Hc[c[keep]]) / np.mean(Hc[ok] ** 2))
     json.dump(out, sys.stdout, indent=1)
     sys.stdout.write("\n")
 

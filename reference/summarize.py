@@ -107,15 +107,16 @@ table(["mesh", "d1", "d2", "d5", "d10", "d20", "dG"], rows)
 print("What white noise in H averaged over a finite ring gives by itself (`analysis.py ringnoise`): for H noise")
 print("with variance s^2 and no correlation between vertices, Var(H_i - mean over n others) = s^2 (1 + 1/n), so")
 print("sigma_L/sigma_G = sqrt(mean_i(1 + 1/n_L(i)) / (1 + 1/(N-1))), with n_L(i) the ring sizes of this mesh.")
-print("Measured = the same ratio from the estimated H; last column: correlation of H between 1-ring neighbours.\n")
+print("Measured = the same ratio from the estimated H; last columns: correlation of H between vertices one and")
+print("exactly two edges apart.\n")
 rows = []
 for n in ("0.02", "0.04", "0.14"):
     r = load("1_sphere_noise_stretch", f"ringnoise_{n}.json")
     if r:
         rows.append([f"noise {n}"] + [f"{f(w, 4)} / {f(m, 4)}" for w, m in zip(r["white_noise_ratio"], r["measured_ratio"])]
-                    + [f(r["h_correlation_1_ring"], 2)])
+                    + [f(r["h_correlation_1_ring"], 2), f(r.get("h_correlation_2_ring"), 2)])
         RING[n] = r
-table(["mesh", "s1/sG white / measured", "s2/sG", "s5/sG", "s10/sG", "s20/sG", "H corr. 1-ring"], rows)
+table(["mesh", "s1/sG white / measured", "s2/sG", "s5/sG", "s10/sG", "s20/sG", "H corr. 1 edge", "2 edges"], rows)
 items = [(f"axes {a},1,1", load("1_sphere_noise_stretch", f"stretch_{a}.json")) for a in ("1", "1.2", "1.25", "1.5", "2", "3")]
 table(head(True), profile_rows(items, True))
 base = items[0][1]
