@@ -126,7 +126,8 @@ def profiles(a):
             eg = ex.get("sigma_global")
             if eg is not None and (eg > 1e-12 or not a.logy):
                 ax.plot([gx], [eg], "x", color=col, ms=7)
-    ax.set_xlabel("level L (rings); G = global")
+    has_exact = any(ex for *_, ex in series)
+    ax.set_xlabel("level L (rings); G = global" + (" (x: exact H)" if has_exact else ""))
     ax.set_ylabel("sigma_L (scaled mesh, 1/length)")
     step = 1 if lmax <= 12 else 2
     ticks = list(range(0, lmax + 1, step))
