@@ -7,7 +7,7 @@ plot_bumps.sh and studies.sh; run with a python3 that has numpy and matplotlib (
       sigma against level. Markers at the measured levels, lines only between consecutive
       measured levels; the global level G is a separate marker at the right, never joined by a
       line. An exact-H profile in a report (profile --exact) is drawn dashed in the same colour.
-      A NAME starting with "clean" is drawn as a dashed black reference line.
+      A NAME "clean" is drawn as a dashed black reference line.
   plot.py smoothing OUT.png TITLE NAME=SMOOTHING.json ... [--ref PROFILE.json[#member]] [--clip F] [--linear]
       One panel per recorded level (global last), sigma against iterations. Runs "X post" and
       "X pre" of one method share a colour (post solid, pre dashed). --ref: dashed black line
@@ -106,7 +106,7 @@ def profiles(a):
     gx = lmax + max(1, lmax // 10) + 1
     k = 0
     for name, lv, sg, g, ex in series:
-        if name.startswith("clean"):
+        if name == "clean":
             col, ls, mk = "black", "--", "s"
         else:
             col, ls, mk = COLORS[k % len(COLORS)], "-", "o"

@@ -7,7 +7,7 @@
 # Writes OUT.png (reference/plot.py, matplotlib) and the plotted table OUT.csv beside it.
 # Markers at the measured levels, lines only between them; the global level is a separate
 # marker at the right end, labelled G. A profile of the exact curvature in a report
-# (`meshdiff profile --exact`) is drawn dotted in the same colour; a NAME starting with
+# (`meshdiff profile --exact`) is drawn dotted in the same colour; a NAME
 # "clean" is a dashed black reference line. Legend outside the axes.
 # Environment: LOGY=1 for a logarithmic sigma axis; PYNUM = python3 with numpy and
 # matplotlib (default /usr/bin/python3).
