@@ -9,7 +9,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <numeric>
 #include <vector>
 
 namespace meshdiff {
@@ -59,6 +61,14 @@ double max_corner_distance(const std::array<Vec3, 3>& c, const Mesh& b, std::uin
         if (v >= stop) break;
     }
     return v;
+}
+
+// The bit patterns of a point's coordinates: equal for equal computations.
+std::array<std::uint64_t, 3> bits(const Vec3& p)
+{
+    std::array<std::uint64_t, 3> b{};
+    std::memcpy(b.data(), p.data(), sizeof(b));
+    return b;
 }
 
 double largest_coordinate(const Mesh& m)
@@ -195,6 +205,9 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
     bound_and_prune(cells);
     std::vector<Cell> next;
     std::vector<Candidate> found;
+    std::vector<Vec3> mids;
+    std::vector<std::uint32_t> order, slot, unique;
+    std::vector<ClosestPoint> answers;
     while (!cells.empty()) {
         if (r.bound_evaluations + 4 * cells.size() > budget) {
             r.budget_exhausted = true;
@@ -202,41 +215,66 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
         }
         ++r.rounds;
         // Split every open triangle at its edge midpoints; the midpoints'
-        // distances are new lower-bound candidates.
-        next.assign(4 * cells.size(), Cell{});
-        found.assign(cells.size(), Candidate{});
-        const auto n = std::int64_t(cells.size());
-#pragma omp parallel for schedule(dynamic, 64)
-        for (std::int64_t i = 0; i < n; ++i) {
-            const Cell& c = cells[std::size_t(i)];
+        // distances are new lower-bound candidates. A midpoint of an edge that
+        // two open triangles share is queried once (the same bits from both
+        // sides: 0.5 * (a + b) is symmetric in a and b).
+        const std::size_t n = cells.size();
+        mids.resize(3 * n);
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t k = 0; k < 3; ++k)
+                mids[3 * i + k] = 0.5 * (cells[i].corner[k] + cells[i].corner[(k + 1) % 3]);  // edge k, k + 1
+        order.resize(3 * n);
+        std::iota(order.begin(), order.end(), std::uint32_t(0));
+        std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) {
+            return bits(mids[x]) < bits(mids[y]) || (bits(mids[x]) == bits(mids[y]) && x < y);
+        });
+        slot.resize(3 * n);
+        unique.clear();
+        for (std::size_t j = 0; j < order.size(); ++j) {
+            if (j == 0 || bits(mids[order[j]]) != bits(mids[order[j - 1]])) unique.push_back(order[j]);
+            slot[order[j]] = std::uint32_t(unique.size() - 1);
+        }
+        answers.resize(unique.size());
+        const auto n_unique = std::int64_t(unique.size());
+#pragma omp parallel for schedule(dynamic, 256)
+        for (std::int64_t u = 0; u < n_unique; ++u) {
+            const std::uint32_t at = unique[std::size_t(u)];
+            answers[std::size_t(u)] = b_index.closest_point(mids[at], cells[at / 3].closest[at % 3]);
+        }
+        r.point_evaluations += unique.size();
+        next.assign(4 * n, Cell{});
+        found.assign(n, Candidate{});
+#pragma omp parallel for schedule(dynamic, 256)
+        for (std::int64_t ii = 0; ii < std::int64_t(n); ++ii) {
+            const auto i = std::size_t(ii);
+            const Cell& c = cells[i];
             std::array<Vec3, 3> m;
             std::array<ClosestPoint, 3> q;
-            Candidate& cand = found[std::size_t(i)];
+            Candidate& cand = found[i];
             for (std::size_t k = 0; k < 3; ++k) {
-                m[k] = 0.5 * (c.corner[k] + c.corner[(k + 1) % 3]);  // midpoint of edge k, k + 1
-                q[k] = b_index.closest_point(m[k], c.closest[k]);
+                m[k] = mids[3 * i + k];
+                q[k] = answers[slot[3 * i + k]];
                 if (q[k].distance > cand.d) cand = {q[k].distance, m[k], c.face, q[k].point, q[k].face};
             }
             // Children: the three corner triangles and the middle one.
             for (std::size_t k = 0; k < 3; ++k) {
-                Cell& ch = next[4 * std::size_t(i) + k];
+                Cell& ch = next[4 * i + k];
                 const std::size_t prev = (k + 2) % 3;  // edge (k - 1, k)
                 ch.corner = {c.corner[k], m[k], m[prev]};
                 ch.d = {c.d[k], q[k].distance, q[prev].distance};
                 ch.closest = {c.closest[k], q[k].face, q[prev].face};
             }
-            Cell& mid = next[4 * std::size_t(i) + 3];
+            Cell& mid = next[4 * i + 3];
             mid.corner = m;
             mid.d = {q[0].distance, q[1].distance, q[2].distance};
             mid.closest = {q[0].face, q[1].face, q[2].face};
             for (std::size_t k = 0; k < 4; ++k) {
-                Cell& ch = next[4 * std::size_t(i) + k];
+                Cell& ch = next[4 * i + k];
                 ch.face = c.face;
                 ch.hint = c.hint;
                 ch.depth = c.depth + 1;
             }
         }
-        r.point_evaluations += 3 * cells.size();
         for (const Candidate& cand : found)  // in order: the lowest index wins ties
             if (cand.d > best.d) best = cand;
         cells.swap(next);

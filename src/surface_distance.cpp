@@ -143,6 +143,7 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         SampledDirection d = sampled_direction(a, index_b, opt);
         r.forward = distance_stats(d.samples, d.distances);
         if (forward) *forward = std::move(d);
+        d = SampledDirection{};  // free the samples before the certification
         if (certify) r.forward_hausdorff = certified_hausdorff(a, b, index_b, *certify, seed_of(a, r.forward));
     }
     {
@@ -150,6 +151,7 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         SampledDirection d = sampled_direction(b, index_a, opt);
         r.backward = distance_stats(d.samples, d.distances);
         if (backward) *backward = std::move(d);
+        d = SampledDirection{};
         if (b_vertex_distances) r.b_vertex_distance = vertex_distances(b, index_a);
         if (certify) r.backward_hausdorff = certified_hausdorff(b, a, index_a, *certify, seed_of(b, r.backward));
     }
