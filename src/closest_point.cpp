@@ -419,6 +419,10 @@ double ClosestPointIndex::Impl::hull_query(const std::array<Vec3, 3>& c, double 
 {
     double best = kInf;
     std::uint32_t best_face = kNoFace;
+    // With a target (good2 > 0) only a value <= good2 is of interest: a node
+    // or a triangle that cannot reach it is skipped. Without one (good2 <=
+    // 0), the minimum is searched.
+    const double cut = good2 > 0.0 ? good2 : kInf;
     // A node's bound: no triangle below it is closer to corner i than its
     // box, so the largest of the three box distances bounds the value of
     // every triangle below it from below.
@@ -435,7 +439,7 @@ double ClosestPointIndex::Impl::hull_query(const std::array<Vec3, 3>& c, double 
     stack[top++] = {0, bound(0)};
     while (top > 0) {
         const Entry e = stack[--top];
-        if (e.d2 >= best) continue;
+        if (e.d2 >= best || e.d2 > cut) continue;
         const Node& node = nodes[e.node];
         if (node.triangles() > 0) {
             for (std::uint32_t i = 0; i < node.triangles(); ++i) {
@@ -443,9 +447,9 @@ double ClosestPointIndex::Impl::hull_query(const std::array<Vec3, 3>& c, double 
                 double v = 0.0;
                 for (const Vec3& q : c) {
                     v = std::max(v, (q - tri_point(q, t)).squaredNorm());
-                    if (v >= best) break;
+                    if (v >= best || v > cut) break;
                 }
-                if (v < best) {
+                if (v < best && v <= cut) {
                     best = v;
                     best_face = t.face;
                     if (best <= good2) {
@@ -460,8 +464,8 @@ double ClosestPointIndex::Impl::hull_query(const std::array<Vec3, 3>& c, double 
         const Entry r{node.first + 1, bound(node.first + 1)};
         const Entry& near = l.d2 <= r.d2 ? l : r;
         const Entry& far = l.d2 <= r.d2 ? r : l;
-        if (far.d2 < best) stack[top++] = far;
-        if (near.d2 < best) stack[top++] = near;
+        if (far.d2 < best && far.d2 <= cut) stack[top++] = far;
+        if (near.d2 < best && near.d2 <= cut) stack[top++] = near;
     }
     if (face) *face = best_face;
     return best;

@@ -113,10 +113,13 @@ TEST(HausdorffBound, EqualsBruteForceMinimumOfMaximumCornerDistance)
         std::uint32_t face = 0;
         const double got = index.hull_distance_bound(c, 0.0, &face);
         EXPECT_NEAR(got, brute, 1e-15) << trial;
-        // A good-enough value stops the search at a value below it (still a bound).
+        // A good-enough value stops the search at a value below it (still a
+        // bound); below the minimum there is none: +inf.
         const double early = index.hull_distance_bound(c, 2.0 * brute + 0.1);
         EXPECT_LE(early, 2.0 * brute + 0.1);
         EXPECT_GE(early, brute - 1e-15);
+        EXPECT_EQ(index.hull_distance_bound(c, 0.999 * brute), std::numeric_limits<double>::infinity());
+        EXPECT_LE(index.hull_distance_bound(c, brute * (1 + 1e-12)), brute * (1 + 1e-12));
         // It is an upper bound of the distance of the triangle's points.
         for (double w : {0.2, 0.5})
             EXPECT_LE(index.closest_point(w * c[0] + (1 - w) / 2 * (c[1] + c[2])).distance, got);

@@ -72,10 +72,13 @@ public:
     //! t. The distance to one triangle is a convex function of the query
     //! point, so over the spanned triangle it is largest at a corner; the
     //! distance to the mesh is at most the distance to any one triangle. The
-    //! search (branch and bound, a node's bound being the largest distance
-    //! from a corner to its box) stops at the first triangle whose value is
-    //! at most \p good_enough (pass 0 for the smallest value). \p face gets
-    //! that triangle. +inf for an index without triangles.
+    //! search is a branch and bound, a node's bound being the largest distance
+    //! from a corner to its box. With \p good_enough > 0 it looks only for a
+    //! value at most \p good_enough: it returns the first one found, or +inf
+    //! if there is none (nodes and triangles beyond it are skipped, which
+    //! makes a failing search cheap). With \p good_enough <= 0 it returns the
+    //! smallest value. \p face gets the triangle (or ~0u). +inf for an index
+    //! without triangles.
     double hull_distance_bound(const std::array<Vec3, 3>& corners, double good_enough,
                                std::uint32_t* face = nullptr) const;
 
