@@ -9,9 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
-#include <numeric>
 #include <vector>
 
 namespace meshdiff {
@@ -31,10 +29,12 @@ constexpr double kRoundingFloor = 1e-13;
 struct Cell
 {
     std::array<Vec3, 3> corner;
-    std::array<double, 3> d;               // exact distance of each corner to B
-    std::array<std::uint32_t, 3> closest;  // B's closest face of each corner
-    std::uint32_t face = 0;                // the face of A it lies in
-    std::uint32_t hint = kNone;            // the face of B that bounded its parent
+    // Per corner, an upper bound of its distance to B (its distance to the
+    // face `closest`), exact where the corner was queried.
+    std::array<double, 3> d;
+    std::array<std::uint32_t, 3> closest;
+    std::uint32_t face = 0;      // the face of A it lies in
+    std::uint32_t hint = kNone;  // the face of B that bounded its parent
     int depth = 0;
     double upper = kInf;  // its bound, once evaluated
 };
@@ -63,12 +63,34 @@ double max_corner_distance(const std::array<Vec3, 3>& c, const Mesh& b, std::uin
     return v;
 }
 
-// The bit patterns of a point's coordinates: equal for equal computations.
-std::array<std::uint64_t, 3> bits(const Vec3& p)
+// Distance from p to face t of b.
+double face_distance(const Vec3& p, const Mesh& b, std::uint32_t t)
 {
-    std::array<std::uint64_t, 3> b{};
-    std::memcpy(b.data(), p.data(), sizeof(b));
-    return b;
+    const Face& f = b.faces[t];
+    return closest_point_on_triangle(p, b.points[std::size_t(f[0])], b.points[std::size_t(f[1])],
+                                     b.points[std::size_t(f[2])])
+        .distance;
+}
+
+// The largest distance from a point of triangle c to its nearest corner: the
+// circumradius of an acute triangle, half the longest edge otherwise (a
+// segment or a point included). Rounded up by a relative 1e-12.
+double covering_radius(const Cell& c)
+{
+    const Vec3 e0 = c.corner[1] - c.corner[0], e1 = c.corner[2] - c.corner[1], e2 = c.corner[0] - c.corner[2];
+    std::array<double, 3> sq{e0.squaredNorm(), e1.squaredNorm(), e2.squaredNorm()};
+    std::sort(sq.begin(), sq.end());
+    const double longest = std::sqrt(sq[2]);
+    double r = 0.5 * longest;
+    if (sq[2] < sq[0] + sq[1]) {  // acute
+        const double twice_area = e0.cross(e2).norm();
+        if (twice_area > 0.0)
+            r = std::min(std::sqrt(sq[0] * sq[1] * sq[2]) / (2.0 * twice_area), longest / std::sqrt(3.0));
+        else
+            r = longest / std::sqrt(3.0);
+        r = std::max(r, 0.5 * longest);
+    }
+    return r * (1.0 + 1e-12);
 }
 
 double largest_coordinate(const Mesh& m)
@@ -145,11 +167,13 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
     // within threshold of all its corners (|c_i - c_j| <= d(c_i, t) +
     // diam(t) + d(c_j, t)), so its bound cannot close it: it is split
     // without searching.
-    double longest_b = 0.0;
-    for (const Face& f : b.faces)
+    std::vector<double> diameter_b(b.n_faces(), 0.0);  // longest edge per face of B
+    for (std::size_t f = 0; f < b.n_faces(); ++f)
         for (std::size_t k = 0; k < 3; ++k)
-            longest_b =
-                std::max(longest_b, (b.points[std::size_t(f[k])] - b.points[std::size_t(f[(k + 1) % 3])]).norm());
+            diameter_b[f] = std::max(
+                diameter_b[f],
+                (b.points[std::size_t(b.faces[f][k])] - b.points[std::size_t(b.faces[f][(k + 1) % 3])]).norm());
+    const double longest_b = *std::max_element(diameter_b.begin(), diameter_b.end());
     auto diameter = [](const Cell& c) {
         return std::max({(c.corner[0] - c.corner[1]).norm(), (c.corner[1] - c.corner[2]).norm(),
                          (c.corner[2] - c.corner[0]).norm()});
@@ -164,10 +188,9 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
         for (std::int64_t i = 0; i < n; ++i) {
             Cell& c = list[std::size_t(i)];
             // d(., B) is 1-Lipschitz and every point of the cell is within
-            // diam / sqrt(3) of a corner (the circumradius of an acute
-            // triangle, half the longest edge otherwise): a bound always.
+            // covering_radius(c) of a corner: a bound always.
             const double diam = diameter(c);
-            double u = std::max({c.d[0], c.d[1], c.d[2]}) + diam / std::sqrt(3.0);
+            double u = std::max({c.d[0], c.d[1], c.d[2]}) + covering_radius(c);
             if (u <= threshold || (c.depth < kMaxDepth && diam > 2.0 * threshold + longest_b)) {
                 c.upper = u;
                 continue;
@@ -180,7 +203,13 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
                     continue;
                 u = std::min(u, max_corner_distance(c.corner, b, t, u));
             }
-            if (u > threshold) {
+            // A search is worth it only if one triangle of B can be near all
+            // the corners: not when the cell is much wider than the triangles
+            // near them (a cost heuristic: skipping only means splitting).
+            double local = 0.0;
+            for (const std::uint32_t t : tried)
+                if (t != kNone) local = std::max(local, diameter_b[t]);
+            if (u > threshold && (c.depth >= kMaxDepth || diam <= 2.0 * threshold + 2.0 * local)) {
                 std::uint32_t t = kNone;
                 const double v = b_index.hull_distance_bound(c.corner, threshold, &t);
                 if (v < u) {
@@ -205,69 +234,62 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
     bound_and_prune(cells);
     std::vector<Cell> next;
     std::vector<Candidate> found;
-    std::vector<Vec3> mids;
-    std::vector<std::uint32_t> order, slot, unique;
-    std::vector<ClosestPoint> answers;
     while (!cells.empty()) {
         if (r.bound_evaluations + 4 * cells.size() > budget) {
             r.budget_exhausted = true;
             break;
         }
         ++r.rounds;
-        // Split every open triangle at its edge midpoints; the midpoints'
-        // distances are new lower-bound candidates. A midpoint of an edge that
-        // two open triangles share is queried once (the same bits from both
-        // sides: 0.5 * (a + b) is symmetric in a and b).
+        // Split every open triangle at its edge midpoints. A midpoint's
+        // distance to the closer of its edge's two faces bounds its distance
+        // to B from above; only where that bound exceeds the lower bound can
+        // the midpoint raise it, and only there is it queried exactly (its
+        // distance is then a lower-bound candidate).
         const std::size_t n = cells.size();
-        mids.resize(3 * n);
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t k = 0; k < 3; ++k)
-                mids[3 * i + k] = 0.5 * (cells[i].corner[k] + cells[i].corner[(k + 1) % 3]);  // edge k, k + 1
-        order.resize(3 * n);
-        std::iota(order.begin(), order.end(), std::uint32_t(0));
-        std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) {
-            return bits(mids[x]) < bits(mids[y]) || (bits(mids[x]) == bits(mids[y]) && x < y);
-        });
-        slot.resize(3 * n);
-        unique.clear();
-        for (std::size_t j = 0; j < order.size(); ++j) {
-            if (j == 0 || bits(mids[order[j]]) != bits(mids[order[j - 1]])) unique.push_back(order[j]);
-            slot[order[j]] = std::uint32_t(unique.size() - 1);
-        }
-        answers.resize(unique.size());
-        const auto n_unique = std::int64_t(unique.size());
-#pragma omp parallel for schedule(dynamic, 256)
-        for (std::int64_t u = 0; u < n_unique; ++u) {
-            const std::uint32_t at = unique[std::size_t(u)];
-            answers[std::size_t(u)] = b_index.closest_point(mids[at], cells[at / 3].closest[at % 3]);
-        }
-        r.point_evaluations += unique.size();
+        const double lower_now = best.d;
         next.assign(4 * n, Cell{});
         found.assign(n, Candidate{});
+        std::vector<std::size_t> queried(n, 0);
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::int64_t ii = 0; ii < std::int64_t(n); ++ii) {
             const auto i = std::size_t(ii);
             const Cell& c = cells[i];
             std::array<Vec3, 3> m;
-            std::array<ClosestPoint, 3> q;
+            std::array<double, 3> md;
+            std::array<std::uint32_t, 3> mf;
             Candidate& cand = found[i];
             for (std::size_t k = 0; k < 3; ++k) {
-                m[k] = mids[3 * i + k];
-                q[k] = answers[slot[3 * i + k]];
-                if (q[k].distance > cand.d) cand = {q[k].distance, m[k], c.face, q[k].point, q[k].face};
+                const std::size_t k1 = (k + 1) % 3;
+                m[k] = 0.5 * (c.corner[k] + c.corner[k1]);  // midpoint of edge k, k + 1
+                md[k] = face_distance(m[k], b, c.closest[k]);
+                mf[k] = c.closest[k];
+                if (c.closest[k1] != c.closest[k]) {
+                    const double other = face_distance(m[k], b, c.closest[k1]);
+                    if (other < md[k]) {
+                        md[k] = other;
+                        mf[k] = c.closest[k1];
+                    }
+                }
+                if (md[k] > lower_now) {
+                    const ClosestPoint q = b_index.closest_point(m[k], mf[k]);
+                    ++queried[i];
+                    md[k] = q.distance;
+                    mf[k] = q.face;
+                    if (q.distance > cand.d) cand = {q.distance, m[k], c.face, q.point, q.face};
+                }
             }
             // Children: the three corner triangles and the middle one.
             for (std::size_t k = 0; k < 3; ++k) {
                 Cell& ch = next[4 * i + k];
                 const std::size_t prev = (k + 2) % 3;  // edge (k - 1, k)
                 ch.corner = {c.corner[k], m[k], m[prev]};
-                ch.d = {c.d[k], q[k].distance, q[prev].distance};
-                ch.closest = {c.closest[k], q[k].face, q[prev].face};
+                ch.d = {c.d[k], md[k], md[prev]};
+                ch.closest = {c.closest[k], mf[k], mf[prev]};
             }
             Cell& mid = next[4 * i + 3];
             mid.corner = m;
-            mid.d = {q[0].distance, q[1].distance, q[2].distance};
-            mid.closest = {q[0].face, q[1].face, q[2].face};
+            mid.d = md;
+            mid.closest = mf;
             for (std::size_t k = 0; k < 4; ++k) {
                 Cell& ch = next[4 * i + k];
                 ch.face = c.face;
@@ -275,6 +297,7 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
                 ch.depth = c.depth + 1;
             }
         }
+        for (const std::size_t q : queried) r.point_evaluations += q;
         for (const Candidate& cand : found)  // in order: the lowest index wins ties
             if (cand.d > best.d) best = cand;
         cells.swap(next);
