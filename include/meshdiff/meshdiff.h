@@ -14,6 +14,7 @@
 #include "meshdiff/facts.h"
 #include "meshdiff/io.h"
 #include "meshdiff/mesh.h"
+#include "meshdiff/metric_levels.h"
 #include "meshdiff/neighborhood.h"
 #include "meshdiff/noise.h"
 #include "meshdiff/normalize.h"
