@@ -16,7 +16,7 @@ namespace meshdiff {
 std::vector<double> default_radii()
 {
     std::vector<double> r;
-    for (int k = 0; k <= 10; ++k) r.push_back(0.02 * std::pow(2.0, 0.5 * k));
+    for (int k = 0; k <= 6; ++k) r.push_back(0.0125 * std::pow(2.0, 0.5 * k));
     return r;
 }
 
@@ -47,7 +47,7 @@ class BallSearch
 {
 public:
     BallSearch(const Mesh& mesh, const Adjacency& adj)
-        : mesh_(mesh), adj_(adj), stamp_(mesh.n_vertices(), 0), d2_(mesh.n_vertices(), 0.0), b2_(mesh.n_vertices(), 0.0)
+        : mesh_(mesh), adj_(adj), seen_(mesh.n_vertices()), b2_(mesh.n_vertices(), 0.0)
     {}
 
     // Finds the vertices joined to \p v inside B(p_v, sqrt(r2max)), in
@@ -58,22 +58,22 @@ public:
         ++current_;
         found_.clear();
         const Vec3& c = mesh_.points[v];
-        stamp_[v] = current_;
-        d2_[v] = 0.0;
+        seen_[v] = {0.0, current_};
         found_.push_back(v);
         bool exact_needed = false;
         for (std::size_t q = 0; q < found_.size(); ++q) {
             const std::uint32_t u = found_[q];
-            const double du = d2_[u];
+            const double du = seen_[u].d2;
             bool lower = false;
             for (const std::uint32_t* it = adj_.begin(u); it != adj_.end(u); ++it) {
                 const std::uint32_t w = *it;
-                if (stamp_[w] != current_) {
-                    stamp_[w] = current_;
-                    d2_[w] = (mesh_.points[w] - c).squaredNorm();
-                    if (d2_[w] <= r2max) found_.push_back(w);
+                Seen& sw = seen_[w];
+                if (sw.stamp != current_) {
+                    sw.stamp = current_;
+                    sw.d2 = (mesh_.points[w] - c).squaredNorm();
+                    if (sw.d2 <= r2max) found_.push_back(w);
                 }
-                if (d2_[w] < du) lower = true;
+                if (sw.d2 < du) lower = true;
             }
             // A vertex with no neighbour nearer to v may be joined to v only
             // through vertices farther than itself: its smallest radius is
@@ -82,7 +82,7 @@ public:
         }
         key_.resize(found_.size());
         if (!exact_needed) {
-            for (std::size_t q = 0; q < found_.size(); ++q) key_[q] = d2_[found_[q]];
+            for (std::size_t q = 0; q < found_.size(); ++q) key_[q] = seen_[found_[q]].d2;
             return;
         }
         // Minimax path (Dijkstra on the largest squared distance along the
@@ -99,8 +99,8 @@ public:
             if (b > b2_[u]) continue;
             for (const std::uint32_t* it = adj_.begin(u); it != adj_.end(u); ++it) {
                 const std::uint32_t w = *it;
-                if (stamp_[w] != current_ || d2_[w] > r2max) continue;
-                const double cand = std::max(b, d2_[w]);
+                if (seen_[w].stamp != current_ || seen_[w].d2 > r2max) continue;
+                const double cand = std::max(b, seen_[w].d2);
                 if (cand < b2_[w]) {
                     b2_[w] = cand;
                     heap.emplace(cand, w);
@@ -116,12 +116,47 @@ public:
 private:
     const Mesh& mesh_;
     const Adjacency& adj_;
-    std::vector<std::uint32_t> stamp_;
-    std::vector<double> d2_, b2_;
+    struct Seen
+    {
+        double d2 = 0.0;  // squared distance to the centre
+        std::uint32_t stamp = 0;
+    };
+    std::vector<Seen> seen_;
+    std::vector<double> b2_;
     std::uint32_t current_ = 0;
     std::vector<std::uint32_t> found_;
     std::vector<double> key_;
 };
+
+std::uint64_t spread_bits(std::uint64_t x)
+{
+    x &= 0x1fffff;
+    x = (x | x << 32) & 0x1f00000000ffffULL;
+    x = (x | x << 16) & 0x1f0000ff0000ffULL;
+    x = (x | x << 8) & 0x100f00f00f00f00fULL;
+    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+    x = (x | x << 2) & 0x1249249249249249ULL;
+    return x;
+}
+
+// Vertices sorted along a Morton curve of their positions (as neighborhood.cpp).
+std::vector<std::uint32_t> morton_order(const Mesh& mesh)
+{
+    const auto box = bounding_box(mesh);
+    const Vec3 ext = (box.max - box.min).cwiseMax(Vec3::Constant(1e-300));
+    const double cells = double((1u << 21) - 1);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(mesh.n_vertices());
+    for (std::size_t i = 0; i < mesh.n_vertices(); ++i) {
+        const Vec3 q = (mesh.points[i] - box.min).cwiseQuotient(ext) * cells;
+        keys[i] = {spread_bits(std::uint64_t(q.x())) | spread_bits(std::uint64_t(q.y())) << 1 |
+                       spread_bits(std::uint64_t(q.z())) << 2,
+                   std::uint32_t(i)};
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<std::uint32_t> order(keys.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].second;
+    return order;
+}
 
 void check_sizes(const Mesh& mesh, const Adjacency& adj)
 {
@@ -172,15 +207,38 @@ BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
     const std::size_t nb = r2.size();
     const double r2max = r2.back();
 
+    // A copy of the mesh renumbered in Morton order, so that the balls of
+    // consecutive centres share cache lines. Each vertex keeps the order of
+    // its neighbour list: the search visits the same vertices in the same
+    // order as on the original numbering, so the sums are the same.
+    const std::vector<std::uint32_t> order = morton_order(mesh);
+    std::vector<std::uint32_t> rank(n);
+    for (std::size_t i = 0; i < n; ++i) rank[order[i]] = std::uint32_t(i);
+    Mesh pm;
+    pm.points.resize(n);
+    Adjacency padj;
+    padj.offset.resize(n + 1, 0);
+    padj.index.resize(adj.index.size());
+    std::vector<double> pvalues(n), pweights(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t o = order[i];
+        pm.points[i] = mesh.points[o];
+        pvalues[i] = values[o];
+        pweights[i] = weights[o];
+        padj.offset[i + 1] = padj.offset[i] + std::uint32_t(adj.degree(o));
+        std::uint32_t* out = padj.index.data() + padj.offset[i];
+        for (const std::uint32_t* it = adj.begin(o); it != adj.end(o); ++it) *out++ = rank[*it];
+    }
+
 #pragma omp parallel
     {
-        BallSearch search(mesh, adj);
+        BallSearch search(pm, padj);
         std::vector<double> sum(nb), wsum(nb);
         std::vector<std::uint32_t> defined(nb), count(nb);
 #pragma omp for schedule(dynamic, 64)
         for (std::ptrdiff_t iv = 0; iv < std::ptrdiff_t(n); ++iv) {
             const auto v = std::uint32_t(iv);
-            if (std::isnan(values[v])) continue;
+            if (std::isnan(pvalues[v])) continue;
             search.run(v, r2max);
             std::fill(sum.begin(), sum.end(), 0.0);
             std::fill(wsum.begin(), wsum.end(), 0.0);
@@ -192,9 +250,9 @@ BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
             for (std::size_t q = 1; q < found.size(); ++q) {
                 const auto b = std::size_t(std::lower_bound(r2.begin(), r2.end(), key[q]) - r2.begin());
                 ++count[b];
-                const double x = values[found[q]];
+                const double x = pvalues[found[q]];
                 if (std::isnan(x)) continue;
-                const double w = weights[found[q]];
+                const double w = pweights[found[q]];
                 sum[b] += w * x;
                 wsum[b] += w;
                 ++defined[b];
@@ -207,8 +265,8 @@ BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
             }
             for (std::size_t k = 0; k < nr; ++k) {
                 const std::size_t b = slot[k];
-                if (defined[b] > 0 && wsum[b] > 0.0) m.mean[k][v] = sum[b] / wsum[b];
-                if (with_sizes) m.size[k][v] = count[b];
+                if (defined[b] > 0 && wsum[b] > 0.0) m.mean[k][order[v]] = sum[b] / wsum[b];
+                if (with_sizes) m.size[k][order[v]] = count[b];
             }
         }
     }

@@ -18,10 +18,17 @@ namespace meshdiff::cli {
 //! \throw InvalidArgumentError on a malformed list or a level < 1.
 std::vector<int> parse_levels(const std::string& text);
 
+//! Parses a radius list such as "0.05,0.1,0.2", or "default" (default_radii()),
+//! or "" (none).
+//! \throw InvalidArgumentError on a malformed list, a radius not finite, <= 0
+//!        or > kMaxRadius, or more than kMaxRadii radii.
+std::vector<double> parse_radii(const std::string& text);
+
 //! Options of the roughness profile shared by profile, compare and batch.
 struct ProfileCliOptions
 {
     std::string levels = "1-20";
+    std::string radii;  // empty: no metric level
     bool no_global = false;
     std::string curvature = "goldfeather";
     std::string weighting = "none";
@@ -57,6 +64,12 @@ CLI::Validator positive(double hi = 1e300);
 constexpr int kMaxThreads = 1024;
 //! The most levels a --levels list may hold (each level keeps a value per vertex).
 constexpr std::size_t kMaxLevels = 200;
+
+//! The most radii a --radii list may hold.
+constexpr std::size_t kMaxRadii = 64;
+//! The largest radius --radii accepts (on the unit-scaled mesh, whose mean
+//! vertex distance to the centroid is 1: far larger than any mesh).
+constexpr double kMaxRadius = 1000.0;
 
 //! Sets the OpenMP thread count when \p threads > 0.
 void set_threads(int threads);

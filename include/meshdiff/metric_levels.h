@@ -19,9 +19,10 @@
 
 namespace meshdiff {
 
-//! The radii of `--radii default`: 0.02 * 2^(k/2), k = 0..10 (0.02 ... 0.64),
-//! geometric, covering the mean physical extent of ring levels 1..20 on the
-//! bundled real meshes (METHOD.md section 5a).
+//! The radii of `--radii default`: 0.0125 * 2^(k/2), k = 0..6 (0.0125 ...
+//! 0.1), geometric: from the edge length of a fine scan (igea, 134K vertices)
+//! to the extent of its ring level 9 (METHOD.md section 5a explains the choice
+//! and its upper bound, set by the cost).
 std::vector<double> default_radii();
 
 //! Throws InvalidArgumentError unless every radius is finite and > 0.
