@@ -122,12 +122,13 @@ std::vector<double> parse_radii(const std::string& text)
     return radii;
 }
 
-void add_profile_options(CLI::App* sub, ProfileCliOptions& o)
+void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii)
 {
     sub->add_option("--levels", o.levels, "ring levels, e.g. 1,2,5,10,20 or 1-20")->capture_default_str();
-    sub->add_option("--radii", o.radii,
-                    "metric levels: radii on the unit-scaled mesh, e.g. 0.05,0.1,0.2, or 'default' "
-                    "(0.0125 * 2^(k/2), k = 0..6: 0.0125 to 0.1)");
+    if (with_radii)
+        sub->add_option("--radii", o.radii,
+                        "metric levels: radii on the unit-scaled mesh, e.g. 0.05,0.1,0.2, or 'default' "
+                        "(0.0125 * 2^(k/2), k = 0..6: 0.0125 to 0.1)");
     sub->add_flag("--no-global", o.no_global, "leave out the global level");
     sub->add_option("--curvature", o.curvature, "mean curvature estimator")
         ->check(CLI::IsMember(enum_names<CurvatureMethod>()))

@@ -33,7 +33,8 @@ struct ProfileCliOptions
     std::string curvature = "goldfeather";
     std::string weighting = "none";
 };
-void add_profile_options(CLI::App* sub, ProfileCliOptions& o);
+//! \param with_radii also offer --radii (not for smooth, whose records hold ring levels only)
+void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii = true);
 
 //! The library options for the parsed command-line options.
 ProfileOptions to_profile_options(const ProfileCliOptions& o, bool keep_vertex_data);
