@@ -10,6 +10,7 @@
 #include "meshdiff/error.h"
 #include "meshdiff/facts.h"
 #include "meshdiff/io.h"
+#include "meshdiff/metric_levels.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/surface_distance.h"
@@ -278,16 +279,40 @@ std::vector<int> levels_from(const py::handle& obj)
     return levels;
 }
 
+// None, "default" (default_radii()) or a sequence of numbers > 0.
+std::vector<double> radii_from(const py::handle& obj)
+{
+    if (obj.is_none()) return {};
+    if (py::isinstance<py::str>(obj)) {
+        if (obj.cast<std::string>() == "default") return default_radii();
+        bad("radii: expected None, \"default\" or a sequence of numbers > 0, got " + std::string(py::str(obj)));
+    }
+    if (!py::isinstance<py::sequence>(obj))
+        bad("radii: expected None, \"default\" or a sequence of numbers > 0, got " + std::string(py::str(obj)));
+    std::vector<double> radii;
+    for (const auto& item : obj.cast<py::sequence>()) {
+        if (!py::isinstance<py::float_>(item) && !py::isinstance<py::int_>(item))
+            bad("radii: " + std::string(py::str(item)) + " is not a number");
+        const double r = item.cast<double>();
+        if (!(r > 0.0) || !std::isfinite(r))
+            bad("radii: radius " + std::string(py::str(item)) + " is not finite and > 0");
+        radii.push_back(r);
+    }
+    return radii;
+}
+
 ProfileOptions profile_options(const py::handle& levels, bool global_level, const std::string& curvature,
-                               const std::string& weighting, bool keep_vertex_data)
+                               const std::string& weighting, bool keep_vertex_data, std::vector<double> radii = {})
 {
     ProfileOptions p;
     p.levels = levels_from(levels);
+    p.radii = std::move(radii);
     p.global = global_level;
     p.curvature.method = parse_enum<CurvatureMethod>(curvature);
     p.curvature.weighting = parse_enum<RowWeighting>(weighting);
     p.keep_vertex_data = keep_vertex_data;
-    if (p.levels.empty() && !p.global) bad("levels: empty and global_level=False: nothing to compute");
+    if (p.levels.empty() && p.radii.empty() && !p.global)
+        bad("levels: empty and global_level=False: nothing to compute");
     return p;
 }
 
@@ -497,17 +522,19 @@ py::dict run_profile(const LoadedMesh& m, const ProfileOptions& options, int thr
     return to_python(j);
 }
 
-py::dict py_profile(const ArrayLike& V, const ArrayLike& F, const py::object& levels, bool global_level,
-                    const std::string& curvature, const std::string& weighting, int threads)
+py::dict py_profile(const ArrayLike& V, const ArrayLike& F, const py::object& levels, const py::object& radii,
+                    bool global_level, const std::string& curvature, const std::string& weighting, int threads)
 {
-    const ProfileOptions options = profile_options(levels, global_level, curvature, weighting, false);
+    const ProfileOptions options =
+        profile_options(levels, global_level, curvature, weighting, false, radii_from(radii));
     return run_profile(mesh_from(V, F, "V", "F"), options, threads);
 }
 
-py::dict py_profile_file(const py::object& path_obj, const py::object& levels, bool global_level,
-                         const std::string& curvature, const std::string& weighting, int threads)
+py::dict py_profile_file(const py::object& path_obj, const py::object& levels, const py::object& radii,
+                         bool global_level, const std::string& curvature, const std::string& weighting, int threads)
 {
-    const ProfileOptions options = profile_options(levels, global_level, curvature, weighting, false);
+    const ProfileOptions options =
+        profile_options(levels, global_level, curvature, weighting, false, radii_from(radii));
     const std::string path = path_from(path_obj, "path");
     LoadedMesh m;
     {
@@ -734,6 +761,9 @@ constexpr const char* kProfileOptionsDoc = R"doc(
 Options (keyword-only, as `meshdiff profile`):
   levels=range(1, 21), global_level=True, curvature="goldfeather",
   weighting="none", threads=0   (see compare())
+  radii=None     metric levels [--radii]: a sequence of radii > 0 on the unit-scaled
+                 mesh, or "default" (0.0125 * 2**(k/2), k = 0..6); adds "radii",
+                 "sigma_radii" and "radius_details" to the dict (METHOD.md 5a)
 )doc";
 
 constexpr const char* kProfileDoc = R"doc(The roughness profile of one mesh: the dict of `meshdiff profile MESH --json`
@@ -835,11 +865,11 @@ PYBIND11_MODULE(meshdiff, m)
     const std::string profile_doc = std::string(kProfileDoc) + kProfileOptionsDoc;
     const std::string profile_file_doc = std::string(kProfileFileDoc) + kProfileOptionsDoc;
     m.def("profile", &py_profile, profile_doc.c_str(), py::arg("V"), py::arg("F"), py::kw_only(),
-          py::arg("levels") = default_levels, py::arg("global_level") = true, py::arg("curvature") = "goldfeather",
-          py::arg("weighting") = "none", py::arg("threads") = 0);
+          py::arg("levels") = default_levels, py::arg("radii") = py::none(), py::arg("global_level") = true,
+          py::arg("curvature") = "goldfeather", py::arg("weighting") = "none", py::arg("threads") = 0);
     m.def("profile_file", &py_profile_file, profile_file_doc.c_str(), py::arg("path"), py::kw_only(),
-          py::arg("levels") = default_levels, py::arg("global_level") = true, py::arg("curvature") = "goldfeather",
-          py::arg("weighting") = "none", py::arg("threads") = 0);
+          py::arg("levels") = default_levels, py::arg("radii") = py::none(), py::arg("global_level") = true,
+          py::arg("curvature") = "goldfeather", py::arg("weighting") = "none", py::arg("threads") = 0);
 
     m.def("mean_curvature", &py_mean_curvature, kMeanCurvatureDoc, py::arg("V"), py::arg("F"), py::kw_only(),
           py::arg("method") = "goldfeather", py::arg("weighting") = "none", py::arg("min_neighbors") = 6,

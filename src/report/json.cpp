@@ -130,13 +130,23 @@ nlohmann::json exact_profile_json(const RoughnessProfile& estimated, const Exact
         sigma.push_back(exact.profile.levels[k].sigma);
     }
     const auto& e = exact.h_error;
-    return {{"property", property},
-            {"levels", levels},
-            {"sigma", sigma},
-            {"sigma_global",
-             exact.profile.has_global ? nlohmann::json(exact.profile.global.sigma) : nlohmann::json(nullptr)},
-            {"undefined_vertices", exact.profile.curvature_undefined},
-            {"h_error", {{"rms", e.rms}, {"max", e.max}, {"vertices", e.compared}}}};
+    nlohmann::json j = {{"property", property},
+                        {"levels", levels},
+                        {"sigma", sigma},
+                        {"sigma_global", exact.profile.has_global ? nlohmann::json(exact.profile.global.sigma)
+                                                                  : nlohmann::json(nullptr)},
+                        {"undefined_vertices", exact.profile.curvature_undefined},
+                        {"h_error", {{"rms", e.rms}, {"max", e.max}, {"vertices", e.compared}}}};
+    if (!exact.profile.radii.empty()) {  // only with --radii
+        nlohmann::json radii = nlohmann::json::array(), sigma_r = nlohmann::json::array();
+        for (const auto& l : exact.profile.radii) {
+            radii.push_back(l.radius);
+            sigma_r.push_back(l.sigma);
+        }
+        j["radii"] = radii;
+        j["sigma_radii"] = sigma_r;
+    }
+    return j;
 }
 
 nlohmann::json roughness_distance_json(const RoughnessDistance& d)
