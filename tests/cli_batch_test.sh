@@ -95,5 +95,9 @@ for r in recs:
     assert d["radii"] == [0.1, 0.2] and len(d["distance_radii"]) == 2 and len(d["relative_change_radii"]) == 2
     assert r["result"]["original"]["radii"] == [0.1, 0.2]
 PY
+# the summary CSV of reference/json2csv.py carries them
+python3 "$(dirname "$0")/../reference/json2csv.py" batch "$tmp/r10.csv" "$tmp/r10.jsonl" &&
+    head -1 "$tmp/r10.csv" | grep -q "d_L1,d_global,change_L1,change_global,d_r0.1,d_r0.2,change_r0.1,change_r0.2" &&
+    [ "$(wc -l < "$tmp/r10.csv")" -eq 3 ] && pass || fail "summary CSV lacks the radii: $(head -2 "$tmp/r10.csv")"
 
 finish
