@@ -448,14 +448,14 @@ py::object py_read_mesh(const py::object& path_obj, bool report)
     return py::make_tuple(vf[0], vf[1], input_report_dict(m));
 }
 
-CompareOptions compare_options(const py::object& levels, bool global_level, const std::string& curvature,
-                               const std::string& weighting, double k, bool roughness, bool distance,
-                               const std::optional<long long>& samples, const std::optional<double>& density,
-                               const std::string& face_sampling, std::uint64_t seed, bool vertex_samples,
-                               bool edge_samples, bool face_samples)
+CompareOptions compare_options(const py::object& levels, const py::object& radii, bool global_level,
+                               const std::string& curvature, const std::string& weighting, double k, bool roughness,
+                               bool distance, const std::optional<long long>& samples,
+                               const std::optional<double>& density, const std::string& face_sampling,
+                               std::uint64_t seed, bool vertex_samples, bool edge_samples, bool face_samples)
 {
     CompareOptions c;
-    c.profile = profile_options(levels, global_level, curvature, weighting, false);
+    c.profile = profile_options(levels, global_level, curvature, weighting, false, radii_from(radii));
     if (!(k > 0.0) || !std::isfinite(k)) bad(fmt::format("k: {} must be finite and > 0", k));
     c.k = k;
     c.roughness = roughness;
@@ -477,14 +477,14 @@ py::dict run_compare(const LoadedMesh& a, const LoadedMesh& b, const CompareOpti
 }
 
 py::dict py_compare(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V2, const ArrayLike& F2,
-                    const py::object& levels, bool global_level, const std::string& curvature,
+                    const py::object& levels, const py::object& radii, bool global_level, const std::string& curvature,
                     const std::string& weighting, double k, bool roughness, bool distance,
                     const std::optional<long long>& samples, const std::optional<double>& density,
                     const std::string& face_sampling, std::uint64_t seed, bool vertex_samples, bool edge_samples,
                     bool face_samples, int threads)
 {
     const CompareOptions options =
-        compare_options(levels, global_level, curvature, weighting, k, roughness, distance, samples, density,
+        compare_options(levels, radii, global_level, curvature, weighting, k, roughness, distance, samples, density,
                         face_sampling, seed, vertex_samples, edge_samples, face_samples);
     const LoadedMesh a = mesh_from(V1, F1, "V1", "F1");
     const LoadedMesh b = mesh_from(V2, F2, "V2", "F2");
@@ -492,13 +492,14 @@ py::dict py_compare(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V
 }
 
 py::dict py_compare_files(const py::object& original, const py::object& processed, const py::object& levels,
-                          bool global_level, const std::string& curvature, const std::string& weighting, double k,
-                          bool roughness, bool distance, const std::optional<long long>& samples,
-                          const std::optional<double>& density, const std::string& face_sampling, std::uint64_t seed,
-                          bool vertex_samples, bool edge_samples, bool face_samples, int threads)
+                          const py::object& radii, bool global_level, const std::string& curvature,
+                          const std::string& weighting, double k, bool roughness, bool distance,
+                          const std::optional<long long>& samples, const std::optional<double>& density,
+                          const std::string& face_sampling, std::uint64_t seed, bool vertex_samples, bool edge_samples,
+                          bool face_samples, int threads)
 {
     const CompareOptions options =
-        compare_options(levels, global_level, curvature, weighting, k, roughness, distance, samples, density,
+        compare_options(levels, radii, global_level, curvature, weighting, k, roughness, distance, samples, density,
                         face_sampling, seed, vertex_samples, edge_samples, face_samples);
     const std::string pa = path_from(original, "original"), pb = path_from(processed, "processed");
     LoadedMesh a, b;
@@ -721,6 +722,8 @@ coordinates, index out of range).)doc";
 constexpr const char* kCompareOptionsDoc = R"doc(
 Options (keyword-only, named like the CLI flags of `meshdiff compare`):
   levels=range(1, 21)   ring levels L (ints >= 1), in the order reported  [--levels]
+  radii=None            metric levels: radii > 0 on the unit-scaled mesh, or "default";
+                        adds d_r per radius (METHOD.md 5a)                 [--radii]
   global_level=True     also the global level                              [--no-global]
   curvature="goldfeather"  H estimator: goldfeather, quadric, meyer        [--curvature]
   weighting="none"      row weighting of the fits: none, inverse-square    [--weighting]
@@ -847,11 +850,12 @@ PYBIND11_MODULE(meshdiff, m)
     const std::string compare_doc = std::string(kCompareDoc) + kCompareOptionsDoc;
     const std::string compare_files_doc = std::string(kCompareFilesDoc) + kCompareOptionsDoc;
     auto compare_options_args = [&](auto&& def) {
-        def(py::arg("levels") = default_levels, py::arg("global_level") = true, py::arg("curvature") = "goldfeather",
-            py::arg("weighting") = "none", py::arg("k") = 1e-4, py::arg("roughness") = true, py::arg("distance") = true,
-            py::arg("samples") = py::none(), py::arg("density") = py::none(), py::arg("face_sampling") = "similar",
-            py::arg("seed") = 1, py::arg("vertex_samples") = true, py::arg("edge_samples") = true,
-            py::arg("face_samples") = true, py::arg("threads") = 0);
+        def(py::arg("levels") = default_levels, py::arg("radii") = py::none(), py::arg("global_level") = true,
+            py::arg("curvature") = "goldfeather", py::arg("weighting") = "none", py::arg("k") = 1e-4,
+            py::arg("roughness") = true, py::arg("distance") = true, py::arg("samples") = py::none(),
+            py::arg("density") = py::none(), py::arg("face_sampling") = "similar", py::arg("seed") = 1,
+            py::arg("vertex_samples") = true, py::arg("edge_samples") = true, py::arg("face_samples") = true,
+            py::arg("threads") = 0);
     };
     compare_options_args([&](auto... options) {
         m.def("compare", &py_compare, compare_doc.c_str(), py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"),

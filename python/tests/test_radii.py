@@ -31,3 +31,15 @@ def test_bad_radii(data, radii):
     V, F = meshdiff.read_mesh(data / "fandisk.ply")
     with pytest.raises(ValueError):
         meshdiff.profile(V, F, radii=radii)
+
+
+def test_compare_files_radii_match_cli(data, cli):
+    a, b = data / "bunny_res3.ply", data / "bunny_res4_ascii.ply"
+    c = meshdiff.compare_files(a, b, levels=[1], radii=[0.1, 0.3], distance=False)
+    d = c["roughness_distance"]
+    assert d["radii"] == [0.1, 0.3] and len(d["distance_radii"]) == 2 and len(d["relative_change_radii"]) == 2
+    out = subprocess.run([cli, str(a), str(b), "--levels", "1", "--radii", "0.1,0.3", "--no-distance", "--json", "-"],
+                         check=True, capture_output=True, text=True).stdout
+    assert json.loads(out)["roughness_distance"]["distance_radii"] == d["distance_radii"]
+    V, F = meshdiff.read_mesh(a)
+    assert "radii" not in meshdiff.compare(V, F, V, F, levels=[1], distance=False)["roughness_distance"]
