@@ -16,6 +16,7 @@
 #     reconstructions bunny_res2/3/4; igea.ply (134K) against its decimations to 50%, 25%, 10%.
 #     meshdiff ORIGINAL PROCESSED --no-distance --radii RADII: d_L and d_r with the relative change.
 #  3. summary.csv: one row per (pair, kind, level or radius): sigma of each side, relative change, d.
+#  4. decimation.png (gnuplot, if installed) and decimation.dat: relative change against the share of vertices kept.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 bin=$(realpath "${1:-$here/../build/meshdiff}")
@@ -80,3 +81,35 @@ with open(os.path.join(out, "summary.csv"), "w", newline="") as f:
 print("rows:", len(rows))
 PY
 echo "wrote $out/summary.csv (torus rows: sigma_original = estimated H, sigma_processed = exact H)"
+
+# 4. plot: relative change of sigma against the share of vertices kept, ring 1 / ring 20 / radius 0.1 / radius 0.2
+python3 - "$out" > "$out/decimation.dat" <<'PY'
+import csv, os, sys
+rows = list(csv.DictReader(open(os.path.join(sys.argv[1], "summary.csv"))))
+get = lambda p, kind, k: next(float(r["relative_change"]) for r in rows
+                              if r["pair"] == p and r["kind"] == kind and r["level_or_radius"] == k)
+for m in ("igea", "bunny"):
+    print(f"# {m}: kept ring1 ring20 r0.1 r0.2")
+    for f in (50, 25, 10):
+        p = f"{m}_{f}"
+        print(f, *(100 * get(p, *c) for c in (("ring", "1"), ("ring", "20"), ("radius", "0.1"), ("radius", "0.2"))))
+    print("\n")
+PY
+if command -v gnuplot > /dev/null; then
+    term=pngcairo
+    gnuplot -e "set terminal" 2>&1 | grep -qw pngcairo || term=png
+    gnuplot <<GP
+set terminal $term size 900,460
+set output "$out/decimation.png"
+set multiplot layout 1,2 title "relative change of sigma, decimation vs original (reference/radii.sh)"
+set xlabel "vertices kept (%)"; set ylabel "(sigma' - sigma) / sigma (%)"; set xrange [55:5]; set grid
+set key below horizontal
+do for [i=0:1] {
+  set title (i == 0 ? "igea (134K)" : "bunny (35K)")
+  plot "$out/decimation.dat" index i u 1:2 w lp t "ring 1", "" index i u 1:3 w lp t "ring 20", \
+       "" index i u 1:4 w lp t "radius 0.1", "" index i u 1:5 w lp t "radius 0.2", 0 w l lc rgb "gray" notitle
+}
+unset multiplot
+GP
+    echo "wrote $out/decimation.png"
+fi
