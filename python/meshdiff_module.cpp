@@ -10,6 +10,7 @@
 #include "meshdiff/error.h"
 #include "meshdiff/facts.h"
 #include "meshdiff/io.h"
+#include "meshdiff/metric_levels.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/surface_distance.h"
@@ -278,16 +279,40 @@ std::vector<int> levels_from(const py::handle& obj)
     return levels;
 }
 
+// None, "default" (default_radii()) or a sequence of numbers > 0.
+std::vector<double> radii_from(const py::handle& obj)
+{
+    if (obj.is_none()) return {};
+    if (py::isinstance<py::str>(obj)) {
+        if (obj.cast<std::string>() == "default") return default_radii();
+        bad("radii: expected None, \"default\" or a sequence of numbers > 0, got " + std::string(py::str(obj)));
+    }
+    if (!py::isinstance<py::sequence>(obj))
+        bad("radii: expected None, \"default\" or a sequence of numbers > 0, got " + std::string(py::str(obj)));
+    std::vector<double> radii;
+    for (const auto& item : obj.cast<py::sequence>()) {
+        if (!py::isinstance<py::float_>(item) && !py::isinstance<py::int_>(item))
+            bad("radii: " + std::string(py::str(item)) + " is not a number");
+        const double r = item.cast<double>();
+        if (!(r > 0.0) || !std::isfinite(r))
+            bad("radii: radius " + std::string(py::str(item)) + " is not finite and > 0");
+        radii.push_back(r);
+    }
+    return radii;
+}
+
 ProfileOptions profile_options(const py::handle& levels, bool global_level, const std::string& curvature,
-                               const std::string& weighting, bool keep_vertex_data)
+                               const std::string& weighting, bool keep_vertex_data, std::vector<double> radii = {})
 {
     ProfileOptions p;
     p.levels = levels_from(levels);
+    p.radii = std::move(radii);
     p.global = global_level;
     p.curvature.method = parse_enum<CurvatureMethod>(curvature);
     p.curvature.weighting = parse_enum<RowWeighting>(weighting);
     p.keep_vertex_data = keep_vertex_data;
-    if (p.levels.empty() && !p.global) bad("levels: empty and global_level=False: nothing to compute");
+    if (p.levels.empty() && p.radii.empty() && !p.global)
+        bad("levels: empty and global_level=False: nothing to compute");
     return p;
 }
 
@@ -423,15 +448,16 @@ py::object py_read_mesh(const py::object& path_obj, bool report)
     return py::make_tuple(vf[0], vf[1], input_report_dict(m));
 }
 
-CompareOptions compare_options(const py::object& levels, bool global_level, const std::string& curvature,
-                               const std::string& weighting, double k, bool roughness, bool distance,
-                               const std::optional<long long>& samples, const std::optional<double>& density,
-                               const std::string& face_sampling, std::uint64_t seed, bool vertex_samples,
-                               bool edge_samples, bool face_samples, const std::string& hausdorff,
-                               double hausdorff_tolerance, const std::optional<double>& hausdorff_abs_tolerance)
+CompareOptions compare_options(const py::object& levels, const py::object& radii, bool global_level,
+                               const std::string& curvature, const std::string& weighting, double k, bool roughness,
+                               bool distance, const std::optional<long long>& samples,
+                               const std::optional<double>& density, const std::string& face_sampling,
+                               std::uint64_t seed, bool vertex_samples, bool edge_samples, bool face_samples,
+                               const std::string& hausdorff, double hausdorff_tolerance,
+                               const std::optional<double>& hausdorff_abs_tolerance)
 {
     CompareOptions c;
-    c.profile = profile_options(levels, global_level, curvature, weighting, false);
+    c.profile = profile_options(levels, global_level, curvature, weighting, false, radii_from(radii));
     if (!(k > 0.0) || !std::isfinite(k)) bad(fmt::format("k: {} must be finite and > 0", k));
     c.k = k;
     c.roughness = roughness;
@@ -465,31 +491,34 @@ py::dict run_compare(const LoadedMesh& a, const LoadedMesh& b, const CompareOpti
 }
 
 py::dict py_compare(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V2, const ArrayLike& F2,
-                    const py::object& levels, bool global_level, const std::string& curvature,
+                    const py::object& levels, const py::object& radii, bool global_level, const std::string& curvature,
                     const std::string& weighting, double k, bool roughness, bool distance,
                     const std::optional<long long>& samples, const std::optional<double>& density,
                     const std::string& face_sampling, std::uint64_t seed, bool vertex_samples, bool edge_samples,
                     bool face_samples, const std::string& hausdorff, double hausdorff_tolerance,
                     const std::optional<double>& hausdorff_abs_tolerance, int threads)
 {
-    const CompareOptions options = compare_options(
-        levels, global_level, curvature, weighting, k, roughness, distance, samples, density, face_sampling, seed,
-        vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance);
+    const CompareOptions options = compare_options(levels, radii, global_level, curvature, weighting, k, roughness,
+                                                   distance, samples, density, face_sampling, seed, vertex_samples,
+                                                   edge_samples, face_samples, hausdorff, hausdorff_tolerance,
+                                                   hausdorff_abs_tolerance);
     const LoadedMesh a = mesh_from(V1, F1, "V1", "F1");
     const LoadedMesh b = mesh_from(V2, F2, "V2", "F2");
     return run_compare(a, b, options, threads);
 }
 
 py::dict py_compare_files(const py::object& original, const py::object& processed, const py::object& levels,
-                          bool global_level, const std::string& curvature, const std::string& weighting, double k,
-                          bool roughness, bool distance, const std::optional<long long>& samples,
-                          const std::optional<double>& density, const std::string& face_sampling, std::uint64_t seed,
-                          bool vertex_samples, bool edge_samples, bool face_samples, const std::string& hausdorff,
-                          double hausdorff_tolerance, const std::optional<double>& hausdorff_abs_tolerance, int threads)
+                          const py::object& radii, bool global_level, const std::string& curvature,
+                          const std::string& weighting, double k, bool roughness, bool distance,
+                          const std::optional<long long>& samples, const std::optional<double>& density,
+                          const std::string& face_sampling, std::uint64_t seed, bool vertex_samples, bool edge_samples,
+                          bool face_samples, const std::string& hausdorff, double hausdorff_tolerance,
+                          const std::optional<double>& hausdorff_abs_tolerance, int threads)
 {
-    const CompareOptions options = compare_options(
-        levels, global_level, curvature, weighting, k, roughness, distance, samples, density, face_sampling, seed,
-        vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance);
+    const CompareOptions options = compare_options(levels, radii, global_level, curvature, weighting, k, roughness,
+                                                   distance, samples, density, face_sampling, seed, vertex_samples,
+                                                   edge_samples, face_samples, hausdorff, hausdorff_tolerance,
+                                                   hausdorff_abs_tolerance);
     const std::string pa = path_from(original, "original"), pb = path_from(processed, "processed");
     LoadedMesh a, b;
     {
@@ -512,17 +541,19 @@ py::dict run_profile(const LoadedMesh& m, const ProfileOptions& options, int thr
     return to_python(j);
 }
 
-py::dict py_profile(const ArrayLike& V, const ArrayLike& F, const py::object& levels, bool global_level,
-                    const std::string& curvature, const std::string& weighting, int threads)
+py::dict py_profile(const ArrayLike& V, const ArrayLike& F, const py::object& levels, const py::object& radii,
+                    bool global_level, const std::string& curvature, const std::string& weighting, int threads)
 {
-    const ProfileOptions options = profile_options(levels, global_level, curvature, weighting, false);
+    const ProfileOptions options =
+        profile_options(levels, global_level, curvature, weighting, false, radii_from(radii));
     return run_profile(mesh_from(V, F, "V", "F"), options, threads);
 }
 
-py::dict py_profile_file(const py::object& path_obj, const py::object& levels, bool global_level,
-                         const std::string& curvature, const std::string& weighting, int threads)
+py::dict py_profile_file(const py::object& path_obj, const py::object& levels, const py::object& radii,
+                         bool global_level, const std::string& curvature, const std::string& weighting, int threads)
 {
-    const ProfileOptions options = profile_options(levels, global_level, curvature, weighting, false);
+    const ProfileOptions options =
+        profile_options(levels, global_level, curvature, weighting, false, radii_from(radii));
     const std::string path = path_from(path_obj, "path");
     LoadedMesh m;
     {
@@ -709,6 +740,8 @@ coordinates, index out of range).)doc";
 constexpr const char* kCompareOptionsDoc = R"doc(
 Options (keyword-only, named like the CLI flags of `meshdiff compare`):
   levels=range(1, 21)   ring levels L (ints >= 1), in the order reported  [--levels]
+  radii=None            metric levels: radii > 0 on the unit-scaled mesh, or "default";
+                        adds d_r per radius (METHOD.md 5a)                 [--radii]
   global_level=True     also the global level                              [--no-global]
   curvature="goldfeather"  H estimator: goldfeather, quadric, meyer        [--curvature]
   weighting="none"      row weighting of the fits: none, inverse-square    [--weighting]
@@ -754,6 +787,9 @@ constexpr const char* kProfileOptionsDoc = R"doc(
 Options (keyword-only, as `meshdiff profile`):
   levels=range(1, 21), global_level=True, curvature="goldfeather",
   weighting="none", threads=0   (see compare())
+  radii=None     metric levels [--radii]: a sequence of radii > 0 on the unit-scaled
+                 mesh, or "default" (0.0125 * 2**(k/2), k = 0..6); adds "radii",
+                 "sigma_radii" and "radius_details" to the dict (METHOD.md 5a)
 )doc";
 
 constexpr const char* kProfileDoc = R"doc(The roughness profile of one mesh: the dict of `meshdiff profile MESH --json`
@@ -837,11 +873,12 @@ PYBIND11_MODULE(meshdiff, m)
     const std::string compare_doc = std::string(kCompareDoc) + kCompareOptionsDoc;
     const std::string compare_files_doc = std::string(kCompareFilesDoc) + kCompareOptionsDoc;
     auto compare_options_args = [&](auto&& def) {
-        def(py::arg("levels") = default_levels, py::arg("global_level") = true, py::arg("curvature") = "goldfeather",
-            py::arg("weighting") = "none", py::arg("k") = 1e-4, py::arg("roughness") = true, py::arg("distance") = true,
-            py::arg("samples") = py::none(), py::arg("density") = py::none(), py::arg("face_sampling") = "similar",
-            py::arg("seed") = 1, py::arg("vertex_samples") = true, py::arg("edge_samples") = true,
-            py::arg("face_samples") = true, py::arg("hausdorff") = "certified", py::arg("hausdorff_tolerance") = 1e-4,
+        def(py::arg("levels") = default_levels, py::arg("radii") = py::none(), py::arg("global_level") = true,
+            py::arg("curvature") = "goldfeather", py::arg("weighting") = "none", py::arg("k") = 1e-4,
+            py::arg("roughness") = true, py::arg("distance") = true, py::arg("samples") = py::none(),
+            py::arg("density") = py::none(), py::arg("face_sampling") = "similar", py::arg("seed") = 1,
+            py::arg("vertex_samples") = true, py::arg("edge_samples") = true, py::arg("face_samples") = true,
+            py::arg("hausdorff") = "certified", py::arg("hausdorff_tolerance") = 1e-4,
             py::arg("hausdorff_abs_tolerance") = py::none(), py::arg("threads") = 0);
     };
     compare_options_args([&](auto... options) {
@@ -856,11 +893,11 @@ PYBIND11_MODULE(meshdiff, m)
     const std::string profile_doc = std::string(kProfileDoc) + kProfileOptionsDoc;
     const std::string profile_file_doc = std::string(kProfileFileDoc) + kProfileOptionsDoc;
     m.def("profile", &py_profile, profile_doc.c_str(), py::arg("V"), py::arg("F"), py::kw_only(),
-          py::arg("levels") = default_levels, py::arg("global_level") = true, py::arg("curvature") = "goldfeather",
-          py::arg("weighting") = "none", py::arg("threads") = 0);
+          py::arg("levels") = default_levels, py::arg("radii") = py::none(), py::arg("global_level") = true,
+          py::arg("curvature") = "goldfeather", py::arg("weighting") = "none", py::arg("threads") = 0);
     m.def("profile_file", &py_profile_file, profile_file_doc.c_str(), py::arg("path"), py::kw_only(),
-          py::arg("levels") = default_levels, py::arg("global_level") = true, py::arg("curvature") = "goldfeather",
-          py::arg("weighting") = "none", py::arg("threads") = 0);
+          py::arg("levels") = default_levels, py::arg("radii") = py::none(), py::arg("global_level") = true,
+          py::arg("curvature") = "goldfeather", py::arg("weighting") = "none", py::arg("threads") = 0);
 
     m.def("mean_curvature", &py_mean_curvature, kMeanCurvatureDoc, py::arg("V"), py::arg("F"), py::kw_only(),
           py::arg("method") = "goldfeather", py::arg("weighting") = "none", py::arg("min_neighbors") = 6,

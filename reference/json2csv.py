@@ -50,12 +50,14 @@ def profile_columns(name, d):
     est = dict(zip(d["levels"], d["sigma"]))
     if d.get("sigma_global") is not None:
         est["global"] = d["sigma_global"]
+    est.update({f"r{r:g}": s for r, s in zip(d.get("radii", []), d.get("sigma_radii", []))})
     cols = [(name, est)]
     ex = d.get("exact")
     if isinstance(ex, dict) and "sigma" in ex:
         exact = dict(zip(ex.get("levels", d["levels"]), ex["sigma"]))
         if ex.get("sigma_global") is not None:
             exact["global"] = ex["sigma_global"]
+        exact.update({f"r{r:g}": s for r, s in zip(ex.get("radii", []), ex.get("sigma_radii", []))})
         cols.append((name + "_exact", exact))
     return cols
 
@@ -73,14 +75,55 @@ def profiles(out, args):
     for a in args:
         name, path = split_arg(a)
         cols += profile_columns(name, load(path))
-    levels = sorted({k for _, c in cols for k in c if k != "global"})
+    levels = sorted({k for _, c in cols for k in c if not isinstance(k, str)})
     if any("global" in c for _, c in cols):
         levels.append("global")
+    levels += sorted({k for _, c in cols for k in c if isinstance(k, str) and k.startswith("r")},
+                     key=lambda k: float(k[1:]))
     with open_out(out) as f:
         w = csv.writer(f, lineterminator="\n")
         w.writerow(["level"] + [n for n, _ in cols])
         for L in levels:
             w.writerow([L] + [fmt(c.get(L)) for _, c in cols])
+
+
+def batch(out, args):
+    last = {}
+    for path in args:
+        with open(path) as f:
+            for line in f:
+                try:
+                    r = json.loads(line)
+                except ValueError:
+                    continue  # a torn last line of a killed run
+                last[r.get("id")] = r
+    recs = [r for r in last.values() if r.get("status") == "ok"]
+    levels, radii = [], []
+    for r in recs:
+        d = r["result"].get("roughness_distance") or {}
+        levels += [L for L in d.get("levels", []) if L not in levels]
+        radii += [x for x in d.get("radii", []) if x not in radii]
+    radii.sort()
+    head = ["id", "original", "processed", "hausdorff"] + [f"d_L{L}" for L in levels] + ["d_global"]
+    head += [f"change_L{L}" for L in levels] + ["change_global"]
+    head += [f"d_r{x:g}" for x in radii] + [f"change_r{x:g}" for x in radii]
+    with open_out(out) as f:
+        w = csv.writer(f, lineterminator="\n")
+        w.writerow(head)
+        for r in recs:
+            res = r["result"]
+            d = res.get("roughness_distance") or {}
+            dl = dict(zip(d.get("levels", []), d.get("distance", [])))
+            cl = dict(zip(d.get("levels", []), d.get("relative_change", [])))
+            dr = dict(zip(d.get("radii", []), d.get("distance_radii", [])))
+            cr = dict(zip(d.get("radii", []), d.get("relative_change_radii", [])))
+            g = d.get("global") or {}
+            sd = res.get("surface_distance") or {}
+            row = [r.get("id"), r.get("original"), r.get("processed"), fmt(sd.get("hausdorff"))]
+            row += [fmt(dl.get(L)) for L in levels] + [fmt(g.get("distance"))]
+            row += [fmt(cl.get(L)) for L in levels] + [fmt(g.get("relative_change"))]
+            row += [fmt(dr.get(x)) for x in radii] + [fmt(cr.get(x)) for x in radii]
+            w.writerow(row)
 
 
 def smoothing_records(d):
@@ -120,10 +163,11 @@ def smoothing_wide(out, args):
 
 
 def main(argv):
-    if len(argv) < 4 or argv[1] not in ("profiles", "smoothing", "smoothing-wide"):
+    if len(argv) < 4 or argv[1] not in ("profiles", "smoothing", "smoothing-wide", "batch"):
         sys.stderr.write(__doc__)
         return 2
-    {"profiles": profiles, "smoothing": smoothing, "smoothing-wide": smoothing_wide}[argv[1]](argv[2], argv[3:])
+    modes = {"profiles": profiles, "smoothing": smoothing, "smoothing-wide": smoothing_wide, "batch": batch}
+    modes[argv[1]](argv[2], argv[3:])
     return 0
 
 

@@ -62,19 +62,27 @@ std::vector<Warning> warnings(const MeshFacts& f, const RoughnessProfile* p)
                             "1-ring and the nearest others, {} in all; vertices {}{})",
                             p->curvature_capped, kMaxFitNeighbors, fmt::join(p->curvature_capped_vertices, ", "),
                             p->curvature_capped > p->curvature_capped_vertices.size() ? ", ..." : ""));
-        auto check = [&](const LevelRoughness& l, const std::string& name) {
-            if (l.top_share > 0.5)
+        auto check = [&](const LevelRoughness& l, const std::string& name, int level) {
+            if (l.top_share > 0.5) {
                 add(WarningKind::OutliersDominate, l.top_share,
                     fmt::format("{}: the worst {:.1f}% of vertices make {:.0f}% of sigma^2 (outliers "
                                 "dominate; see worst_vertices)",
                                 name, 100.0 * p->outlier_fraction, 100.0 * l.top_share),
-                    l.level);
-            if (l.vertices_used == 0)
+                    level);
+                w.back().radius = l.radius;
+            }
+            if (l.vertices_used == 0) {
                 add(WarningKind::NoDefinedD, 0.0, fmt::format("{}: no vertex has a defined D (sigma set to 0)", name),
-                    l.level);
+                    level);
+                w.back().radius = l.radius;
+            }
         };
-        for (const auto& l : p->levels) check(l, fmt::format("level {}", l.level));
-        if (p->has_global) check(p->global, "global level");
+        for (const auto& l : p->levels) check(l, fmt::format("level {}", l.level), l.level);
+        if (p->has_global) check(p->global, "global level", p->global.level);
+        // Metric levels: only when asked for, so reports without them are unchanged.
+        for (const auto& l : p->radii)
+            check(l, fmt::format("radius {:g}", l.radius) + (l.vertices_used == 0 ? " (below the edge length?)" : ""),
+                  -1);
     }
     return w;
 }

@@ -1,6 +1,7 @@
 #include "meshdiff/roughness.h"
 
 #include "meshdiff/error.h"
+#include "meshdiff/metric_levels.h"
 #include "meshdiff/neighborhood.h"
 #include "meshdiff/normals.h"
 
@@ -63,7 +64,8 @@ void check_options(const ProfileOptions& options)
 {
     for (int l : options.levels)
         if (l < 1) throw InvalidArgumentError(fmt::format("profile: level {} is < 1 (levels count rings)", l));
-    if (options.levels.empty() && !options.global)
+    check_radii(options.radii);
+    if (options.levels.empty() && options.radii.empty() && !options.global)
         throw InvalidArgumentError("profile: no level requested (empty level list and no global level)");
     if (!(options.outlier_fraction > 0.0 && options.outlier_fraction <= 1.0))
         throw InvalidArgumentError("profile: outlier_fraction must be in (0, 1]");
@@ -110,6 +112,20 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
         p.global = level_roughness(0, D, options.outlier_fraction);
         p.global.no_neighborhood = (n - undefined) - p.global.vertices_used;
         if (options.keep_vertex_data) p.D_global = D;
+    }
+    if (!options.radii.empty()) {
+        // Metric levels (METHOD.md section 5a): area-weighted ball means.
+        const std::vector<double> area = vertex_areas(unit);
+        const BallMeans balls = ball_means(unit, adj, H, area, options.radii);
+        p.radii.resize(options.radii.size());
+        if (options.keep_vertex_data) p.D_radii.resize(options.radii.size());
+        for (std::size_t k = 0; k < options.radii.size(); ++k) {
+            for (std::size_t i = 0; i < n; ++i) D[i] = H[i] - balls.mean[k][i];  // NaN propagates
+            LevelRoughness lr = weighted_level_roughness(options.radii[k], D, area, options.outlier_fraction);
+            lr.no_neighborhood = (n - undefined) - lr.vertices_used;
+            p.radii[k] = std::move(lr);
+            if (options.keep_vertex_data) p.D_radii[k] = D;
+        }
     }
     if (options.keep_vertex_data) p.H = std::move(H);
 }

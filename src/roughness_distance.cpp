@@ -45,6 +45,14 @@ RoughnessDistance roughness_distance(const RoughnessProfile& a, const RoughnessP
         r.has_global = true;
         r.global = level_distance(0, a.global.sigma, b.global.sigma, k);
     }
+    for (const auto& la : a.radii)
+        for (const auto& lb : b.radii)
+            if (la.radius == lb.radius) {
+                LevelDistance d = level_distance(0, la.sigma, lb.sigma, k);
+                d.radius = la.radius;
+                r.radii.push_back(d);
+                break;
+            }
     return r;
 }
 

@@ -55,6 +55,15 @@ VertexMap profile_map(const RoughnessProfile& profile, const std::string& source
     for (std::size_t k = 0; k < profile.levels.size(); ++k)
         m.scalars.push_back({fmt::format("D_{}", profile.levels[k].level), profile.D[k]});
     if (profile.has_global) m.scalars.push_back({"D_global", profile.D_global});
+    // Metric levels: D_r<radius> with the decimal point written p (D_r0p05), as PLY readers split names on dots.
+    auto radius_name = [](double r) {
+        std::string t = fmt::format("{:g}", r);
+        for (char& ch : t)
+            if (ch == '.') ch = 'p';
+        return "D_r" + t;
+    };
+    for (std::size_t k = 0; k < profile.radii.size() && k < profile.D_radii.size(); ++k)
+        m.scalars.push_back({radius_name(profile.radii[k].radius), profile.D_radii[k]});
     std::vector<double> worst(n, 0.0);
     std::vector<std::string> marks;
     auto mark = [&](const LevelRoughness& l, const std::string& name) {
@@ -67,6 +76,7 @@ VertexMap profile_map(const RoughnessProfile& profile, const std::string& source
     };
     for (const auto& l : profile.levels) mark(l, fmt::format("level {}", l.level));
     if (profile.has_global) mark(profile.global, "global");
+    for (const auto& l : profile.radii) mark(l, fmt::format("radius {:g}", l.radius));
     m.scalars.push_back({"worst", worst});
     const double range = color_range > 0.0 ? color_range : robust_symmetric_range(profile.H);
     m.colors = diverging_colors(profile.H, range);

@@ -84,4 +84,20 @@ expect 0 batch "$tmp/p3.csv" --out "$tmp/r9.jsonl" --levels 1-20 -q
 [ "$(grep -c '"status":"ok"' "$tmp/r9.jsonl")" -eq 6 ] && valid_records "$tmp/r9.jsonl" && pass ||
     fail "after kill + resume: $(lines "$tmp/r9.jsonl") lines"
 
+# --- metric levels reach every record (roughness_distance.radii, distance_radii, relative_change_radii)
+expect 0 batch "$tmp/p2.csv" --out "$tmp/r10.jsonl" --levels 1 --radii 0.1,0.2 -n 2000 -q
+python3 - "$tmp/r10.jsonl" <<'PY' && pass || fail "batch records lack the radii"
+import json, sys
+recs = [json.loads(l) for l in open(sys.argv[1])]
+assert len(recs) == 2 and all(r["status"] == "ok" for r in recs)
+for r in recs:
+    d = r["result"]["roughness_distance"]
+    assert d["radii"] == [0.1, 0.2] and len(d["distance_radii"]) == 2 and len(d["relative_change_radii"]) == 2
+    assert r["result"]["original"]["radii"] == [0.1, 0.2]
+PY
+# the summary CSV of reference/json2csv.py carries them
+python3 "$(dirname "$0")/../reference/json2csv.py" batch "$tmp/r10.csv" "$tmp/r10.jsonl" &&
+    head -1 "$tmp/r10.csv" | grep -q "d_L1,d_global,change_L1,change_global,d_r0.1,d_r0.2,change_r0.1,change_r0.2" &&
+    [ "$(wc -l < "$tmp/r10.csv")" -eq 3 ] && pass || fail "summary CSV lacks the radii: $(head -2 "$tmp/r10.csv")"
+
 finish

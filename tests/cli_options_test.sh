@@ -35,6 +35,14 @@ expect_range "--threads" profile "$h" --threads -1
 expect_range "--seed" "$h" "$h" --no-roughness --seed -5
 expect_range "--k" "$h" "$h" --no-distance -k nan
 expect_range "limit of 200" profile "$h" --levels 1-300
+expect_range "--radii" profile "$h" --radii 0
+expect_range "--radii" profile "$h" --radii 0.1,-0.2
+expect_range "--radii" profile "$h" --radii nan
+expect_range "--radii" profile "$h" --radii inf
+expect_range "--radii" profile "$h" --radii 1e9
+expect_range "--radii" profile "$h" --radii 0.1,,0.2
+expect_range "--radii" profile "$h" --radii abc
+expect_range "limit of 64" profile "$h" --radii "$(seq -s, 1 70)"
 expect_range "--color-range" "$h" "$h" --no-roughness --distance-map "$tmp/m.ply" --color-range 0 inf
 expect_range "--color-range" profile "$h" --vertex-data "$tmp/v.ply" --color-range nan
 expect_range "--shard" batch "$tmp/none.csv" --out "$tmp/x.jsonl" --shard 0/-1

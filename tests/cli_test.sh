@@ -129,6 +129,19 @@ expect 0 profile "$tmp/v.ply" --levels 1 || fail "vertex-data PLY does not read 
 expect 0 profile "$data/fandisk.ply" --json - --no-global --curvature meyer
 json_check "$tmp/stdout" 'j["sigma_global"] is None and j["curvature"]["method"] == "meyer" and len(j["levels"]) == 20'
 
+# --- metric levels (--radii): only when asked for; JSON, text, compare
+json_check "$tmp/p.json" '"radii" not in j and "sigma_radii" not in j and "radius_details" not in j'
+expect 0 profile "$data/fandisk.ply" --levels 1 --radii 0.05,0.1 --json "$tmp/pr.json" &&
+    grep -q "metric levels" "$tmp/stdout" && pass || fail "profile text with radii"
+json_check "$tmp/pr.json" 'j["radii"] == [0.05, 0.1] and len(j["sigma_radii"]) == 2 and all(s > 0 for s in j["sigma_radii"]) and j["radius_details"][1]["radius"] == 0.1 and j["levels"] == [1] and finite(j)'
+expect 0 profile "$data/fandisk.ply" --levels '' --no-global --radii default --json "$tmp/prd.json"
+json_check "$tmp/prd.json" 'len(j["radii"]) == 7 and j["levels"] == [] and j["sigma_global"] is None and finite(j)'
+expect 0 profile "$data/fandisk.ply" --levels 1 --radii 0.05,0.1 --vertex-data "$tmp/vr.ply" &&
+    head -c 2000 "$tmp/vr.ply" | grep -q "property double D_r0p05" && pass || fail "vertex-data PLY lacks D_r0p05"
+expect 0 "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-distance --levels 1 --radii 0.1,0.2 --json "$tmp/cr.json" &&
+    grep -q "d_r" "$tmp/stdout" && pass || fail "compare text with radii"
+json_check "$tmp/cr.json" 'j["roughness_distance"]["radii"] == [0.1, 0.2] and len(j["roughness_distance"]["distance_radii"]) == 2 and len(j["roughness_distance"]["relative_change_radii"]) == 2 and j["original"]["radii"] == [0.1, 0.2] and finite(j)'
+
 # --- the exact profile of a generated surface beside the estimated one
 expect 0 generate torus "$tmp/torus.ply" --n 256
 expect 0 profile "$tmp/torus.ply" --exact --levels 1,5 --json "$tmp/t.json"

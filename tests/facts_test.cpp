@@ -219,6 +219,25 @@ TEST(Warnings, NoDefinedDAtEveryLevelWhenOneVertexAloneHasH)
     }
 }
 
+TEST(Warnings, NoDefinedDAtARadiusBelowTheEdgeLength)
+{
+    // icosphere(2): unit-scaled edges about 0.15; radius 0.05 holds no neighbour, 0.5 does.
+    LoadedMesh m;
+    m.mesh = icosphere(2).mesh;
+    ProfileOptions o;
+    o.levels = {1};
+    o.radii = {0.05, 0.5};
+    const auto p = roughness_profile(m.mesh, o);
+    const auto w = warnings(mesh_facts(m), &p);
+    ASSERT_EQ(kinds(w), (std::vector<WarningKind>{WarningKind::NoDefinedD}));
+    EXPECT_EQ(w[0].level, -1);
+    EXPECT_EQ(w[0].radius, 0.05);
+    EXPECT_NE(w[0].text.find("radius 0.05"), std::string::npos) << w[0].text;
+    o.radii = {};
+    const auto q = roughness_profile(m.mesh, o);
+    EXPECT_TRUE(warnings(mesh_facts(m), &q).empty());
+}
+
 TEST(Warnings, CappedNeighbourhoodsNameTheCountAndTheFirstVertices)
 {
     // A fan of 300 triangles: every rim vertex widens to a 2-ring of 300

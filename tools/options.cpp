@@ -1,6 +1,7 @@
 #include "options.h"
 
 #include "meshdiff/error.h"
+#include "meshdiff/metric_levels.h"
 #include "meshdiff/output_file.h"
 
 #include <fmt/format.h>
@@ -97,9 +98,37 @@ std::vector<int> parse_levels(const std::string& text)
     return levels;
 }
 
-void add_profile_options(CLI::App* sub, ProfileCliOptions& o)
+std::vector<double> parse_radii(const std::string& text)
+{
+    if (text == "default") return default_radii();
+    std::vector<double> radii;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+        const auto v = finite_number(item);
+        if (!v)
+            throw InvalidArgumentError(
+                fmt::format("--radii: '{}' is not a list of numbers like 0.05,0.1,0.2 or 'default'", text));
+        if (!(*v > 0.0) || *v > kMaxRadius)
+            throw InvalidArgumentError(fmt::format("--radii: radius {} is not in (0, {}]", item, kMaxRadius));
+        radii.push_back(*v);
+        if (radii.size() > kMaxRadii)
+            throw InvalidArgumentError(
+                fmt::format("--radii: '{}' lists more than the limit of {} radii", text, kMaxRadii));
+    }
+    if (radii.empty() && !text.empty())
+        throw InvalidArgumentError(
+            fmt::format("--radii: '{}' is not a list of numbers like 0.05,0.1,0.2 or 'default'", text));
+    return radii;
+}
+
+void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii)
 {
     sub->add_option("--levels", o.levels, "ring levels, e.g. 1,2,5,10,20 or 1-20")->capture_default_str();
+    if (with_radii)
+        sub->add_option("--radii", o.radii,
+                        "metric levels: radii on the unit-scaled mesh, e.g. 0.05,0.1,0.2, or 'default' "
+                        "(0.0125 * 2^(k/2), k = 0..6: 0.0125 to 0.1)");
     sub->add_flag("--no-global", o.no_global, "leave out the global level");
     sub->add_option("--curvature", o.curvature, "mean curvature estimator")
         ->check(CLI::IsMember(enum_names<CurvatureMethod>()))
@@ -113,6 +142,7 @@ ProfileOptions to_profile_options(const ProfileCliOptions& o, bool keep_vertex_d
 {
     ProfileOptions p;
     p.levels = parse_levels(o.levels);
+    p.radii = parse_radii(o.radii);
     p.global = !o.no_global;
     p.curvature.method = parse_enum<CurvatureMethod>(o.curvature);
     p.curvature.weighting = parse_enum<RowWeighting>(o.weighting);

@@ -18,15 +18,23 @@ namespace meshdiff::cli {
 //! \throw InvalidArgumentError on a malformed list or a level < 1.
 std::vector<int> parse_levels(const std::string& text);
 
+//! Parses a radius list such as "0.05,0.1,0.2", or "default" (default_radii()),
+//! or "" (none).
+//! \throw InvalidArgumentError on a malformed list, a radius not finite, <= 0
+//!        or > kMaxRadius, or more than kMaxRadii radii.
+std::vector<double> parse_radii(const std::string& text);
+
 //! Options of the roughness profile shared by profile, compare and batch.
 struct ProfileCliOptions
 {
     std::string levels = "1-20";
+    std::string radii;  // empty: no metric level
     bool no_global = false;
     std::string curvature = "goldfeather";
     std::string weighting = "none";
 };
-void add_profile_options(CLI::App* sub, ProfileCliOptions& o);
+//! \param with_radii also offer --radii (not for smooth, whose records hold ring levels only)
+void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii = true);
 
 //! The library options for the parsed command-line options.
 ProfileOptions to_profile_options(const ProfileCliOptions& o, bool keep_vertex_data);
@@ -64,6 +72,12 @@ constexpr int kMaxThreads = 1024;
 constexpr double kMaxHausdorffBudget = 1e9;
 //! The most levels a --levels list may hold (each level keeps a value per vertex).
 constexpr std::size_t kMaxLevels = 200;
+
+//! The most radii a --radii list may hold.
+constexpr std::size_t kMaxRadii = 64;
+//! The largest radius --radii accepts (on the unit-scaled mesh, whose mean
+//! vertex distance to the centroid is 1: far larger than any mesh).
+constexpr double kMaxRadius = 1000.0;
 
 //! Sets the OpenMP thread count when \p threads > 0.
 void set_threads(int threads);

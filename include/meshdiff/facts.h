@@ -71,9 +71,10 @@ struct EnumNames<WarningKind>
 struct Warning
 {
     WarningKind kind = WarningKind::UnreferencedVertices;
-    int level = -1;      //!< the ring level it concerns, 0 for the global level, -1 for the mesh
-    double value = 0.0;  //!< the count or share it is about (see WarningKind)
-    std::string text;    //!< one line for people
+    int level = -1;       //!< the ring level it concerns, 0 for the global level, -1 for the mesh
+    double value = 0.0;   //!< the count or share it is about (see WarningKind)
+    std::string text;     //!< one line for people
+    double radius = 0.0;  //!< the metric level it concerns (level is then -1), 0 otherwise
 };
 
 //! The warnings about \p facts (defects of the mesh) and, with \p profile,

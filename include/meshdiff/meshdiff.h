@@ -15,6 +15,7 @@
 #include "meshdiff/hausdorff.h"
 #include "meshdiff/io.h"
 #include "meshdiff/mesh.h"
+#include "meshdiff/metric_levels.h"
 #include "meshdiff/neighborhood.h"
 #include "meshdiff/noise.h"
 #include "meshdiff/normalize.h"

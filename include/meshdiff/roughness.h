@@ -31,12 +31,17 @@ struct ProfileOptions
     CurvatureOptions curvature{};                //!< estimator of H
     bool keep_vertex_data = false;               //!< keep H and D per vertex in the result
     double outlier_fraction = 0.001;             //!< share of vertices in the top-|D| diagnostic
+    //! Metric levels (metric_levels.h, METHOD.md section 5a): radii on the
+    //! normalised mesh, each finite and > 0, in the order reported. Empty by
+    //! default (default_radii() is what `--radii default` asks for).
+    std::vector<double> radii{};
 };
 
 //! sigma and its counts at one level.
 struct LevelRoughness
 {
-    int level = 0;                    //!< ring level; 0 for the global level
+    int level = 0;                    //!< ring level; 0 for the global level and for metric levels
+    double radius = 0.0;              //!< radius of a metric level; 0 for ring levels and the global level
     double sigma = 0.0;               //!< RMS of D over the vertices used (0 if none)
     std::size_t vertices_used = 0;    //!< vertices with a defined D
     std::size_t no_neighborhood = 0;  //!< vertices with defined H but no defined H in N_L
@@ -61,17 +66,22 @@ struct RoughnessProfile
     std::vector<LevelRoughness> levels;                    //!< in the order of ProfileOptions::levels
     bool has_global = false;
     LevelRoughness global;  //!< level 0
+    //! Metric levels, in the order of ProfileOptions::radii: area-weighted
+    //! sigma_r (LevelRoughness::radius set, level 0). Empty unless asked for.
+    std::vector<LevelRoughness> radii;
 
     //! Per vertex, only with keep_vertex_data: H on the normalised mesh, and D
     //! for each level (NaN where undefined), D_global last if has_global.
     std::vector<double> H;
     std::vector<std::vector<double>> D;
     std::vector<double> D_global;
+    std::vector<std::vector<double>> D_radii;  //!< D_r per metric level, in the order of radii
 };
 
 //! The roughness profile of \p mesh (any position and scale: it is
 //! normalised first).
-//! \throw InvalidArgumentError for a level < 1 or an empty level list without global.
+//! \throw InvalidArgumentError for a level < 1, a radius not finite and > 0,
+//!        or no level at all (no ring level, no radius, no global).
 //! \throw InvalidMeshError for a mesh without extent.
 RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options = {});
 

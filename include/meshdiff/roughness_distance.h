@@ -22,7 +22,8 @@ namespace meshdiff {
 
 struct LevelDistance
 {
-    int level = 0;                        //!< ring level, 0 for global
+    int level = 0;                        //!< ring level, 0 for global and for metric levels
+    double radius = 0.0;                  //!< radius of a metric level, 0 otherwise
     double distance = 0.0;                //!< d_L
     double relative_change = 0.0;         //!< (sigma' - sigma) / sigma
     bool relative_change_defined = true;  //!< false when sigma(M) = 0 < sigma(M')
@@ -35,6 +36,9 @@ struct RoughnessDistance
     std::vector<LevelDistance> levels;  //!< levels present in both profiles, in the original's order
     bool has_global = false;
     LevelDistance global;
+    //! Metric levels present in both profiles (matched by radius, exactly),
+    //! in the original's order; empty unless both profiles have radii.
+    std::vector<LevelDistance> radii;
 };
 
 //! d_L and the relative change for one pair of sigmas.

@@ -35,8 +35,9 @@ struct VertexMap
 VertexMap distance_map(const Comparison& comparison, std::optional<std::pair<double, double>> color_range = {});
 
 //! The per-vertex data of a profile made with keep_vertex_data: H, D_<level>
-//! per level, D_global, and `worst` (1 at the worst |D| vertices of some
-//! level); H coloured by diverging_colors() over [-R, R], R = \p color_range
+//! per level, D_global, D_r<radius> per metric level (the radius's decimal
+//! point written p: D_r0p05), and `worst` (1 at the worst |D| vertices of some
+//! level or radius); H coloured by diverging_colors() over [-R, R], R = \p color_range
 //! if > 0, else robust_symmetric_range(H). \p source names the input in the
 //! comments. Write it with the normalised mesh (apply_normalization()).
 //! \throw InvalidArgumentError if the profile has no vertex data.

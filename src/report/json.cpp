@@ -59,6 +59,13 @@ nlohmann::json level_json(const LevelRoughness& l)
             {"top_share", number_or_null(l.top_share)},
             {"worst_vertices", l.worst_vertices}};
 }
+nlohmann::json radius_json(const LevelRoughness& l)
+{
+    nlohmann::json j = level_json(l);
+    j.erase("level");
+    j["radius"] = l.radius;
+    return j;
+}
 }  // namespace
 
 nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
@@ -97,6 +104,21 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
     j["level_details"] = details;
     if (p.has_global) j["global"] = level_json(p.global);
     j["neighborhood"] = "N_L(i) = vertices within L edges of i, i excluded; global: all other vertices";
+    if (!p.radii.empty()) {  // only then: reports without metric levels are unchanged
+        nlohmann::json radii = nlohmann::json::array(), sigma_r = nlohmann::json::array(),
+                       details_r = nlohmann::json::array();
+        for (const auto& l : p.radii) {
+            radii.push_back(l.radius);
+            sigma_r.push_back(number_or_null(l.sigma));
+            details_r.push_back(radius_json(l));
+        }
+        j["radii"] = radii;
+        j["sigma_radii"] = sigma_r;
+        j["radius_details"] = details_r;
+        j["neighborhood_radii"] =
+            "N_r(i) = vertices joined to i by mesh edges inside the closed ball of radius r about i (unit-scaled "
+            "mesh), i excluded; means and sigma weighted by vertex area (one third of incident face areas)";
+    }
     j["warnings"] = warnings_json(warnings(f, &p));
     return j;
 }
@@ -110,13 +132,23 @@ nlohmann::json exact_profile_json(const RoughnessProfile& estimated, const Exact
         sigma.push_back(exact.profile.levels[k].sigma);
     }
     const auto& e = exact.h_error;
-    return {{"property", property},
-            {"levels", levels},
-            {"sigma", sigma},
-            {"sigma_global",
-             exact.profile.has_global ? nlohmann::json(exact.profile.global.sigma) : nlohmann::json(nullptr)},
-            {"undefined_vertices", exact.profile.curvature_undefined},
-            {"h_error", {{"rms", e.rms}, {"max", e.max}, {"vertices", e.compared}}}};
+    nlohmann::json j = {{"property", property},
+                        {"levels", levels},
+                        {"sigma", sigma},
+                        {"sigma_global", exact.profile.has_global ? nlohmann::json(exact.profile.global.sigma)
+                                                                  : nlohmann::json(nullptr)},
+                        {"undefined_vertices", exact.profile.curvature_undefined},
+                        {"h_error", {{"rms", e.rms}, {"max", e.max}, {"vertices", e.compared}}}};
+    if (!exact.profile.radii.empty()) {  // only with --radii
+        nlohmann::json radii = nlohmann::json::array(), sigma_r = nlohmann::json::array();
+        for (const auto& l : exact.profile.radii) {
+            radii.push_back(l.radius);
+            sigma_r.push_back(l.sigma);
+        }
+        j["radii"] = radii;
+        j["sigma_radii"] = sigma_r;
+    }
+    return j;
 }
 
 nlohmann::json roughness_distance_json(const RoughnessDistance& d)
@@ -141,6 +173,20 @@ nlohmann::json roughness_distance_json(const RoughnessDistance& d)
                        {"relative_change", d.global.relative_change_defined ? nlohmann::json(d.global.relative_change)
                                                                             : nlohmann::json(nullptr)},
                        {"reference_zero", d.global.reference_zero}};
+    if (!d.radii.empty()) {
+        nlohmann::json radii = nlohmann::json::array(), dist_r = nlohmann::json::array(),
+                       rel_r = nlohmann::json::array(), zero_r = nlohmann::json::array();
+        for (const auto& l : d.radii) {
+            radii.push_back(l.radius);
+            dist_r.push_back(l.distance);
+            rel_r.push_back(l.relative_change_defined ? nlohmann::json(l.relative_change) : nlohmann::json(nullptr));
+            if (l.reference_zero) zero_r.push_back(l.radius);
+        }
+        j["radii"] = radii;
+        j["distance_radii"] = dist_r;
+        j["relative_change_radii"] = rel_r;
+        j["reference_zero_radii"] = zero_r;
+    }
     return j;
 }
 

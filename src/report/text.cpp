@@ -39,6 +39,11 @@ std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
     };
     for (const auto& l : p.levels) row(std::to_string(l.level), l);
     if (p.has_global) row("global", p.global);
+    if (!p.radii.empty()) {
+        s += fmt::format("\n  radius        sigma     used   no-nbhd {:>9}   (metric levels, area-weighted)\n",
+                         fmt::format("top{:g}%", 100.0 * p.outlier_fraction));
+        for (const auto& l : p.radii) row(fmt::format("{:g}", l.radius), l);
+    }
     const auto w = warnings(f, &p);
     if (!w.empty()) {
         s += "\nwarnings\n";
@@ -116,6 +121,17 @@ std::string comparison_text(const Comparison& c)
             row(std::to_string(d.level), sa, sb, d);
         }
         if (c.roughness->has_global) row("global", pa.global.sigma, pb.global.sigma, c.roughness->global);
+        if (!c.roughness->radii.empty())
+            s += fmt::format("  {:>7} {:>13} {:>13} {:>10} {:>9}   (metric levels, area-weighted)\n", "radius",
+                             "sigma orig", "sigma proc", "change", "d_r");
+        for (const auto& d : c.roughness->radii) {
+            double sa = 0, sb = 0;
+            for (const auto& l : pa.radii)
+                if (l.radius == d.radius) sa = l.sigma;
+            for (const auto& l : pb.radii)
+                if (l.radius == d.radius) sb = l.sigma;
+            row(fmt::format("{:g}", d.radius), sa, sb, d);
+        }
         if (pa.curvature_undefined || pb.curvature_undefined)
             s += fmt::format("  undefined curvature: {} and {} vertices left out\n", pa.curvature_undefined,
                              pb.curvature_undefined);

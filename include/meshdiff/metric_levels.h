@@ -1,0 +1,73 @@
+//! \file metric_levels.h
+//! \brief Metric levels: neighbourhoods of a physical radius on the
+//! unit-scaled mesh, with area weights (METHOD.md section 5a).
+//!
+//! N_r(v) = { j != v : j is joined to v by a path of mesh edges whose vertices
+//! all lie in the closed ball B(p_v, r) }, on the normalised mesh. Each vertex
+//! is weighted by its share of surface area, A_j = one third of the area of its
+//! incident faces, so that the means and sigma_r converge as the mesh is
+//! refined, where ring levels (neighborhood.h) measure a scale that shrinks
+//! with the edge length.
+#pragma once
+
+#include "meshdiff/mesh.h"
+#include "meshdiff/roughness.h"
+#include "meshdiff/topology.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace meshdiff {
+
+//! The radii of `--radii default`: 0.0125 * 2^(k/2), k = 0..6 (0.0125 ...
+//! 0.1), geometric: from the edge length of a fine scan (igea, 134K vertices)
+//! to the extent of its ring level 9 (METHOD.md section 5a explains the choice
+//! and its upper bound, set by the cost).
+std::vector<double> default_radii();
+
+//! Throws InvalidArgumentError unless every radius is finite and > 0.
+void check_radii(const std::vector<double>& radii);
+
+//! The area share of each vertex: one third of the area of each incident
+//! face (a face with a repeated corner, or of zero area, contributes 0).
+//! Sums to surface_area() over the faces without a repeated corner.
+std::vector<double> vertex_areas(const Mesh& mesh);
+
+//! N_r(centre) as defined above, ascending ids (the centre excluded). A plain
+//! breadth-first search bounded by the ball: the single-vertex form of
+//! ball_means(), and the object the tests check against brute force.
+//! \throw InvalidArgumentError for a bad radius or centre.
+std::vector<std::uint32_t> ball_patch(const Mesh& mesh, const Adjacency& adjacency, std::size_t centre, double radius);
+
+//! Result of ball_means(): for each requested radius k (in the order given)
+//! and vertex i, mean[k][i] = sum of w_j values[j] / sum of w_j over the j in
+//! N_r(i) whose value is defined (not NaN). NaN where there is none or the
+//! weights sum to 0, and where values[i] is NaN (such vertices are skipped).
+struct BallMeans
+{
+    std::vector<double> radii;
+    std::vector<std::vector<double>> mean;
+    //! |N_r(i)| (all vertices, defined or not); filled only when asked for,
+    //! and only for centres with a defined value.
+    std::vector<std::vector<std::uint32_t>> size;
+};
+
+//! Ball means for all vertices and all \p radii at once: one search per centre
+//! bounded by the largest radius, each vertex assigned to the smallest radius
+//! whose ball connects it to the centre. Parallel over centres with OpenMP;
+//! the result does not depend on the thread count (each centre's sums are
+//! accumulated in a fixed order).
+//! \throw InvalidArgumentError for a bad radius or mismatched sizes.
+BallMeans ball_means(const Mesh& mesh, const Adjacency& adjacency, const std::vector<double>& values,
+                     const std::vector<double>& weights, const std::vector<double>& radii, bool with_sizes = false);
+
+//! Area-weighted sigma of one metric level: sqrt( sum w_i D_i^2 / sum w_i )
+//! over the i with defined D (NaN skipped); 0 if none or the weights sum to 0.
+//! top_share is the share of sum w_i D_i^2 from the outlier_fraction of those
+//! vertices with the largest |D|; worst_vertices as in level_roughness().
+//! The result has level = 0 and radius = \p radius.
+//! \throw InvalidArgumentError if the sizes differ.
+LevelRoughness weighted_level_roughness(double radius, const std::vector<double>& D, const std::vector<double>& weights,
+                                        double outlier_fraction = 0.001);
+
+}  // namespace meshdiff
