@@ -16,6 +16,14 @@ Standard library only.
   json2csv.py smoothing-wide OUT.csv SMOOTHING.json
       One row per recorded iteration: iteration,L1,L5,...,global.
 
+  json2csv.py batch OUT.csv RESULTS.jsonl [RESULTS.jsonl ...]
+      One row per pair recorded ok by `meshdiff batch` (the last line per id):
+      id, original, processed, hausdorff (the upper end of the certified
+      interval; the sampled maximum with --hausdorff sampled or a
+      meshdiff.compare/1 result), hausdorff_lower, hausdorff_certified, d_L<L>
+      per ring level, d_global, change_L<L>, change_global, and d_r<r>,
+      change_r<r> per radius (--radii).
+
 OUT may be "-" for stdout.
 """
 import csv
@@ -104,7 +112,8 @@ def batch(out, args):
         levels += [L for L in d.get("levels", []) if L not in levels]
         radii += [x for x in d.get("radii", []) if x not in radii]
     radii.sort()
-    head = ["id", "original", "processed", "hausdorff"] + [f"d_L{L}" for L in levels] + ["d_global"]
+    head = ["id", "original", "processed", "hausdorff", "hausdorff_lower", "hausdorff_certified"]
+    head += [f"d_L{L}" for L in levels] + ["d_global"]
     head += [f"change_L{L}" for L in levels] + ["change_global"]
     head += [f"d_r{x:g}" for x in radii] + [f"change_r{x:g}" for x in radii]
     with open_out(out) as f:
@@ -119,7 +128,14 @@ def batch(out, args):
             cr = dict(zip(d.get("radii", []), d.get("relative_change_radii", [])))
             g = d.get("global") or {}
             sd = res.get("surface_distance") or {}
-            row = [r.get("id"), r.get("original"), r.get("processed"), fmt(sd.get("hausdorff"))]
+            h = sd.get("hausdorff")
+            if isinstance(h, dict):  # meshdiff.compare/2: an interval (upper None when only sampled)
+                lower, certified = h.get("lower"), bool(h.get("certified"))
+                upper = h.get("upper") if h.get("upper") is not None else lower
+            else:  # meshdiff.compare/1: the sampled maximum
+                lower = upper = h
+                certified = False
+            row = [r.get("id"), r.get("original"), r.get("processed"), fmt(upper), fmt(lower), str(certified).lower()]
             row += [fmt(dl.get(L)) for L in levels] + [fmt(g.get("distance"))]
             row += [fmt(cl.get(L)) for L in levels] + [fmt(g.get("relative_change"))]
             row += [fmt(dr.get(x)) for x in radii] + [fmt(cr.get(x)) for x in radii]
