@@ -338,3 +338,26 @@ TEST(Hausdorff, RejectsBadOptionsAndMismatchedIndex)
     empty.points = {{0, 0, 0}};
     EXPECT_THROW(certified_hausdorff(empty, t.b, {}), InvalidMeshError);
 }
+
+TEST(Hausdorff, EveryBundledPairIsCertifiedAboveItsSampledMaximum)
+{
+    // The pairs of the reference cross-check with CGAL (reference/out/9_hausdorff/cgal.md).
+    const std::pair<const char*, const char*> pairs[] = {{"bunny_res3.ply", "bunny_res4_ascii.ply"},
+                                                         {"sphere_ico_2562.ply", "sphere_irregular_3072.ply"},
+                                                         {"sphere_ico_2562.ply", "ellipsoid_150_100_100.ply"},
+                                                         {"hemisphere.ply", "sphere_ico_2562.ply"},
+                                                         {"torus_R1_r025.ply", "hemisphere.ply"}};
+    for (const auto& [x, y] : pairs) {
+        const Mesh a = read_mesh(kData + "/" + x).mesh;
+        const Mesh b = read_mesh(kData + "/" + y).mesh;
+        const SurfaceDistance sd = surface_distance(a, b, {}, false, HausdorffOptions{});
+        ASSERT_TRUE(sd.forward_hausdorff && sd.backward_hausdorff);
+        for (const auto& [h, sampled] :
+             {std::pair{&*sd.forward_hausdorff, sd.forward.max}, std::pair{&*sd.backward_hausdorff, sd.backward.max}}) {
+            expect_certified(*h);
+            EXPECT_GE(h->lower, sampled) << x << " " << y;
+            EXPECT_LE(h->upper - h->lower, 1e-4 * h->lower) << x << " " << y;
+            EXPECT_DOUBLE_EQ((h->location.point - h->location.closest_point).norm(), h->lower) << x << " " << y;
+        }
+    }
+}
