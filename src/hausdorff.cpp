@@ -110,6 +110,9 @@ void validate(const HausdorffOptions& o)
     if (!(std::isfinite(o.absolute_tolerance) && o.absolute_tolerance >= 0.0))
         throw InvalidArgumentError(
             fmt::format("HausdorffOptions: absolute_tolerance = {} must be finite and >= 0", o.absolute_tolerance));
+    if (o.max_round_triangles < 4)
+        throw InvalidArgumentError(
+            fmt::format("HausdorffOptions: max_round_triangles = {} must be >= 4", o.max_round_triangles));
     if (o.relative_tolerance == 0.0 && o.absolute_tolerance == 0.0)
         throw InvalidArgumentError("HausdorffOptions: relative_tolerance and absolute_tolerance are both 0");
 }
@@ -235,7 +238,7 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
     std::vector<Cell> next;
     std::vector<Candidate> found;
     while (!cells.empty()) {
-        if (r.bound_evaluations + 4 * cells.size() > budget) {
+        if (r.bound_evaluations + 4 * cells.size() > budget || 4 * cells.size() > options.max_round_triangles) {
             r.budget_exhausted = true;
             break;
         }

@@ -303,6 +303,25 @@ TEST(Hausdorff, BudgetStopsWithAValidInterval)
     EXPECT_GT(h.upper - h.lower, h.tolerance);
 }
 
+TEST(Hausdorff, MemoryBoundStopsWithAValidInterval)
+{
+    // A coarse sphere against a fine one: every face of the coarse one sags
+    // about as far, so many triangles stay open in the first rounds.
+    const Mesh a = icosphere(2).mesh;
+    const Mesh b = icosphere(4).mesh;
+    HausdorffOptions o;
+    const CertifiedHausdorff full = certified_hausdorff(a, b, o);
+    expect_certified(full);
+    o.max_round_triangles = 64;  // at most 16 open triangles per round
+    const CertifiedHausdorff h = certified_hausdorff(a, b, o);
+    EXPECT_TRUE(h.budget_exhausted);
+    EXPECT_FALSE(h.certified);
+    EXPECT_LE(h.lower, full.upper);
+    EXPECT_GE(h.upper, full.lower);
+    o.max_round_triangles = 3;
+    EXPECT_THROW(certified_hausdorff(a, b, o), InvalidArgumentError);
+}
+
 TEST(Hausdorff, AbsoluteToleranceAndSeed)
 {
     const Circumcentre t;

@@ -29,7 +29,8 @@
 //!   the lower bound updated between rounds), so the interval and the
 //!   location do not depend on the number of threads.
 //! - It stops when no triangle is open (certified), or when the evaluations of
-//!   upper bounds reach a budget: then the interval reached is returned with
+//!   upper bounds reach a budget, or a round would create more triangles than
+//!   the memory bound allows: then the interval reached is returned with
 //!   `certified` false (never an endless loop on adversarial input).
 //!
 //! Exactness. Distances are computed in double precision with the exact
@@ -61,6 +62,10 @@ struct HausdorffOptions
     //! Budget of upper-bound evaluations (triangles of A bounded); 0 means
     //! the default, 2,000,000 + 20 x #faces of A.
     std::size_t max_evaluations = 0;
+    //! The most triangles one round may create (4 per open triangle); each
+    //! holds about 130 bytes, so the default bounds the search's memory near
+    //! 1 GB. A round that would create more ends the search like the budget.
+    std::size_t max_round_triangles = std::size_t(1) << 23;
 };
 
 //! \throw InvalidArgumentError unless both tolerances are finite and >= 0
@@ -88,7 +93,7 @@ struct CertifiedHausdorff
     std::size_t bound_evaluations = 0;  //!< upper bounds of triangles evaluated
     std::size_t point_evaluations = 0;  //!< exact point distances evaluated (vertices and new corners)
     int rounds = 0;                     //!< subdivision rounds run
-    bool budget_exhausted = false;      //!< the search stopped at max_evaluations
+    bool budget_exhausted = false;      //!< the search stopped at max_evaluations or max_round_triangles
 };
 
 //! A seed of the lower bound: a point of A with its exact distance to B (the
