@@ -498,10 +498,9 @@ py::dict py_compare(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V
                     bool face_samples, const std::string& hausdorff, double hausdorff_tolerance,
                     const std::optional<double>& hausdorff_abs_tolerance, int threads)
 {
-    const CompareOptions options = compare_options(levels, radii, global_level, curvature, weighting, k, roughness,
-                                                   distance, samples, density, face_sampling, seed, vertex_samples,
-                                                   edge_samples, face_samples, hausdorff, hausdorff_tolerance,
-                                                   hausdorff_abs_tolerance);
+    const CompareOptions options = compare_options(
+        levels, radii, global_level, curvature, weighting, k, roughness, distance, samples, density, face_sampling,
+        seed, vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance);
     const LoadedMesh a = mesh_from(V1, F1, "V1", "F1");
     const LoadedMesh b = mesh_from(V2, F2, "V2", "F2");
     return run_compare(a, b, options, threads);
@@ -515,10 +514,9 @@ py::dict py_compare_files(const py::object& original, const py::object& processe
                           bool face_samples, const std::string& hausdorff, double hausdorff_tolerance,
                           const std::optional<double>& hausdorff_abs_tolerance, int threads)
 {
-    const CompareOptions options = compare_options(levels, radii, global_level, curvature, weighting, k, roughness,
-                                                   distance, samples, density, face_sampling, seed, vertex_samples,
-                                                   edge_samples, face_samples, hausdorff, hausdorff_tolerance,
-                                                   hausdorff_abs_tolerance);
+    const CompareOptions options = compare_options(
+        levels, radii, global_level, curvature, weighting, k, roughness, distance, samples, density, face_sampling,
+        seed, vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance);
     const std::string pa = path_from(original, "original"), pb = path_from(processed, "processed");
     LoadedMesh a, b;
     {

@@ -115,11 +115,11 @@ struct ClosestPointIndex::Impl
 {
     std::vector<Tri> tris;  // in leaf order
     std::vector<Node> nodes;
-    std::vector<std::uint32_t> parent_of;  // per node (root: 0)
-    std::vector<std::uint32_t> leaf_of;    // per triangle position: its leaf
+    std::vector<std::uint32_t> parent_of;    // per node (root: 0)
+    std::vector<std::uint32_t> leaf_of;      // per triangle position: its leaf
     std::vector<std::uint32_t> position_of;  // per face: its position in tris
-    std::vector<Obb> obbs;                 // oriented boxes of the nodes with kHasObb
-    std::vector<std::uint32_t> obb_slot;   // per node: its index in obbs (read only with kHasObb)
+    std::vector<Obb> obbs;                   // oriented boxes of the nodes with kHasObb
+    std::vector<std::uint32_t> obb_slot;     // per node: its index in obbs (read only with kHasObb)
 
     void build(const Mesh& mesh);
     // A lower bound of the distance^2 from p to any triangle below node k: its
