@@ -2,6 +2,8 @@
 
 #include "meshdiff/error.h"
 
+#include "detail/morton.h"
+
 #ifndef MESHDIFF_BFS_WORDS
 #define MESHDIFF_BFS_WORDS 2
 #endif
@@ -38,35 +40,7 @@ std::vector<int> ring_distances(const Adjacency& adj, std::size_t source, int ma
 
 namespace {
 
-std::uint64_t spread_bits(std::uint64_t x)
-{
-    x &= 0x1fffff;
-    x = (x | x << 32) & 0x1f00000000ffffULL;
-    x = (x | x << 16) & 0x1f0000ff0000ffULL;
-    x = (x | x << 8) & 0x100f00f00f00f00fULL;
-    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
-    x = (x | x << 2) & 0x1249249249249249ULL;
-    return x;
-}
-
-// Vertices sorted along a Morton curve of their positions.
-std::vector<std::uint32_t> morton_order(const Mesh& mesh)
-{
-    const auto box = bounding_box(mesh);
-    const Vec3 ext = (box.max - box.min).cwiseMax(Vec3::Constant(1e-300));
-    const double cells = double((1u << 21) - 1);
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(mesh.n_vertices());
-    for (std::size_t i = 0; i < mesh.n_vertices(); ++i) {
-        const Vec3 q = (mesh.points[i] - box.min).cwiseQuotient(ext) * cells;
-        keys[i] = {spread_bits(std::uint64_t(q.x())) | spread_bits(std::uint64_t(q.y())) << 1 |
-                       spread_bits(std::uint64_t(q.z())) << 2,
-                   std::uint32_t(i)};
-    }
-    std::sort(keys.begin(), keys.end());
-    std::vector<std::uint32_t> order(keys.size());
-    for (std::size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].second;
-    return order;
-}
+using detail::morton_order;
 
 // Centres grouped into compact patches of the mesh graph: seeds are taken in
 // Morton order, and each patch grows by breadth-first search over vertices
