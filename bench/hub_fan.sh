@@ -23,19 +23,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 for n in $sizes; do
-    python3 - "$n" "$tmp/fan$n.ply" <<'PY'
-import math, struct, sys
-n, out = int(sys.argv[1]), sys.argv[2]
-with open(out, "wb") as f:
-    f.write(b"ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
-            b"property float z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n" % (n + 1, n))
-    f.write(struct.pack("<3f", 0.0, 0.0, 0.1))
-    for i in range(n):
-        a = 2 * math.pi * i / n
-        f.write(struct.pack("<3f", math.cos(a), math.sin(a), 0.01 * math.sin(7 * a)))
-    for i in range(n):
-        f.write(struct.pack("<B3i", 3, 0, 1 + i, 1 + (i + 1) % n))
-PY
+    python3 "$here/../tests/make_fan.py" "$n" "$tmp/fan$n.ply"
 done
 
 # Cells: "label|binary|args"; each run appends its time to $tmp/<cell index>.

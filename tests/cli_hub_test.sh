@@ -20,22 +20,9 @@ rm -f "$tmp"/*.ply "$tmp"/*.json
 
 . "$(dirname "$0")/cli_lib.sh"
 
-# fan N FILE: binary PLY, centre (0, 0, 0.1), N rim vertices on the unit circle
-# with z = 0.01 sin(7a), faces (0, i, i + 1 mod N).
+# fan N FILE: a fan of N triangles around one vertex (tests/make_fan.py).
 fan() {
-    python3 - "$1" "$2" <<'PY'
-import math, struct, sys
-n, out = int(sys.argv[1]), sys.argv[2]
-with open(out, "wb") as f:
-    f.write(b"ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
-            b"property float z\nelement face %d\nproperty list uchar int vertex_indices\nend_header\n" % (n + 1, n))
-    f.write(struct.pack("<3f", 0.0, 0.0, 0.1))
-    for i in range(n):
-        a = 2 * math.pi * i / n
-        f.write(struct.pack("<3f", math.cos(a), math.sin(a), 0.01 * math.sin(7 * a)))
-    for i in range(n):
-        f.write(struct.pack("<B3i", 3, 0, 1 + i, 1 + (i + 1) % n))
-PY
+    python3 "$(dirname "$0")/make_fan.py" "$1" "$2"
 }
 
 # within SECONDS ARGS...: like expect 0, under `timeout`.

@@ -156,37 +156,35 @@ nlohmann::json roughness_distance_json(const RoughnessDistance& d)
     nlohmann::json j;
     j["k"] = d.k;
     j["formula"] = "d = ln(|s' - s| / s + k) - ln(k); relative_change = (s' - s) / s";
-    nlohmann::json levels = nlohmann::json::array(), dist = nlohmann::json::array(), rel = nlohmann::json::array();
-    nlohmann::json undefined = nlohmann::json::array();
-    for (const auto& l : d.levels) {
-        levels.push_back(l.level);
-        dist.push_back(l.distance);
-        rel.push_back(l.relative_change_defined ? nlohmann::json(l.relative_change) : nlohmann::json(nullptr));
-        if (l.reference_zero) undefined.push_back(l.level);
-    }
-    j["levels"] = levels;
-    j["distance"] = dist;
-    j["relative_change"] = rel;
-    j["reference_zero_levels"] = undefined;
+    // The arrays of one kind of level (rings or radii): the keys, d, the
+    // relative change (null where undefined) and the keys where sigma = 0.
+    auto arrays = [&](const auto& list, auto key, const char* keys, const char* distance, const char* change,
+                      const char* zero) {
+        nlohmann::json k = nlohmann::json::array(), dist = nlohmann::json::array(), rel = nlohmann::json::array();
+        nlohmann::json undefined = nlohmann::json::array();
+        for (const auto& l : list) {
+            k.push_back(key(l));
+            dist.push_back(l.distance);
+            rel.push_back(l.relative_change_defined ? nlohmann::json(l.relative_change) : nlohmann::json(nullptr));
+            if (l.reference_zero) undefined.push_back(key(l));
+        }
+        j[keys] = k;
+        j[distance] = dist;
+        j[change] = rel;
+        j[zero] = undefined;
+    };
+    arrays(
+        d.levels, [](const auto& l) { return l.level; }, "levels", "distance", "relative_change",
+        "reference_zero_levels");
     if (d.has_global)
         j["global"] = {{"distance", d.global.distance},
                        {"relative_change", d.global.relative_change_defined ? nlohmann::json(d.global.relative_change)
                                                                             : nlohmann::json(nullptr)},
                        {"reference_zero", d.global.reference_zero}};
-    if (!d.radii.empty()) {
-        nlohmann::json radii = nlohmann::json::array(), dist_r = nlohmann::json::array(),
-                       rel_r = nlohmann::json::array(), zero_r = nlohmann::json::array();
-        for (const auto& l : d.radii) {
-            radii.push_back(l.radius);
-            dist_r.push_back(l.distance);
-            rel_r.push_back(l.relative_change_defined ? nlohmann::json(l.relative_change) : nlohmann::json(nullptr));
-            if (l.reference_zero) zero_r.push_back(l.radius);
-        }
-        j["radii"] = radii;
-        j["distance_radii"] = dist_r;
-        j["relative_change_radii"] = rel_r;
-        j["reference_zero_radii"] = zero_r;
-    }
+    if (!d.radii.empty())
+        arrays(
+            d.radii, [](const auto& l) { return l.radius; }, "radii", "distance_radii", "relative_change_radii",
+            "reference_zero_radii");
     return j;
 }
 
