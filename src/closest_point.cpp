@@ -523,13 +523,18 @@ std::vector<ClosestPoint> ClosestPointIndex::closest_points(const std::vector<Ve
 std::vector<double> ClosestPointIndex::distances(const std::vector<Vec3>& queries) const
 {
     std::vector<double> out(queries.size());
+    distances(queries.data(), queries.size(), out.data());
+    return out;
+}
+
+void ClosestPointIndex::distances(const Vec3* queries, std::size_t n, double* out) const
+{
     const Impl& impl = *impl_;
-    for_blocks(queries.size(), [&](std::size_t i, std::uint32_t hint) {
+    for_blocks(n, [&](std::size_t i, std::uint32_t hint) {
         std::uint32_t hit = kNoFace;
         out[i] = impl.query(queries[i], hint, &hit).distance;
         return hit;
     });
-    return out;
 }
 
 double ClosestPointIndex::hull_distance_bound(const std::array<Vec3, 3>& corners, double good_enough,

@@ -3,6 +3,9 @@
 #include "meshdiff/error.h"
 #include "meshdiff/point_triangle.h"
 
+#include "detail/hausdorff.h"
+#include "detail/point_triangle.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -10,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 namespace meshdiff {
@@ -49,27 +53,52 @@ struct Candidate
     std::uint32_t closest_face = 0;
 };
 
-double max_corner_distance(const std::array<Vec3, 3>& c, const Mesh& b, std::uint32_t t, double stop)
+// B's triangles, copied once for the bounds (closest_point_on_triangle()'s
+// primitives, with the thin-triangle test done once per triangle).
+struct Triangle
 {
-    const Face& f = b.faces[t];
-    const Vec3& p0 = b.points[std::size_t(f[0])];
-    const Vec3& p1 = b.points[std::size_t(f[1])];
-    const Vec3& p2 = b.points[std::size_t(f[2])];
-    double v = 0.0;
-    for (const Vec3& q : c) {
-        v = std::max(v, closest_point_on_triangle(q, p0, p1, p2).distance);
-        if (v >= stop) break;
+    Vec3 p0, p1, p2;
+    bool thin;
+};
+using Triangles = std::vector<Triangle>;
+
+Triangles triangles_of(const Mesh& m)
+{
+    Triangles t(m.n_faces());
+    for (std::size_t f = 0; f < m.n_faces(); ++f) {
+        const Face& v = m.faces[f];
+        t[f] = {m.points[std::size_t(v[0])], m.points[std::size_t(v[1])], m.points[std::size_t(v[2])], false};
+        t[f].thin = detail::is_thin_triangle(t[f].p0, t[f].p1, t[f].p2);
     }
-    return v;
+    return t;
 }
 
-// Distance from p to face t of b.
-double face_distance(const Vec3& p, const Mesh& b, std::uint32_t t)
+// Squared distance from p to triangle t: bitwise the square of
+// closest_point_on_triangle()'s distance before its square root.
+double squared_distance(const Vec3& p, const Triangle& t)
 {
-    const Face& f = b.faces[t];
-    return closest_point_on_triangle(p, b.points[std::size_t(f[0])], b.points[std::size_t(f[1])],
-                                     b.points[std::size_t(f[2])])
-        .distance;
+    const Vec3 q =
+        t.thin ? detail::thin_triangle_point(p, t.p0, t.p1, t.p2) : detail::triangle_point(p, t.p0, t.p1, t.p2);
+    return (p - q).squaredNorm();
+}
+
+// Distance from p to face t of B (closest_point_on_triangle()'s value).
+double face_distance(const Vec3& p, const Triangles& b, std::uint32_t t)
+{
+    return std::sqrt(squared_distance(p, b[t]));
+}
+
+// The largest distance from the corners c to face t of B, or +inf as soon as
+// it reaches stop (then only "not below stop" is known).
+double max_corner_distance(const std::array<Vec3, 3>& c, const Triangles& b, std::uint32_t t, double stop)
+{
+    const double stop2 = stop * stop;
+    double v = 0.0;
+    for (const Vec3& q : c) {
+        v = std::max(v, squared_distance(q, b[t]));
+        if (v >= stop2) return kInf;
+    }
+    return std::sqrt(v);
 }
 
 // The largest distance from a point of triangle c to its nearest corner: the
@@ -91,6 +120,86 @@ double covering_radius(const Cell& c)
         r = std::max(r, 0.5 * longest);
     }
     return r * (1.0 + 1e-12);
+}
+
+// For each face of \p m, a face across each of its three edges (kNone on a
+// boundary edge or a collapsed one; around a non-manifold edge the faces are
+// linked in a cycle, so every one is reachable): the graph of the descents.
+std::vector<std::array<std::uint32_t, 3>> edge_neighbours(const Mesh& m)
+{
+    struct HalfEdge
+    {
+        std::int32_t lo, hi;
+        std::uint32_t face;
+        std::uint32_t k;
+    };
+    std::vector<HalfEdge> e;
+    e.reserve(3 * m.n_faces());
+    for (std::size_t f = 0; f < m.n_faces(); ++f)
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            const std::int32_t v0 = m.faces[f][k], v1 = m.faces[f][(k + 1) % 3];
+            if (v0 != v1) e.push_back({std::min(v0, v1), std::max(v0, v1), std::uint32_t(f), k});
+        }
+    std::sort(e.begin(), e.end(), [](const HalfEdge& x, const HalfEdge& y) {
+        return std::tie(x.lo, x.hi, x.face, x.k) < std::tie(y.lo, y.hi, y.face, y.k);
+    });
+    std::vector<std::array<std::uint32_t, 3>> nbr(m.n_faces(), {kNone, kNone, kNone});
+    for (std::size_t i = 0; i < e.size();) {
+        std::size_t j = i + 1;
+        while (j < e.size() && e[j].lo == e[i].lo && e[j].hi == e[i].hi) ++j;
+        if (j - i >= 2)
+            for (std::size_t q = i; q < j; ++q) nbr[e[q].face][e[q].k] = e[q + 1 < j ? q + 1 : i].face;
+        i = j;
+    }
+    return nbr;
+}
+
+// Local descents over B's faces, each keeping the exact value of a face it
+// holds (so any result is a valid upper bound). At most kMaxSteps moves.
+constexpr int kMaxSteps = 16;
+using Neighbours = std::vector<std::array<std::uint32_t, 3>>;
+
+// Face \p t of B is at distance \p d from \p p; moves to a neighbour closer to
+// p while there is one, until d <= goal.
+void descend_point(const Vec3& p, const Triangles& b, const Neighbours& nbr, std::uint32_t& t, double& d, double goal)
+{
+    for (int step = 0; step < kMaxSteps && d > goal; ++step) {
+        std::uint32_t next = t;
+        for (const std::uint32_t n : nbr[t]) {
+            if (n == kNone) continue;
+            const double dn = face_distance(p, b, n);
+            if (dn < d) {
+                d = dn;
+                next = n;
+            }
+        }
+        if (next == t) break;
+        t = next;
+    }
+}
+
+// The same for the largest distance from the corners \p c to a face (\p u for
+// face \p t): descends while a neighbour has a smaller one, until u <= goal.
+// True if it stopped at a local minimum (a face with neighbours, none better).
+bool descend_hull(const std::array<Vec3, 3>& c, const Triangles& b, const Neighbours& nbr, std::uint32_t& t, double& u,
+                  double goal)
+{
+    for (int step = 0; step < kMaxSteps && u > goal; ++step) {
+        std::uint32_t next = t;
+        bool any = false;
+        for (const std::uint32_t n : nbr[t]) {
+            if (n == kNone) continue;
+            any = true;
+            const double v = max_corner_distance(c, b, n, u);
+            if (v < u) {
+                u = v;
+                next = n;
+            }
+        }
+        if (next == t) return any;
+        t = next;
+    }
+    return false;
 }
 
 double largest_coordinate(const Mesh& m)
@@ -117,8 +226,10 @@ void validate(const HausdorffOptions& o)
         throw InvalidArgumentError("HausdorffOptions: relative_tolerance and absolute_tolerance are both 0");
 }
 
-CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
-                                       const HausdorffOptions& options, const std::optional<HausdorffSeed>& seed)
+CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
+                                               const HausdorffOptions& options,
+                                               const std::optional<HausdorffSeed>& seed,
+                                               const std::vector<ClosestPoint>& vq)
 {
     validate(options);
     validate(a, "certified_hausdorff: mesh A");
@@ -126,6 +237,9 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
     if (b_index.n_faces() != b.n_faces())
         throw InvalidArgumentError(fmt::format("certified_hausdorff: the index holds {} faces but mesh B has {}",
                                                b_index.n_faces(), b.n_faces()));
+    if (vq.size() != a.n_vertices())
+        throw InvalidArgumentError(
+            fmt::format("certified_hausdorff: {} vertex closest points for {} vertices", vq.size(), a.n_vertices()));
     const double floor = kRoundingFloor * std::max(largest_coordinate(a), largest_coordinate(b));
     auto tolerance = [&](double lower) {
         return std::max({options.relative_tolerance * lower, options.absolute_tolerance, floor});
@@ -146,7 +260,6 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
     std::vector<std::uint32_t> first_face(a.n_vertices(), kNone);
     for (std::size_t f = a.n_faces(); f-- > 0;)
         for (auto v : a.faces[f]) first_face[std::size_t(v)] = std::uint32_t(f);
-    const std::vector<ClosestPoint> vq = b_index.closest_points(a.points);
     for (std::size_t v = 0; v < a.n_vertices(); ++v) {
         if (first_face[v] == kNone) continue;
         ++r.point_evaluations;
@@ -182,6 +295,8 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
                          (c.corner[2] - c.corner[0]).norm()});
     };
 
+    const Neighbours nbr = edge_neighbours(b);
+    const Triangles tris = triangles_of(b);
     double upper_done = 0.0;  // the largest bound of the closed triangles
     // Bounds every cell; keeps those above lower + tolerance in `cells`.
     auto bound_and_prune = [&](std::vector<Cell>& list) {
@@ -199,20 +314,33 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
                 continue;
             }
             std::array<std::uint32_t, 4> tried{c.closest[0], c.closest[1], c.closest[2], c.hint};
+            std::uint32_t best_face = kNone;
+            double best_face_u = kInf;
             for (std::size_t k = 0; k < 4; ++k) {
                 const std::uint32_t t = tried[k];
                 if (t == kNone ||
                     std::find(tried.begin(), tried.begin() + std::ptrdiff_t(k), t) != tried.begin() + std::ptrdiff_t(k))
                     continue;
-                u = std::min(u, max_corner_distance(c.corner, b, t, u));
+                const double v = max_corner_distance(c.corner, tris, t, best_face_u);
+                if (v < best_face_u) {
+                    best_face_u = v;
+                    best_face = t;
+                }
             }
-            // A search is worth it only if one triangle of B can be near all
-            // the corners: not when the cell is much wider than the triangles
-            // near them (a cost heuristic: skipping only means splitting).
+            bool settled = false;
             double local = 0.0;
             for (const std::uint32_t t : tried)
                 if (t != kNone) local = std::max(local, diameter_b[t]);
-            if (u > threshold && (c.depth >= kMaxDepth || diam <= 2.0 * threshold + 2.0 * local)) {
+            const bool coverable = c.depth >= kMaxDepth || diam <= 2.0 * threshold + 2.0 * local;
+            if (best_face != kNone && std::min(u, best_face_u) > threshold && coverable) {
+                settled = descend_hull(c.corner, tris, nbr, best_face, best_face_u, threshold);
+                c.hint = best_face;
+            }
+            u = std::min(u, best_face_u);
+            // A search is worth it only if one triangle of B can be near all
+            // the corners: not when the cell is much wider than the triangles
+            // near them (a cost heuristic: skipping only means splitting).
+            if (u > threshold && (c.depth >= kMaxDepth || (!settled && coverable))) {
                 std::uint32_t t = kNone;
                 const double v = b_index.hull_distance_bound(c.corner, threshold, &t);
                 if (v < u) {
@@ -264,15 +392,16 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
             for (std::size_t k = 0; k < 3; ++k) {
                 const std::size_t k1 = (k + 1) % 3;
                 m[k] = 0.5 * (c.corner[k] + c.corner[k1]);  // midpoint of edge k, k + 1
-                md[k] = face_distance(m[k], b, c.closest[k]);
+                md[k] = face_distance(m[k], tris, c.closest[k]);
                 mf[k] = c.closest[k];
                 if (c.closest[k1] != c.closest[k]) {
-                    const double other = face_distance(m[k], b, c.closest[k1]);
+                    const double other = face_distance(m[k], tris, c.closest[k1]);
                     if (other < md[k]) {
                         md[k] = other;
                         mf[k] = c.closest[k1];
                     }
                 }
+                if (md[k] > lower_now) descend_point(m[k], tris, nbr, mf[k], md[k], lower_now);
                 if (md[k] > lower_now) {
                     const ClosestPoint q = b_index.closest_point(m[k], mf[k]);
                     ++queried[i];
@@ -315,6 +444,18 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
     r.certified = !r.budget_exhausted && r.upper - r.lower <= r.tolerance;
     r.location = {best.point, best.face, best.closest, best.closest_face};
     return r;
+}
+
+CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
+                                       const HausdorffOptions& options, const std::optional<HausdorffSeed>& seed)
+{
+    validate(options);
+    validate(a, "certified_hausdorff: mesh A");
+    validate(b, "certified_hausdorff: mesh B");
+    if (b_index.n_faces() != b.n_faces())
+        throw InvalidArgumentError(fmt::format("certified_hausdorff: the index holds {} faces but mesh B has {}",
+                                               b_index.n_faces(), b.n_faces()));
+    return detail::certified_hausdorff(a, b, b_index, options, seed, b_index.closest_points(a.points));
 }
 
 CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const HausdorffOptions& options)

@@ -2,6 +2,8 @@
 
 #include "meshdiff/error.h"
 
+#include "detail/hausdorff.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -97,13 +99,24 @@ DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<do
 namespace {
 
 // The samples of \p from and their distances to \p to.
-SampledDirection sampled_direction(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options)
+// With \p vertex_closest (the closest points of all vertices of \p from), the
+// vertex samples take their distances from it instead of new queries (the
+// same values: the queries are exact).
+SampledDirection sampled_direction(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options,
+                                   const std::vector<ClosestPoint>* vertex_closest = nullptr)
 {
     SampledDirection d;
     d.samples = sample_surface(from, options);
     if (d.samples.size() == 0)
         throw InvalidArgumentError("SamplingOptions: the enabled sample kinds give no sample on this mesh");
-    d.distances = to.distances(d.samples.points);
+    if (!vertex_closest) {
+        d.distances = to.distances(d.samples.points);
+        return d;
+    }
+    const std::size_t nv = d.samples.n_vertex;  // the vertex samples come first
+    d.distances.resize(d.samples.size());
+    for (std::size_t i = 0; i < nv; ++i) d.distances[i] = (*vertex_closest)[d.samples.element[i]].distance;
+    to.distances(d.samples.points.data() + nv, d.samples.size() - nv, d.distances.data() + nv);
     return d;
 }
 
@@ -140,20 +153,33 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
     SurfaceDistance r;
     {
         const ClosestPointIndex index_b(b);
-        SampledDirection d = sampled_direction(a, index_b, opt);
+        std::vector<ClosestPoint> vq;  // A's vertices: samples and certification
+        if (certify) vq = index_b.closest_points(a.points);
+        SampledDirection d = sampled_direction(a, index_b, opt, certify ? &vq : nullptr);
         r.forward = distance_stats(d.samples, d.distances);
         if (forward) *forward = std::move(d);
         d = SampledDirection{};  // free the samples before the certification
-        if (certify) r.forward_hausdorff = certified_hausdorff(a, b, index_b, *certify, seed_of(a, r.forward));
+        if (certify)
+            r.forward_hausdorff = detail::certified_hausdorff(a, b, index_b, *certify, seed_of(a, r.forward), vq);
     }
     {
         const ClosestPointIndex index_a(a);
-        SampledDirection d = sampled_direction(b, index_a, opt);
+        std::vector<ClosestPoint> vq;
+        if (certify) vq = index_a.closest_points(b.points);
+        SampledDirection d = sampled_direction(b, index_a, opt, certify ? &vq : nullptr);
         r.backward = distance_stats(d.samples, d.distances);
         if (backward) *backward = std::move(d);
         d = SampledDirection{};
-        if (b_vertex_distances) r.b_vertex_distance = vertex_distances(b, index_a);
-        if (certify) r.backward_hausdorff = certified_hausdorff(b, a, index_a, *certify, seed_of(b, r.backward));
+        if (b_vertex_distances) {
+            if (certify) {
+                r.b_vertex_distance.resize(vq.size());
+                for (std::size_t v = 0; v < vq.size(); ++v) r.b_vertex_distance[v] = vq[v].distance;
+            } else {
+                r.b_vertex_distance = vertex_distances(b, index_a);
+            }
+        }
+        if (certify)
+            r.backward_hausdorff = detail::certified_hausdorff(b, a, index_a, *certify, seed_of(b, r.backward), vq);
     }
     r.hausdorff = std::max(r.forward.max, r.backward.max);
     r.diagonal = bounding_box(a).diagonal();

@@ -202,3 +202,16 @@ TEST(ClosestPoint, IndexEqualsBruteForceExactlyOnAFan)
         ASSERT_EQ(batch[k], closest_point_brute_force(m, queries[k]).distance) << k;
     EXPECT_EQ(index.closest_point(m.points[0]).face, 0u);  // the hub: every face at distance 0
 }
+
+TEST(ClosestPoint, DistancesOfARangeEqualTheWholeBatch)
+{
+    const Mesh m = icosphere(3).mesh;
+    const ClosestPointIndex index(m);
+    std::vector<Vec3> q;
+    for (int i = 0; i < 3000; ++i) q.push_back(Vec3(std::sin(i), std::cos(1.3 * i), std::sin(0.7 * i)) * 1.2);
+    const std::vector<double> all = index.distances(q);
+    std::vector<double> part(q.size() - 777, -1.0);
+    index.distances(q.data() + 777, part.size(), part.data());
+    for (std::size_t i = 0; i < part.size(); ++i) EXPECT_EQ(part[i], all[777 + i]) << i;
+    index.distances(q.data(), 0, nullptr);  // nothing to do
+}

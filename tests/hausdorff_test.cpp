@@ -380,3 +380,75 @@ TEST(Hausdorff, EveryBundledPairIsCertifiedAboveItsSampledMaximum)
         }
     }
 }
+
+TEST(Hausdorff, TriangleSoupAndSplitTargetsGiveTheSameInterval)
+{
+    // The search descends over B's edge-adjacent triangles; a soup (no shared
+    // vertex: no neighbours) and a mesh cut in two (a boundary across the
+    // surface) must fall back on the hierarchy search and give an interval
+    // that overlaps the connected mesh's, since each contains the true value
+    // (the three B's are the same surface).
+    const Mesh a = icosphere(2).mesh;
+    const Mesh b = icosphere(4).mesh;
+    Mesh soup, cut;
+    for (const Face& f : b.faces) add_triangle(soup, b.points[f[0]], b.points[f[1]], b.points[f[2]]);
+    cut.points = b.points;
+    for (const Face& f : b.faces) {
+        const bool upper = b.points[f[0]].z() + b.points[f[1]].z() + b.points[f[2]].z() > 0.0;
+        Face g = f;
+        if (upper)
+            for (auto& v : g) v += int(b.points.size());
+        cut.faces.push_back(g);
+    }
+    cut.points.insert(cut.points.end(), b.points.begin(), b.points.end());
+    const CertifiedHausdorff whole = certified_hausdorff(a, b, {});
+    expect_certified(whole);
+    for (const Mesh* m : {&soup, &cut}) {
+        const CertifiedHausdorff h = certified_hausdorff(a, *m, {});
+        expect_certified(h);
+        EXPECT_LE(std::max(h.lower, whole.lower), std::min(h.upper, whole.upper));
+        const CertifiedHausdorff back = certified_hausdorff(*m, a, {});
+        const CertifiedHausdorff whole_back = certified_hausdorff(b, a, {});
+        expect_certified(back);
+        EXPECT_LE(std::max(back.lower, whole_back.lower), std::min(back.upper, whole_back.upper));
+    }
+}
+
+TEST(Hausdorff, CertifyingKeepsTheSampledNumbersBitForBit)
+{
+    // surface_distance() reuses its vertex samples' queries for the
+    // certification and the vertex distances: every sampled number equals the
+    // one of a run without certification, and the interval equals that of
+    // certified_hausdorff() with the same seed.
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    const SurfaceDistance plain = surface_distance(a, b, {}, true);
+    const SurfaceDistance cert = surface_distance(a, b, {}, true, HausdorffOptions{});
+    for (const auto& [x, y] : {std::pair{&plain.forward, &cert.forward}, std::pair{&plain.backward, &cert.backward}}) {
+        EXPECT_EQ(x->min, y->min);
+        EXPECT_EQ(x->max, y->max);
+        EXPECT_EQ(x->mean, y->mean);
+        EXPECT_EQ(x->rms, y->rms);
+        EXPECT_EQ(x->p50, y->p50);
+        EXPECT_EQ(x->p99, y->p99);
+        EXPECT_EQ(x->max_element, y->max_element);
+    }
+    ASSERT_EQ(plain.b_vertex_distance.size(), b.n_vertices());
+    EXPECT_EQ(plain.b_vertex_distance, cert.b_vertex_distance);
+    ASSERT_TRUE(cert.forward_hausdorff);
+    const ClosestPointIndex index(b);
+    HausdorffSeed seed{cert.forward.max_point, 0, cert.forward.max};
+    if (cert.forward.max_kind == SampleKind::OnVertex) {
+        for (std::size_t f = 0; f < a.n_faces(); ++f)
+            if (std::find(a.faces[f].begin(), a.faces[f].end(), int(cert.forward.max_element)) != a.faces[f].end()) {
+                seed.face = std::uint32_t(f);
+                break;
+            }
+    } else {
+        seed.face = cert.forward.max_element;
+    }
+    const CertifiedHausdorff h = certified_hausdorff(a, b, index, {}, seed);
+    EXPECT_EQ(h.lower, cert.forward_hausdorff->lower);
+    EXPECT_EQ(h.upper, cert.forward_hausdorff->upper);
+    EXPECT_EQ(h.location.face, cert.forward_hausdorff->location.face);
+}

@@ -66,6 +66,9 @@ public:
     //! As closest_points(), distances only (less memory).
     std::vector<double> distances(const std::vector<Vec3>& queries) const;
 
+    //! The same for the \p n queries at \p queries, written to \p out[0, n).
+    void distances(const Vec3* queries, std::size_t n, double* out) const;
+
     //! An upper bound of the distance to the mesh of every point of the
     //! triangle (or segment, or point) spanned by \p corners: the smallest,
     //! over the indexed triangles t, of the largest distance from a corner to

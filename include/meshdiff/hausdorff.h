@@ -14,8 +14,12 @@
 //!   distance to t is convex over T, so its maximum over T is at a corner of T;
 //!   and d(p, B) <= d(p, t). So U(T) = min over t of max over corners c of
 //!   d(c, t) bounds d(p, B) on all of T. It is found first among the closest
-//!   triangles of T's corners, then by a search of B's bounding-volume
-//!   hierarchy (ClosestPointIndex::hull_distance_bound()). A second, cheaper
+//!   triangles of T's corners and the triangle that bounded T's parent, then
+//!   by a descent over B's edge-adjacent triangles (to a neighbour with a
+//!   smaller largest corner distance, while there is one), and only where the
+//!   descent ends without a local minimum (a boundary, a cap of 16 steps) or
+//!   at the depth limit by a search of B's bounding-volume hierarchy
+//!   (ClosestPointIndex::hull_distance_bound()). A second, cheaper
 //!   bound comes first: d(., B) is 1-Lipschitz and every point of T lies
 //!   within diam(T) / sqrt(3) of a corner, so U(T) <= max d(c, B) +
 //!   diam(T) / sqrt(3). A T too wide for any triangle of B to be near all
@@ -23,6 +27,10 @@
 //!   without a search.
 //! - Pruning: T is done when U(T) <= lower + tolerance; otherwise it is split
 //!   into four at its edge midpoints, whose distances raise the lower bound.
+//!   A midpoint is queried exactly only when its distance to a nearby
+//!   triangle of B (its edge's corners' closest triangles, then a descent over
+//!   their neighbours towards the midpoint) exceeds the lower bound: otherwise
+//!   it cannot raise it, and that distance serves as its upper bound.
 //!   The upper bound of the result is the largest U of the triangles that
 //!   were done, so the interval always contains the true value.
 //! - The search runs in rounds (all open triangles of a round in parallel,
