@@ -7,6 +7,8 @@ pkgs=(build-essential cmake pkg-config
       libopenmesh-dev libeigen3-dev libfmt-dev
       libgtest-dev nlohmann-json3-dev libcli11-dev
       clang-format python3
+      # GNU parallel: the cluster recipe of docs/cli.md (batch shards), tested by tests/cli_batch_cluster_test.sh.
+      parallel
       # The Python module (python/) and its tests, for Debian's /usr/bin/python3;
       # OpenMesh's command-line decimater for examples/evaluate_decimation.py.
       pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib libopenmesh-apps

@@ -7,13 +7,14 @@
 #   scripts/report-corpus.sh --compare /tmp/corpus-old /tmp/corpus-new
 #
 # --compare lists the files that differ (cmp), after replacing the version string "meshdiff X.Y.Z" and the
-# JSON "meshdiff_version" of each side by a placeholder, and exits 1 if any differs or is missing.
+# JSON "meshdiff_version" of each side by a placeholder (and the batch records' "elapsed_seconds"), and exits 1
+# if any differs or is missing.
 # About a minute on 2 cores.
 set -euo pipefail
 
 if [[ "${1:-}" == "--compare" ]]; then
     old=$2 new=$3 bad=0 n=0
-    norm() { sed -E 's/meshdiff [0-9]+\.[0-9]+\.[0-9]+/meshdiff VERSION/g; s/"meshdiff_version": ?"[^"]*"/"meshdiff_version":"VERSION"/g' "$1"; }
+    norm() { sed -E 's/meshdiff [0-9]+\.[0-9]+\.[0-9]+/meshdiff VERSION/g; s/"meshdiff_version": ?"[^"]*"/"meshdiff_version":"VERSION"/g; s/"elapsed_seconds": ?[0-9.e+-]+/"elapsed_seconds":T/g' "$1"; }
     while IFS= read -r f; do
         n=$((n + 1))
         if [[ ! -f "$new/$f" ]]; then

@@ -18,7 +18,8 @@ namespace {
 
 bool is_subcommand(const std::string& word)
 {
-    static const std::array<const char*, 6> names = {"profile", "compare", "batch", "generate", "smooth", "noise"};
+    static const std::array<const char*, 7> names = {"profile",  "compare", "batch", "batch-summary",
+                                                     "generate", "smooth",  "noise"};
     return std::any_of(names.begin(), names.end(), [&](const char* n) { return word == n; });
 }
 
@@ -54,6 +55,7 @@ int run(const std::vector<std::string>& raw_args)
     add_profile_command(app, action);
     add_compare_command(app, action);
     add_batch_command(app, action);
+    add_batch_summary_command(app, action);
     add_generate_command(app, action);
     add_smooth_command(app, action);
     add_noise_command(app, action);

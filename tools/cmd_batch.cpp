@@ -1,9 +1,11 @@
+#include "batch_list.h"
 #include "cli.h"
 #include "commands.h"
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
 #include "meshdiff/report/json.h"
+#include "meshdiff/version.h"
 #include "options.h"
 #include "subprocess.h"
 
@@ -15,6 +17,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -42,106 +46,6 @@ struct BatchArgs
 
 // The exit_code of a pair that ran out of time (as coreutils' timeout).
 constexpr int kPairTimeout = 124;
-
-struct Pair
-{
-    std::size_t line = 0;
-    std::string id, original, processed;
-};
-
-// Splits one CSV line; fields may be quoted with "" (a doubled quote inside
-// a quoted field is a literal quote).
-std::vector<std::string> split_csv(const std::string& line)
-{
-    std::vector<std::string> fields(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-        const char ch = line[i];
-        if (quoted) {
-            if (ch == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-                fields.back() += '"';
-                ++i;
-            } else if (ch == '"') {
-                quoted = false;
-            } else {
-                fields.back() += ch;
-            }
-        } else if (ch == '"') {
-            quoted = true;
-        } else if (ch == ',') {
-            fields.emplace_back();
-        } else if (ch != '\r') {
-            fields.back() += ch;
-        }
-    }
-    for (auto& f : fields) {
-        const auto b = f.find_first_not_of(" \t"), e = f.find_last_not_of(" \t");
-        f = b == std::string::npos ? "" : f.substr(b, e - b + 1);
-    }
-    return fields;
-}
-
-std::vector<Pair> read_pairs(const std::string& path)
-{
-    std::ifstream in(path);
-    if (!in) throw IoError(fmt::format("{}: cannot open the pair list", path));
-    const auto base = std::filesystem::path(path).parent_path();
-    auto resolve = [&](const std::string& p) {
-        const std::filesystem::path fp(p);
-        return fp.is_absolute() ? fp.string() : (base / fp).lexically_normal().string();
-    };
-    std::vector<Pair> pairs;
-    std::string line;
-    std::size_t lineno = 0;
-    std::map<std::string, std::size_t> id_line;
-    while (std::getline(in, line)) {
-        ++lineno;
-        // A UTF-8 byte-order mark (spreadsheet exports) is not part of the first field.
-        if (lineno == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
-        const auto fields = split_csv(line);
-        if (fields.size() == 1 && fields[0].empty()) continue;
-        if (!fields[0].empty() && fields[0][0] == '#') continue;
-        if (lineno == 1 && fields[0] == "original") continue;  // header
-        if (fields.size() < 2 || fields[0].empty() || fields[1].empty())
-            throw InvalidArgumentError(
-                fmt::format("{}:{}: expected 'original,processed[,id]', got '{}'", path, lineno, line));
-        Pair p;
-        p.line = lineno;
-        p.original = resolve(fields[0]);
-        p.processed = resolve(fields[1]);
-        p.id = fields.size() > 2 && !fields[2].empty() ? fields[2] : fields[0] + " -> " + fields[1];
-        // Resume finds pairs by id: two pairs with one id would be one pair.
-        const auto [it, fresh] = id_line.emplace(p.id, lineno);
-        if (!fresh)
-            throw InvalidArgumentError(
-                fmt::format("{}:{}: the id '{}' is already used on line {}", path, lineno, p.id, it->second));
-        pairs.push_back(std::move(p));
-    }
-    return pairs;
-}
-
-constexpr std::size_t kMaxShards = 1000000;
-
-std::pair<std::size_t, std::size_t> parse_shard(const std::string& s)
-{
-    const auto slash = s.find('/');
-    std::size_t i = 0, n = 0;
-    try {
-        if (slash == std::string::npos) throw std::invalid_argument("no slash");
-        // Digits only: stoul would take "-1" as the largest unsigned number.
-        if (s.find_first_not_of("0123456789/") != std::string::npos) throw std::invalid_argument("sign");
-        std::size_t used = 0;
-        i = std::stoul(s.substr(0, slash), &used);
-        if (used != slash) throw std::invalid_argument("index");
-        n = std::stoul(s.substr(slash + 1), &used);
-        if (used != s.size() - slash - 1) throw std::invalid_argument("count");
-    } catch (const std::exception&) {
-        throw InvalidArgumentError(fmt::format("--shard: '{}' is not I/N (0 <= I < N)", s));
-    }
-    if (n == 0 || i >= n || n > kMaxShards)
-        throw InvalidArgumentError(fmt::format("--shard: '{}' needs 0 <= I < N <= {}", s, kMaxShards));
-    return {i, n};
-}
 
 // The command line of one pair's child process: `meshdiff compare ORIGINAL
 // PROCESSED --json -` with the batch's comparison options as they were given.
@@ -258,7 +162,11 @@ int run_batch(const BatchArgs& a)
         }
         int code = kOk;
         std::string error;
-        const nlohmann::json line = compare_pair(a, self, p, code, error);
+        const auto t0 = std::chrono::steady_clock::now();
+        nlohmann::json line = compare_pair(a, self, p, code, error);
+        line["elapsed_seconds"] =
+            std::round(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1000.0) / 1000.0;
+        line["meshdiff_version"] = MESHDIFF_VERSION;
         (code == kOk ? ok : failed) += 1;
         // One write of the whole record with its newline: a kill leaves a whole line or a torn last one.
         const std::string text = line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
@@ -287,7 +195,9 @@ void add_batch_command(CLI::App& app, Action& action)
         ->required();
     sub->add_option("--out", args->out, "JSON-lines output, appended to; pairs already recorded as ok are skipped")
         ->required();
-    sub->add_option("--shard", args->shard, "I/N: process only pairs whose 0-based index k has k % N == I")
+    sub->add_option("--shard", args->shard,
+                    "I/N: process only pairs whose 0-based index k has k % N == I; 'auto' takes I and N from a Slurm "
+                    "job array, 'auto/N' takes I from Slurm or GNU parallel ($PARALLEL_SEQ - 1)")
         ->capture_default_str();
     add_compare_options(sub, args->compare);
     sub->add_option("--threads", args->threads, "worker threads per comparison (0: all cores)");
