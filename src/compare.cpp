@@ -31,7 +31,8 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
     }
     if (options.distance) {
         c.distance = surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff,
-                                      options.summary);
+                                      options.summary, options.keep_samples ? &c.forward_samples : nullptr,
+                                      options.keep_samples ? &c.backward_samples : nullptr);
         c.processed_vertex_distance = std::move(c.distance->b_vertex_distance);
         c.distance->b_vertex_distance.clear();
     } else if (options.vertex_distances) {

@@ -323,9 +323,10 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
 }
 
 SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
-                                 const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary)
+                                 const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
+                                 SampledDirection* forward_samples, SampledDirection* backward_samples)
 {
-    return both_directions(a, b, options, b_vertex_distances, nullptr, nullptr, certify, summary);
+    return both_directions(a, b, options, b_vertex_distances, forward_samples, backward_samples, certify, summary);
 }
 
 SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options,

@@ -244,4 +244,25 @@ expect 0 "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-roughness --no
     grep -q "Summary metrics unavailable: no face sample" "$tmp/stdout" && pass || fail "no reason for the missing summary"
 json_check "$tmp/nof.json" 'j["surface_distance"]["chamfer"] is None and j["surface_distance"]["psnr"] is None and j["surface_distance"]["fscore"] is None and j["surface_distance"]["forward"]["area_weighted"] is None and "no face sample" in j["surface_distance"]["summary_unavailable"] and finite(j)'
 
+# --- --samples-out: both directions' samples as a binary PLY point cloud (numpy and brute force: python/tests/test_samples_out.py)
+expect 0 "$tmp/fan.ply" "$tmp/pyr.ply" --no-roughness -n 4000 --samples-out "$tmp/samples.ply" --json "$tmp/so.json"
+python3 - "$tmp/samples.ply" "$tmp/so.json" <<'PY' && pass || fail "--samples-out file does not match the report"
+import json, struct, sys
+data = open(sys.argv[1], "rb").read()
+end = data.index(b"end_header\n") + len(b"end_header\n")
+header = data[:end].decode().splitlines()
+j = json.load(open(sys.argv[2]))["surface_distance"]
+n = j["forward"]["samples"] + j["backward"]["samples"]
+assert header[1] == "format binary_little_endian 1.0" and "element vertex %d" % n in header
+assert len(data) - end == 38 * n
+recs = [struct.unpack_from("<4dBBi", data, end + 38 * i) for i in range(n)]
+for direction, side in ((0, "forward"), (1, "backward")):
+    d = [r for r in recs if r[5] == direction]
+    assert len(d) == j[side]["samples"] and max(r[3] for r in d) == j[side]["max"]
+    assert [sum(r[4] == k for r in d) for k in range(3)] == [j[side]["samples_by_kind"][k] for k in ("vertex", "edge", "face")]
+PY
+expect 2 "$tmp/fan.ply" "$tmp/pyr.ply" --no-distance --samples-out "$tmp/x.ply" &&
+    grep -q -- "--samples-out" "$tmp/stderr" && [ ! -e "$tmp/x.ply" ] && pass || fail "--samples-out with --no-distance"
+expect 2 "$tmp/fan.ply" "$tmp/pyr.ply" --no-roughness --samples-out "$tmp/fan.ply"
+
 finish

@@ -39,6 +39,10 @@ struct CompareOptions
     //! F-score thresholds and histogram bins of the surface distance (the
     //! area-weighted means, Chamfer and PSNR are always computed).
     SummaryOptions summary{};
+    //! Keep the samples of both directions and their distances
+    //! (Comparison::forward_samples, backward_samples; about 40 bytes per
+    //! sample and direction), e.g. for sample_cloud.h.
+    bool keep_samples = false;
 };
 
 struct Comparison
@@ -57,6 +61,10 @@ struct Comparison
     //! connectivity (same_connectivity.h); else std::nullopt and the reason.
     std::optional<SameConnectivity> same_connectivity;
     std::string same_connectivity_unavailable;
+    //! With CompareOptions::keep_samples: the samples of the original
+    //! (forward) and of the processed mesh (backward) and their distances.
+    SampledDirection forward_samples;
+    SampledDirection backward_samples;
 };
 
 //! Runs the halves asked for in \p options.

@@ -222,6 +222,14 @@ std::vector<FScore> fscores(const std::vector<double>& relative_thresholds, doub
 //! \throw InvalidArgumentError if the sizes differ or there are no samples.
 DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<double>& distances);
 
+//! One direction of a surface distance with everything kept: the samples of
+//! the source surface and the exact distance of each to the other surface.
+struct SampledDirection
+{
+    SurfaceSamples samples;         //!< the samples (points, kinds, source elements), in sample order
+    std::vector<double> distances;  //!< exact distance of each sample to the other surface, same order
+};
+
 //! One direction: samples \p from with \p options (an unset target means
 //! 10 x #faces of \p from) and returns the statistics of the exact distances
 //! to \p to.
@@ -238,19 +246,14 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
 //! \throw InvalidArgumentError for invalid options or if they give no sample.
 //! \throw InvalidMeshError if a mesh is invalid (meshdiff::validate()).
 //! The area-weighted statistics, the summary metrics and, when asked for in
-//! \p summary, the histograms are filled too (sums over the samples).
+//! \p summary, the histograms are filled too (sums over the samples). With
+//! \p forward_samples (\p backward_samples), the samples of that direction and
+//! their distances are kept there (as surface_distance_samples() keeps them).
 SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options = {},
                                  bool b_vertex_distances = false,
                                  const std::optional<HausdorffOptions>& certify = std::nullopt,
-                                 const SummaryOptions& summary = {});
-
-//! One direction of a surface distance with everything kept: the samples of
-//! the source surface and the exact distance of each to the other surface.
-struct SampledDirection
-{
-    SurfaceSamples samples;         //!< the samples (points, kinds, source elements), in sample order
-    std::vector<double> distances;  //!< exact distance of each sample to the other surface, same order
-};
+                                 const SummaryOptions& summary = {}, SampledDirection* forward_samples = nullptr,
+                                 SampledDirection* backward_samples = nullptr);
 
 //! Result of surface_distance_samples(): the statistics, bit for bit those of
 //! surface_distance() with the same arguments, and the samples behind them

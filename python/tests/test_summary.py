@@ -57,3 +57,32 @@ def test_bad_summary_options_raise(kwargs):
     V, F = pyramid(0.5)
     with pytest.raises(ValueError):
         meshdiff.compare(V, F, V, F, roughness=False, **kwargs)
+
+
+def test_plot_histogram_draws_both_directions(cli, tmp_path):
+    pytest.importorskip("matplotlib")
+    import pathlib
+    import subprocess
+    import sys
+
+    repo = pathlib.Path(__file__).resolve().parents[2]
+    for name, h in (("fan", 0.0), ("pyr", 0.5)):
+        V, F = pyramid(h)
+        with open(tmp_path / f"{name}.ply", "w") as f:
+            f.write("ply\nformat ascii 1.0\nelement vertex 5\nproperty double x\nproperty double y\nproperty double z\n"
+                    "element face 4\nproperty list uchar int vertex_indices\nend_header\n")
+            f.writelines("%r %r %r\n" % tuple(v) for v in V)
+            f.writelines("3 %d %d %d\n" % tuple(t) for t in F)
+    report = tmp_path / "c.json"
+    subprocess.run([cli, str(tmp_path / "fan.ply"), str(tmp_path / "pyr.ply"), "--no-roughness", "-n", "20000",
+                    "--histogram", "12", "--json", str(report)], check=True)
+    out = tmp_path / "h.png"
+    subprocess.run([sys.executable, str(repo / "reference" / "plot_histogram.py"), str(out), str(report), "--relative"],
+                   check=True)
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    # Without --histogram the script says what is missing.
+    subprocess.run([cli, str(tmp_path / "fan.ply"), str(tmp_path / "pyr.ply"), "--no-roughness", "-n", "20000",
+                    "--json", str(report)], check=True)
+    r = subprocess.run([sys.executable, str(repo / "reference" / "plot_histogram.py"), str(out), str(report)],
+                       capture_output=True, text=True)
+    assert r.returncode != 0 and "--histogram" in r.stderr
