@@ -84,17 +84,33 @@ std::optional<AreaWeightedStats> area_weighted_stats(const Mesh& from, const Sur
         total.add(area[f]);
         if (per_face[f]) sampled.add(area[f]);
     }
+    // A run of consecutive samples on one face (sample_surface() puts each
+    // face's samples together) is summed plainly, then added with its weight.
     Sum sum, sum2;
     std::vector<Sum> below(thresholds.size());
-    for (std::size_t i = 0; i < samples.kind.size() && i < samples.element.size(); ++i) {
-        if (samples.kind[i] != SampleKind::OnFace || samples.element[i] >= per_face.size()) continue;
+    std::vector<std::size_t> run_below(thresholds.size());
+    const std::size_t n = std::min(samples.kind.size(), samples.element.size());
+    for (std::size_t i = 0; i < n;) {
+        if (samples.kind[i] != SampleKind::OnFace || samples.element[i] >= per_face.size()) {
+            ++i;
+            continue;
+        }
         const std::uint32_t f = samples.element[i];
+        double s1 = 0.0, s2 = 0.0;
+        std::fill(run_below.begin(), run_below.end(), 0);
+        std::size_t j = i;
+        for (; j < n && samples.kind[j] == SampleKind::OnFace && samples.element[j] == f; ++j) {
+            const double d = distances[j];
+            s1 += d;
+            s2 += d * d;
+            for (std::size_t k = 0; k < thresholds.size(); ++k) run_below[k] += d < thresholds[k];
+        }
         const double w = area[f] / double(per_face[f]);
-        const double d = distances[i];
-        sum.add(w * d);
-        sum2.add(w * d * d);
+        sum.add(w * s1);
+        sum2.add(w * s2);
         for (std::size_t k = 0; k < thresholds.size(); ++k)
-            if (d < thresholds[k]) below[k].add(w);
+            if (run_below[k]) below[k].add(w * double(run_below[k]));
+        i = j;
     }
     AreaWeightedStats s;
     s.n_face = n_face;
