@@ -454,9 +454,19 @@ CompareOptions compare_options(const py::object& levels, const py::object& radii
                                const std::optional<double>& density, const std::string& face_sampling,
                                std::uint64_t seed, bool vertex_samples, bool edge_samples, bool face_samples,
                                const std::string& hausdorff, double hausdorff_tolerance,
-                               const std::optional<double>& hausdorff_abs_tolerance)
+                               const std::optional<double>& hausdorff_abs_tolerance,
+                               const std::optional<std::vector<double>>& fscore, long long histogram)
 {
     CompareOptions c;
+    if (fscore) c.summary.fscore_thresholds = *fscore;
+    if (histogram < 0 || histogram > (long long)kMaxHistogramBins)
+        bad(fmt::format("histogram: {} is outside [0, {}]", histogram, kMaxHistogramBins));
+    c.summary.histogram_bins = std::size_t(histogram);
+    try {
+        validate(c.summary);
+    } catch (const InvalidArgumentError& e) {
+        bad(fmt::format("fscore: {}", e.what()));
+    }
     c.profile = profile_options(levels, global_level, curvature, weighting, false, radii_from(radii));
     if (!(k > 0.0) || !std::isfinite(k)) bad(fmt::format("k: {} must be finite and > 0", k));
     c.k = k;
@@ -496,11 +506,13 @@ py::dict py_compare(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V
                     const std::optional<long long>& samples, const std::optional<double>& density,
                     const std::string& face_sampling, std::uint64_t seed, bool vertex_samples, bool edge_samples,
                     bool face_samples, const std::string& hausdorff, double hausdorff_tolerance,
-                    const std::optional<double>& hausdorff_abs_tolerance, int threads)
+                    const std::optional<double>& hausdorff_abs_tolerance,
+                    const std::optional<std::vector<double>>& fscore, long long histogram, int threads)
 {
-    const CompareOptions options = compare_options(
-        levels, radii, global_level, curvature, weighting, k, roughness, distance, samples, density, face_sampling,
-        seed, vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance);
+    const CompareOptions options =
+        compare_options(levels, radii, global_level, curvature, weighting, k, roughness, distance, samples, density,
+                        face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance,
+                        hausdorff_abs_tolerance, fscore, histogram);
     const LoadedMesh a = mesh_from(V1, F1, "V1", "F1");
     const LoadedMesh b = mesh_from(V2, F2, "V2", "F2");
     return run_compare(a, b, options, threads);
@@ -512,11 +524,13 @@ py::dict py_compare_files(const py::object& original, const py::object& processe
                           const std::optional<long long>& samples, const std::optional<double>& density,
                           const std::string& face_sampling, std::uint64_t seed, bool vertex_samples, bool edge_samples,
                           bool face_samples, const std::string& hausdorff, double hausdorff_tolerance,
-                          const std::optional<double>& hausdorff_abs_tolerance, int threads)
+                          const std::optional<double>& hausdorff_abs_tolerance,
+                          const std::optional<std::vector<double>>& fscore, long long histogram, int threads)
 {
-    const CompareOptions options = compare_options(
-        levels, radii, global_level, curvature, weighting, k, roughness, distance, samples, density, face_sampling,
-        seed, vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance);
+    const CompareOptions options =
+        compare_options(levels, radii, global_level, curvature, weighting, k, roughness, distance, samples, density,
+                        face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance,
+                        hausdorff_abs_tolerance, fscore, histogram);
     const std::string pa = path_from(original, "original"), pb = path_from(processed, "processed");
     LoadedMesh a, b;
     {
@@ -756,6 +770,9 @@ Options (keyword-only, named like the CLI flags of `meshdiff compare`):
                                                                            [--hausdorff]
   hausdorff_tolerance=1e-4  width of that interval relative to the value   [--hausdorff-tolerance]
   hausdorff_abs_tolerance=None  the width in the meshes' unit instead      [--hausdorff-abs-tolerance]
+  fscore=None           F-score thresholds relative to the original's diagonal,
+                        e.g. [0.001, 0.005] -> surface_distance["fscore"]  [--fscore]
+  histogram=0           bins of each direction's histogram, 0: none         [--histogram]
   threads=0             OpenMP threads, 0: all cores                        [--threads]
 )doc";
 
@@ -764,7 +781,9 @@ roughness profiles, the per-level roughness distance d_L and the Metro-style
 surface distance. Returns the dict of `meshdiff ORIGINAL PROCESSED --json`
 (schema "meshdiff.compare/2"): keys schema, meshdiff_version, original,
 processed (each a "meshdiff.profile/1" dict), roughness_distance,
-surface_distance (None for a half switched off). Surface distances are in the
+surface_distance (None for a half switched off; with the area-weighted means,
+chamfer, fscore and psnr of METHOD.md section 6), same_connectivity (None with
+same_connectivity_unavailable when the meshes' connectivity differs). Surface distances are in the
 meshes' unit; "forward" samples the original (V1, F1); "relative" values divide
 by the original's bounding-box diagonal. The arrays' "path" is "<array V1>" and
 "<array V2>"; arrays get no input hygiene (isolated vertices are reported as
@@ -877,7 +896,8 @@ PYBIND11_MODULE(meshdiff, m)
             py::arg("density") = py::none(), py::arg("face_sampling") = "similar", py::arg("seed") = 1,
             py::arg("vertex_samples") = true, py::arg("edge_samples") = true, py::arg("face_samples") = true,
             py::arg("hausdorff") = "certified", py::arg("hausdorff_tolerance") = 1e-4,
-            py::arg("hausdorff_abs_tolerance") = py::none(), py::arg("threads") = 0);
+            py::arg("hausdorff_abs_tolerance") = py::none(), py::arg("fscore") = py::none(), py::arg("histogram") = 0,
+            py::arg("threads") = 0);
     };
     compare_options_args([&](auto... options) {
         m.def("compare", &py_compare, compare_doc.c_str(), py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"),

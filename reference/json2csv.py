@@ -20,7 +20,10 @@ Standard library only.
       One row per pair recorded ok by `meshdiff batch` (the last line per id):
       id, original, processed, hausdorff (the upper end of the certified
       interval; the sampled maximum with --hausdorff sampled or a
-      meshdiff.compare/1 result), hausdorff_lower, hausdorff_certified, d_L<L>
+      meshdiff.compare/1 result), hausdorff_lower, hausdorff_certified,
+      aw_mean_forward, aw_mean_backward (area-weighted means), chamfer_l1,
+      chamfer_l2, psnr_mse_db, psnr_hausdorff_db (empty where the report has
+      none: older reports, no face samples, infinite PSNR), d_L<L>
       per ring level, d_global, change_L<L>, change_global, and d_r<r>,
       change_r<r> per radius (--radii).
 
@@ -113,6 +116,7 @@ def batch(out, args):
         radii += [x for x in d.get("radii", []) if x not in radii]
     radii.sort()
     head = ["id", "original", "processed", "hausdorff", "hausdorff_lower", "hausdorff_certified"]
+    head += ["aw_mean_forward", "aw_mean_backward", "chamfer_l1", "chamfer_l2", "psnr_mse_db", "psnr_hausdorff_db"]
     head += [f"d_L{L}" for L in levels] + ["d_global"]
     head += [f"change_L{L}" for L in levels] + ["change_global"]
     head += [f"d_r{x:g}" for x in radii] + [f"change_r{x:g}" for x in radii]
@@ -136,6 +140,9 @@ def batch(out, args):
                 lower = upper = h
                 certified = False
             row = [r.get("id"), r.get("original"), r.get("processed"), fmt(upper), fmt(lower), str(certified).lower()]
+            aw = [((sd.get(side) or {}).get("area_weighted") or {}).get("mean") for side in ("forward", "backward")]
+            ch, ps = sd.get("chamfer") or {}, sd.get("psnr") or {}
+            row += [fmt(x) for x in aw + [ch.get("l1"), ch.get("l2"), ps.get("mse_db"), ps.get("hausdorff_db")]]
             row += [fmt(dl.get(L)) for L in levels] + [fmt(g.get("distance"))]
             row += [fmt(cl.get(L)) for L in levels] + [fmt(g.get("relative_change"))]
             row += [fmt(dr.get(x)) for x in radii] + [fmt(cr.get(x)) for x in radii]

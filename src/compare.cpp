@@ -18,6 +18,7 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         throw InvalidArgumentError(fmt::format("compare: k = {} must be > 0", options.k));
     validate(options.sampling);
     if (options.hausdorff) validate(*options.hausdorff);
+    validate(options.summary);
     Comparison c;
     c.options = options;
     // The serial topology reports overlap the (partly serial) analyses.
@@ -29,12 +30,15 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         c.roughness = roughness_distance(*c.original_profile, *c.processed_profile, options.k);
     }
     if (options.distance) {
-        c.distance = surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff);
+        c.distance = surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff,
+                                      options.summary, options.keep_samples ? &c.forward_samples : nullptr,
+                                      options.keep_samples ? &c.backward_samples : nullptr);
         c.processed_vertex_distance = std::move(c.distance->b_vertex_distance);
         c.distance->b_vertex_distance.clear();
     } else if (options.vertex_distances) {
         c.processed_vertex_distance = vertex_distances(b.mesh, ClosestPointIndex(a.mesh));
     }
+    c.same_connectivity = same_connectivity(a.mesh, b.mesh, &c.same_connectivity_unavailable);
     c.original = facts_a.get();
     c.processed = facts_b.get();
     return c;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace meshdiff {
@@ -46,6 +47,159 @@ double nearest_rank(std::vector<double>& v, unsigned q, unsigned below)
 }
 
 }  // namespace
+
+void validate(const SummaryOptions& options)
+{
+    if (options.fscore_thresholds.size() > kMaxFscoreThresholds)
+        throw InvalidArgumentError(fmt::format("SummaryOptions: {} F-score thresholds, more than the limit of {}",
+                                               options.fscore_thresholds.size(), kMaxFscoreThresholds));
+    for (double t : options.fscore_thresholds)
+        if (!(std::isfinite(t) && t > 0.0))
+            throw InvalidArgumentError(fmt::format(
+                "SummaryOptions: F-score threshold {} must be finite and > 0 (relative to the diagonal)", t));
+    if (options.histogram_bins > kMaxHistogramBins)
+        throw InvalidArgumentError(fmt::format("SummaryOptions: histogram_bins = {} exceeds the limit of {}",
+                                               options.histogram_bins, kMaxHistogramBins));
+}
+
+std::optional<AreaWeightedStats> area_weighted_stats(const Mesh& from, const SurfaceSamples& samples,
+                                                     const std::vector<double>& distances,
+                                                     const std::vector<double>& thresholds, std::vector<double>* within)
+{
+    if (within) within->assign(thresholds.size(), 0.0);
+    if (samples.size() != distances.size())
+        throw InvalidArgumentError(
+            fmt::format("area_weighted_stats: {} samples but {} distances", samples.size(), distances.size()));
+    // Face samples per face (any order of the samples).
+    std::vector<std::uint32_t> per_face(from.n_faces(), 0);
+    std::size_t n_face = 0;
+    for (std::size_t i = 0; i < samples.kind.size() && i < samples.element.size(); ++i)
+        if (samples.kind[i] == SampleKind::OnFace && samples.element[i] < per_face.size()) {
+            ++per_face[samples.element[i]];
+            ++n_face;
+        }
+    if (n_face == 0) return std::nullopt;
+    std::vector<double> area(from.n_faces(), 0.0);
+    Sum total, sampled;
+    for (std::size_t f = 0; f < from.n_faces(); ++f) {
+        area[f] = 0.5 * face_cross(from, f).norm();
+        total.add(area[f]);
+        if (per_face[f]) sampled.add(area[f]);
+    }
+    // A run of consecutive samples on one face (sample_surface() puts each
+    // face's samples together) is summed plainly, then added with its weight.
+    Sum sum, sum2;
+    std::vector<Sum> below(thresholds.size());
+    std::vector<std::size_t> run_below(thresholds.size());
+    const std::size_t n = std::min(samples.kind.size(), samples.element.size());
+    for (std::size_t i = 0; i < n;) {
+        if (samples.kind[i] != SampleKind::OnFace || samples.element[i] >= per_face.size()) {
+            ++i;
+            continue;
+        }
+        const std::uint32_t f = samples.element[i];
+        double s1 = 0.0, s2 = 0.0;
+        std::fill(run_below.begin(), run_below.end(), 0);
+        std::size_t j = i;
+        for (; j < n && samples.kind[j] == SampleKind::OnFace && samples.element[j] == f; ++j) {
+            const double d = distances[j];
+            s1 += d;
+            s2 += d * d;
+            for (std::size_t k = 0; k < thresholds.size(); ++k) run_below[k] += d < thresholds[k];
+        }
+        const double w = area[f] / double(per_face[f]);
+        sum.add(w * s1);
+        sum2.add(w * s2);
+        for (std::size_t k = 0; k < thresholds.size(); ++k)
+            if (run_below[k]) below[k].add(w * double(run_below[k]));
+        i = j;
+    }
+    AreaWeightedStats s;
+    s.n_face = n_face;
+    s.area = sampled.value();
+    if (!(s.area > 0.0)) return std::nullopt;  // only zero-area faces were sampled
+    s.area_fraction = s.area / total.value();
+    s.mean = sum.value() / s.area;
+    s.mean_square = sum2.value() / s.area;
+    s.rms = std::sqrt(s.mean_square);
+    if (within)
+        for (std::size_t k = 0; k < below.size(); ++k) (*within)[k] = std::min(1.0, below[k].value() / s.area);
+    return s;
+}
+
+Histogram distance_histogram(const std::vector<double>& distances, std::size_t bins)
+{
+    if (bins == 0) throw InvalidArgumentError("distance_histogram: bins must be positive");
+    if (distances.empty()) throw InvalidArgumentError("distance_histogram: no distances");
+    const double max = *std::max_element(distances.begin(), distances.end());
+    Histogram h;
+    h.edges.resize(bins + 1);
+    for (std::size_t i = 0; i <= bins; ++i) h.edges[i] = max * double(i) / double(bins);
+    h.counts.assign(bins, 0);
+    const double width = max / double(bins);
+    for (double d : distances) {
+        std::size_t k = 0;
+        if (width > 0.0) k = std::min(bins - 1, std::size_t(d / width));
+        ++h.counts[k];
+    }
+    return h;
+}
+
+namespace {
+// 10 log10(factor peak^2 / e); +inf for e = 0.
+double psnr_db(double peak, double factor, double e)
+{
+    return e > 0.0 ? 10.0 * std::log10(factor * peak * peak / e) : std::numeric_limits<double>::infinity();
+}
+}  // namespace
+
+std::vector<FScore> fscores(const std::vector<double>& relative_thresholds, double diagonal,
+                            const std::vector<double>& recall_shares, const std::vector<double>& precision_shares)
+{
+    if (recall_shares.size() != relative_thresholds.size() || precision_shares.size() != relative_thresholds.size())
+        throw InvalidArgumentError(fmt::format("fscores: {} thresholds but {} and {} shares",
+                                               relative_thresholds.size(), recall_shares.size(),
+                                               precision_shares.size()));
+    std::vector<FScore> r;
+    for (std::size_t k = 0; k < relative_thresholds.size(); ++k) {
+        FScore s;
+        s.threshold = relative_thresholds[k];
+        s.threshold_absolute = relative_thresholds[k] * diagonal;
+        s.precision = precision_shares[k];
+        s.recall = recall_shares[k];
+        s.fscore = s.precision + s.recall > 0.0 ? 2.0 * s.precision * s.recall / (s.precision + s.recall) : 0.0;
+        r.push_back(s);
+    }
+    return r;
+}
+
+std::optional<SummaryMetrics> summary_metrics(const SurfaceDistance& d, std::string* reason)
+{
+    const auto& f = d.forward.area_weighted;
+    const auto& b = d.backward.area_weighted;
+    if (!f || !b) {
+        if (reason)
+            *reason = fmt::format(
+                "no face sample in the {} direction (face samples off, or the vertex and edge samples "
+                "used the whole budget)",
+                !f && !b ? "forward and backward" : (!f ? "forward" : "backward"));
+        return std::nullopt;
+    }
+    SummaryMetrics m;
+    m.chamfer_l1 = f->mean + b->mean;
+    m.chamfer_l2 = f->mean_square + b->mean_square;
+    Psnr& p = m.psnr;
+    p.peak = d.diagonal;
+    p.mse = std::max(f->mean_square, b->mean_square);
+    p.mse_db = psnr_db(p.peak, p.factor, p.mse);
+    p.forward_mse_db = psnr_db(p.peak, p.factor, f->mean_square);
+    p.backward_mse_db = psnr_db(p.peak, p.factor, b->mean_square);
+    p.hausdorff = d.hausdorff;
+    p.hausdorff_db = psnr_db(p.peak, p.factor, d.hausdorff * d.hausdorff);
+    p.forward_hausdorff_db = psnr_db(p.peak, p.factor, d.forward.max * d.forward.max);
+    p.backward_hausdorff_db = psnr_db(p.peak, p.factor, d.backward.max * d.backward.max);
+    return m;
+}
 
 DistanceStats relative_to(const DistanceStats& stats, double diagonal)
 {
@@ -141,14 +295,25 @@ HausdorffSeed seed_of(const Mesh& from, const DistanceStats& s)
 // the samples in \p forward and \p backward when they are given.
 SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
                                 SampledDirection* forward, SampledDirection* backward,
-                                const std::optional<HausdorffOptions>& certify = std::nullopt)
+                                const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary)
 {
     validate(options);
+    validate(summary);
     if (certify) validate(*certify);
     validate(a, "surface_distance: mesh A");
     validate(b, "surface_distance: mesh B");
     SamplingOptions opt = options;
     if (!opt.samples && !opt.density) opt.samples = 10 * std::max(a.n_faces(), b.n_faces());
+
+    const double diagonal = bounding_box(a).diagonal();
+    std::vector<double> thresholds;  // absolute
+    for (double t : summary.fscore_thresholds) thresholds.push_back(t * diagonal);
+    // The sums over the samples beside the statistics of one direction.
+    std::vector<double> recall, precision;  // area shares below the thresholds, forward and backward
+    auto summarize = [&](DistanceStats& s, const Mesh& from, const SampledDirection& d, std::vector<double>& within) {
+        s.area_weighted = area_weighted_stats(from, d.samples, d.distances, thresholds, &within);
+        if (summary.histogram_bins > 0) s.histogram = distance_histogram(d.distances, summary.histogram_bins);
+    };
 
     SurfaceDistance r;
     {
@@ -157,6 +322,7 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         if (certify) vq = index_b.closest_points(a.points);
         SampledDirection d = sampled_direction(a, index_b, opt, certify ? &vq : nullptr);
         r.forward = distance_stats(d.samples, d.distances);
+        summarize(r.forward, a, d, recall);
         if (forward) *forward = std::move(d);
         d = SampledDirection{};  // free the samples before the certification
         if (certify)
@@ -168,6 +334,7 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         if (certify) vq = index_a.closest_points(b.points);
         SampledDirection d = sampled_direction(b, index_a, opt, certify ? &vq : nullptr);
         r.backward = distance_stats(d.samples, d.distances);
+        summarize(r.backward, b, d, precision);
         if (backward) *backward = std::move(d);
         d = SampledDirection{};
         if (b_vertex_distances) {
@@ -182,8 +349,10 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
             r.backward_hausdorff = detail::certified_hausdorff(b, a, index_a, *certify, seed_of(b, r.backward), vq);
     }
     r.hausdorff = std::max(r.forward.max, r.backward.max);
-    r.diagonal = bounding_box(a).diagonal();
+    r.diagonal = diagonal;
     r.metro_diagonal = metro_diagonal(a, b);
+    r.summary = summary_metrics(r, &r.summary_unavailable);
+    if (r.summary) r.fscore = fscores(summary.fscore_thresholds, diagonal, recall, precision);
     return r;
 }
 
@@ -196,15 +365,17 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
 }
 
 SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
-                                 const std::optional<HausdorffOptions>& certify)
+                                 const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
+                                 SampledDirection* forward_samples, SampledDirection* backward_samples)
 {
-    return both_directions(a, b, options, b_vertex_distances, nullptr, nullptr, certify);
+    return both_directions(a, b, options, b_vertex_distances, forward_samples, backward_samples, certify, summary);
 }
 
-SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options)
+SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options,
+                                                const SummaryOptions& summary)
 {
     SampledSurfaceDistance r;
-    r.distance = both_directions(a, b, options, false, &r.forward, &r.backward);
+    r.distance = both_directions(a, b, options, false, &r.forward, &r.backward, std::nullopt, summary);
     return r;
 }
 

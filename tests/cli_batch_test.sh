@@ -84,6 +84,20 @@ expect 0 batch "$tmp/p3.csv" --out "$tmp/r9.jsonl" --levels 1-20 -q
 [ "$(grep -c '"status":"ok"' "$tmp/r9.jsonl")" -eq 6 ] && valid_records "$tmp/r9.jsonl" && pass ||
     fail "after kill + resume: $(lines "$tmp/r9.jsonl") lines"
 
+# --- the summary metrics and histograms reach every record
+# (-n 50000: at 2000 the vertex and edge samples of these small meshes take the whole budget)
+expect 0 batch "$tmp/p2.csv" --out "$tmp/r11.jsonl" --levels 1 -n 50000 --fscore 0.01 --histogram 5 -q
+python3 - "$tmp/r11.jsonl" <<'PY' && pass || fail "batch records lack the summary metrics"
+import json, sys
+recs = [json.loads(l) for l in open(sys.argv[1])]
+assert len(recs) == 2 and all(r["status"] == "ok" for r in recs)
+for r in recs:
+    sd = r["result"]["surface_distance"]
+    assert sd["chamfer"]["l1"] > 0 and sd["psnr"]["mse_db"] > 0 and len(sd["fscore"]) == 1
+    assert sd["forward"]["area_weighted"]["mean"] > 0 and len(sd["backward"]["histogram"]["counts"]) == 5
+    assert "same_connectivity" in r["result"]
+PY
+
 # --- metric levels reach every record (roughness_distance.radii, distance_radii, relative_change_radii)
 expect 0 batch "$tmp/p2.csv" --out "$tmp/r10.jsonl" --levels 1 --radii 0.1,0.2 -n 2000 -q
 python3 - "$tmp/r10.jsonl" <<'PY' && pass || fail "batch records lack the radii"
@@ -99,5 +113,14 @@ PY
 python3 "$(dirname "$0")/../reference/json2csv.py" batch "$tmp/r10.csv" "$tmp/r10.jsonl" &&
     head -1 "$tmp/r10.csv" | grep -q "d_L1,d_global,change_L1,change_global,d_r0.1,d_r0.2,change_r0.1,change_r0.2" &&
     [ "$(wc -l < "$tmp/r10.csv")" -eq 3 ] && pass || fail "summary CSV lacks the radii: $(head -2 "$tmp/r10.csv")"
+# ... and the area-weighted means, Chamfer and PSNR, each a number
+python3 "$(dirname "$0")/../reference/json2csv.py" batch "$tmp/r11.csv" "$tmp/r11.jsonl" && pass || fail "json2csv on r11"
+python3 - "$tmp/r11.csv" <<'PY' && pass || fail "summary CSV lacks the summary metrics: $(head -2 "$tmp/r11.csv")"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+keys = ("aw_mean_forward", "aw_mean_backward", "chamfer_l1", "chamfer_l2", "psnr_mse_db", "psnr_hausdorff_db")
+assert len(rows) == 2 and all(float(r[k]) > 0 for r in rows for k in keys)
+assert all(abs(float(r["chamfer_l1"]) - float(r["aw_mean_forward"]) - float(r["aw_mean_backward"])) < 1e-12 for r in rows)
+PY
 
 finish

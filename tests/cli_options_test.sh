@@ -42,6 +42,12 @@ expect_range "--radii" profile "$h" --radii inf
 expect_range "--radii" profile "$h" --radii 1e9
 expect_range "--radii" profile "$h" --radii 0.1,,0.2
 expect_range "--radii" profile "$h" --radii abc
+expect_range "--fscore" "$h" "$h" --no-roughness -n 2000 --fscore 0
+expect_range "--fscore" "$h" "$h" --no-roughness -n 2000 --fscore 0.001,-0.2
+expect_range "--fscore" "$h" "$h" --no-roughness -n 2000 --fscore nan
+expect_range "--fscore" "$h" "$h" --no-roughness -n 2000 --fscore abc
+expect_range "--histogram" "$h" "$h" --no-roughness -n 2000 --histogram 0
+expect_range "--histogram" "$h" "$h" --no-roughness -n 2000 --histogram 1e9
 expect_range "limit of 64" profile "$h" --radii "$(seq -s, 1 70)"
 expect_range "--color-range" "$h" "$h" --no-roughness --distance-map "$tmp/m.ply" --color-range 0 inf
 expect_range "--color-range" profile "$h" --vertex-data "$tmp/v.ply" --color-range nan

@@ -115,7 +115,7 @@ PY
 scale_ply "$tmp/s.ply" "$tmp/big_a.ply" 0.999e30 && scale_ply "$tmp/ns.ply" "$tmp/big_b.ply" 0.999e30 &&
     scale_ply "$tmp/ns.ply" "$tmp/over.ply" 1.001e30 && pass || fail "scale_ply"
 expect_within 60 0 "$tmp/big_a.ply" "$tmp/big_b.ply" --levels 1,2 --json "$tmp/big.json"
-json_check "$tmp/big.json" 'finite(j) and [p for p in nulls(j) if p.split(".")[-1] not in ("cutoff", "density_requested", "samples_requested")] == [] and j["surface_distance"]["hausdorff"]["lower"] > 1e26 and j["surface_distance"]["hausdorff"]["certified"] and j["roughness_distance"]["global"]["distance"] > 0'
+json_check "$tmp/big.json" 'finite(j) and [p for p in nulls(j) if p.split(".")[-1] not in ("cutoff", "density_requested", "samples_requested", "summary_unavailable", "same_connectivity_unavailable")] == [] and j["surface_distance"]["hausdorff"]["lower"] > 1e26 and j["surface_distance"]["psnr"]["mse_db"] > 0 and j["same_connectivity"]["displacement"]["max"] > 1e26 and j["surface_distance"]["hausdorff"]["certified"] and j["roughness_distance"]["global"]["distance"] > 0'
 expect_within 10 4 profile "$tmp/over.ply" && grep -q "over.ply: vertex [0-9]* has the coordinate .* beyond meshdiff's limit of +-1e+30" "$tmp/stderr" &&
     pass || fail "coordinate limit message"
 
@@ -215,5 +215,54 @@ expect 6 batch "$tmp/pairs.csv" --out "$tmp/s1.jsonl" --levels 1 --shard 1/2 -q 
 grep -q "\"id\":\"b\"" "$tmp/s1.jsonl" && pass || fail "shard 1/2 should hold pair b"
 grep -q '"id":"a"' "$tmp/s0.jsonl" && grep -q '"id":"c"' "$tmp/s0.jsonl" && pass || fail "shard 0/2 should hold pairs a and c"
 expect 2 batch "$tmp/pairs.csv" --out "$tmp/x.jsonl" --shard 2/2
+
+# --- summary metrics (METHOD.md section 6), exact on a flat fan against a pyramid of height h
+python3 - "$tmp" <<'PY' && pass || fail "writing the pyramids"
+import sys
+for name, h in (("fan", 0.0), ("pyr", 0.75)):
+    with open("%s/%s.ply" % (sys.argv[1], name), "w") as f:
+        f.write("ply\nformat ascii 1.0\nelement vertex 5\nproperty double x\nproperty double y\nproperty double z\n"
+                "element face 4\nproperty list uchar int vertex_indices\nend_header\n")
+        f.write("-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\n0 0 %r\n" % h)
+        f.write("3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n")
+PY
+expect 0 "$tmp/fan.ply" "$tmp/pyr.ply" --no-roughness -n 100000 --fscore 0.01,0.05 --histogram 8 --json "$tmp/sum.json" &&
+    grep -q "Chamfer L1 (mean forward + mean backward)" "$tmp/stdout" && grep -q "F-score at 0.05 x diagonal" "$tmp/stdout" &&
+    grep -q "PSNR (MPEG" "$tmp/stdout" && grep -q "face normal angle    RMS 36.8699 deg" "$tmp/stdout" && pass ||
+    fail "compare text lacks the summary lines: $(tail -12 "$tmp/stdout")"
+# Forward (fan -> pyramid) mean h/(3s), s = sqrt(1 + h^2); backward h/3; PSNR of the hand-computed case below;
+# same connectivity: the apex moved by h (RMS h / sqrt(5)), every face normal turned by atan(h).
+json_check "$tmp/sum.json" 'abs(j["surface_distance"]["forward"]["area_weighted"]["mean"] - 0.75/(3*1.25)) < 1e-12 and abs(j["surface_distance"]["backward"]["area_weighted"]["mean"] - 0.25) < 1e-12 and abs(j["surface_distance"]["chamfer"]["l1"] - 0.45) < 1e-12 and abs(j["surface_distance"]["psnr"]["mse_db"] - 10*math.log10(3*8/(0.75**2/6))) < 0.05 and abs(j["surface_distance"]["psnr"]["hausdorff_db"] - 10*math.log10(3*8/0.75**2)) < 1e-9 and j["surface_distance"]["psnr"]["factor"] == 3 and [f["threshold"] for f in j["surface_distance"]["fscore"]] == [0.01, 0.05] and abs(j["surface_distance"]["fscore"][1]["threshold_absolute"] - 0.05*8**0.5) < 1e-12 and len(j["surface_distance"]["forward"]["histogram"]["edges"]) == 9 and sum(j["surface_distance"]["backward"]["histogram"]["counts"]) == j["surface_distance"]["backward"]["samples"] and abs(j["same_connectivity"]["displacement"]["max"] - 0.75) < 1e-15 and abs(j["same_connectivity"]["displacement"]["rms"] - 0.75/5**0.5) < 1e-15 and abs(j["same_connectivity"]["normal_deviation_deg"]["max"] - math.degrees(math.atan(0.75))) < 1e-12 and j["same_connectivity_unavailable"] is None and finite(j)'
+# A mesh against itself: F-score 1 at every threshold; different connectivity is said so.
+expect 0 "$data/bunny_res3.ply" "$data/bunny_res3.ply" --no-roughness --fscore 0.001,0.005 --json "$tmp/selff.json"
+json_check "$tmp/selff.json" 'all(f["fscore"] == 1 and f["precision"] == 1 and f["recall"] == 1 for f in j["surface_distance"]["fscore"]) and len(j["surface_distance"]["fscore"]) == 2 and j["same_connectivity"]["displacement"]["max"] == 0 and j["same_connectivity"]["normal_deviation_deg"]["max"] == 0'
+expect 0 "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-roughness -n 50000 --json "$tmp/diffc.json" &&
+    grep -q "^Same connectivity: no (vertex counts differ" "$tmp/stdout" && pass || fail "no same-connectivity line"
+json_check "$tmp/diffc.json" 'j["same_connectivity"] is None and j["same_connectivity_unavailable"].startswith("vertex counts differ") and j["surface_distance"]["fscore"] == [] and "histogram" not in j["surface_distance"]["forward"]'
+# No face samples: the summary is null with its reason, never NaN.
+expect 0 "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-roughness --no-face-samples --fscore 0.01 --json "$tmp/nof.json" &&
+    grep -q "Summary metrics unavailable: no face sample" "$tmp/stdout" && pass || fail "no reason for the missing summary"
+json_check "$tmp/nof.json" 'j["surface_distance"]["chamfer"] is None and j["surface_distance"]["psnr"] is None and j["surface_distance"]["fscore"] is None and j["surface_distance"]["forward"]["area_weighted"] is None and "no face sample" in j["surface_distance"]["summary_unavailable"] and finite(j)'
+
+# --- --samples-out: both directions' samples as a binary PLY point cloud (numpy and brute force: python/tests/test_samples_out.py)
+expect 0 "$tmp/fan.ply" "$tmp/pyr.ply" --no-roughness -n 4000 --samples-out "$tmp/samples.ply" --json "$tmp/so.json"
+python3 - "$tmp/samples.ply" "$tmp/so.json" <<'PY' && pass || fail "--samples-out file does not match the report"
+import json, struct, sys
+data = open(sys.argv[1], "rb").read()
+end = data.index(b"end_header\n") + len(b"end_header\n")
+header = data[:end].decode().splitlines()
+j = json.load(open(sys.argv[2]))["surface_distance"]
+n = j["forward"]["samples"] + j["backward"]["samples"]
+assert header[1] == "format binary_little_endian 1.0" and "element vertex %d" % n in header
+assert len(data) - end == 38 * n
+recs = [struct.unpack_from("<4dBBi", data, end + 38 * i) for i in range(n)]
+for direction, side in ((0, "forward"), (1, "backward")):
+    d = [r for r in recs if r[5] == direction]
+    assert len(d) == j[side]["samples"] and max(r[3] for r in d) == j[side]["max"]
+    assert [sum(r[4] == k for r in d) for k in range(3)] == [j[side]["samples_by_kind"][k] for k in ("vertex", "edge", "face")]
+PY
+expect 2 "$tmp/fan.ply" "$tmp/pyr.ply" --no-distance --samples-out "$tmp/x.ply" &&
+    grep -q -- "--samples-out" "$tmp/stderr" && [ ! -e "$tmp/x.ply" ] && pass || fail "--samples-out with --no-distance"
+expect 2 "$tmp/fan.ply" "$tmp/pyr.ply" --no-roughness --samples-out "$tmp/fan.ply"
 
 finish

@@ -274,3 +274,57 @@ TEST(ExactProfileJson, HasTheExactSigmasAndASmallHError)
     EXPECT_LE(e["rms"].get<double>(), e["max"].get<double>());
     EXPECT_TRUE(all_finite(j));
 }
+
+TEST(CompareJson, IdenticalPlanesGiveNullPsnrNeverInfinity)
+{
+    // A flat grid against itself: every face sample lies in the plane z = 0,
+    // so the area-weighted mean square is 0 exactly and its PSNR infinite:
+    // null in JSON (edge samples, rounded in x and y, get distances of 1e-17,
+    // so the Hausdorff PSNR stays finite).
+    LoadedMesh a;
+    a.mesh = plane_grid(6, 6, 0.2).mesh;
+    a.input.path = "plane.ply";
+    CompareOptions o;
+    o.roughness = false;
+    o.summary.fscore_thresholds = {0.01};
+    o.summary.histogram_bins = 3;
+    const Comparison c = compare_meshes(a, a, o);
+    ASSERT_TRUE(c.distance && c.distance->summary);
+    EXPECT_EQ(c.distance->summary->psnr.mse, 0.0);
+    const nlohmann::json j = comparison_json(c);
+    const nlohmann::json& sd = j["surface_distance"];
+    EXPECT_TRUE(all_finite(j));
+    EXPECT_TRUE(sd["psnr"]["mse_db"].is_null());
+    EXPECT_GT(sd["psnr"]["hausdorff_db"].get<double>(), 300.0);
+    EXPECT_EQ(sd["psnr"]["factor"], 3.0);
+    EXPECT_EQ(sd["chamfer"]["l1"], 0.0);
+    EXPECT_EQ(sd["fscore"][0]["fscore"], 1.0);
+    EXPECT_EQ(keys(sd["fscore"][0]),
+              (std::vector<std::string>{"fscore", "precision", "recall", "threshold", "threshold_absolute"}));
+    std::size_t total = 0;
+    for (const auto& n : sd["forward"]["histogram"]["counts"]) total += n.get<std::size_t>();
+    EXPECT_EQ(total, sd["forward"]["samples"].get<std::size_t>());
+    EXPECT_TRUE(sd["summary_unavailable"].is_null());
+    EXPECT_EQ(j["same_connectivity"]["displacement"]["max"], 0.0);
+    EXPECT_EQ(j["same_connectivity"]["normal_deviation_deg"]["max"], 0.0);
+    EXPECT_TRUE(j["same_connectivity_unavailable"].is_null());
+}
+
+TEST(CompareJson, SummaryAndSameConnectivityGiveTheirReasonsWhenUnavailable)
+{
+    const LoadedMesh a = read_mesh(data("bunny_res3.ply"));
+    const LoadedMesh b = read_mesh(data("bunny_res4_ascii.ply"));
+    CompareOptions o;
+    o.roughness = false;
+    o.sampling.faces = false;
+    o.summary.fscore_thresholds = {0.01};
+    const nlohmann::json j = comparison_json(compare_meshes(a, b, o));
+    const nlohmann::json& sd = j["surface_distance"];
+    for (const char* k : {"chamfer", "fscore", "psnr"}) EXPECT_TRUE(sd[k].is_null()) << k;
+    EXPECT_TRUE(sd["forward"]["area_weighted"].is_null());
+    EXPECT_FALSE(sd["forward"].contains("histogram"));
+    EXPECT_NE(sd["summary_unavailable"].get<std::string>().find("no face sample"), std::string::npos);
+    EXPECT_TRUE(j["same_connectivity"].is_null());
+    EXPECT_EQ(j["same_connectivity_unavailable"], "vertex counts differ (1887 vs 453)");
+    EXPECT_TRUE(all_finite(j));
+}

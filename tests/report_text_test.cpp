@@ -66,6 +66,29 @@ TEST(ComparisonText, HasMetroSectionNames)
     EXPECT_NE(text.find("Hausdorff distance"), std::string::npos);
 }
 
+TEST(ComparisonText, HasTheSummaryAndSameConnectivityLines)
+{
+    // A flat grid against a copy raised by 0.25: the area-weighted means are
+    // 0.25, Chamfer L1 0.5, and every vertex moved by 0.25.
+    LoadedMesh a;
+    a.mesh = plane_grid(6, 6, 0.2).mesh;
+    a.input.path = "plane.ply";
+    LoadedMesh b = a;
+    for (Vec3& p : b.mesh.points) p.z() += 0.25;
+    CompareOptions o;
+    o.roughness = false;
+    o.summary.fscore_thresholds = {0.5};
+    std::string text = comparison_text(compare_meshes(a, b, o));
+    EXPECT_NE(text.find("area-weighted mean   forward 0.25 ("), std::string::npos) << text;
+    EXPECT_NE(text.find("Chamfer L1 (mean forward + mean backward)        0.5 ("), std::string::npos) << text;
+    EXPECT_NE(text.find("F-score at 0.5 x diagonal"), std::string::npos) << text;
+    EXPECT_NE(text.find("vertex displacement  RMS 0.25 ("), std::string::npos) << text;
+    EXPECT_NE(text.find("face normal angle    RMS 0 deg, max 0 deg"), std::string::npos) << text;
+    // Identical planes: face-sample distances 0 exactly, an infinite PSNR written "inf".
+    text = comparison_text(compare_meshes(a, a, o));
+    EXPECT_NE(text.find("mean squared inf, Hausdorff "), std::string::npos) << text;
+}
+
 TEST(ComparisonText, ListsTheOutliersDominateWarningsOfASpikyOriginal)
 {
     LoadedMesh clean;

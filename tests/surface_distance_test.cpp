@@ -374,3 +374,230 @@ TEST(SurfaceDistance, InvalidOptionsAndMeshesThrow)
     faces_only.vertices = faces_only.edges = false;
     EXPECT_THROW(surface_distance(flat, m, faces_only), InvalidArgumentError);
 }
+
+namespace {
+
+// The square [-1, 1]^2 as four triangles around its centre, raised to height
+// h there: a flat fan for h = 0, an open pyramid for h > 0.
+Mesh pyramid(double h)
+{
+    Mesh m;
+    m.points = {Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(0, 0, h)};
+    m.faces = {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+    return m;
+}
+
+// 10 log10(3 peak^2 / e), by hand.
+double psnr_of(double peak, double e)
+{
+    return 10.0 * std::log10(3.0 * peak * peak / e);
+}
+
+}  // namespace
+
+TEST(SummaryMetrics, ParallelPlanesGiveTheOffsetExactly)
+{
+    const double d = 0.125;
+    const Mesh a = plane_grid(11, 11, 0.1).mesh;  // the unit square, diagonal sqrt(2)
+    Mesh b = plane_grid(8, 8, 1.0 / 7.0).mesh;
+    for (Vec3& p : b.points) p.z() += d;
+    SummaryOptions so;
+    so.fscore_thresholds = {0.5 * d / std::sqrt(2.0), 2.0 * d / std::sqrt(2.0)};  // below and above the offset
+    const SurfaceDistance r = surface_distance(a, b, {}, false, std::nullopt, so);
+    for (const DistanceStats* s : {&r.forward, &r.backward}) {
+        ASSERT_TRUE(s->area_weighted);
+        EXPECT_NEAR(s->area_weighted->mean, d, 1e-14);
+        EXPECT_NEAR(s->area_weighted->rms, d, 1e-14);
+        EXPECT_NEAR(s->area_weighted->area, 1.0, 1e-12);
+        EXPECT_EQ(s->area_weighted->n_face, s->n_face);
+    }
+    ASSERT_TRUE(r.summary);
+    EXPECT_NEAR(r.summary->chamfer_l1, 2.0 * d, 1e-14);
+    EXPECT_NEAR(r.summary->chamfer_l2, 2.0 * d * d, 1e-14);
+    ASSERT_EQ(r.fscore.size(), 2u);
+    EXPECT_EQ(r.fscore[0].fscore, 0.0);
+    EXPECT_EQ(r.fscore[0].precision, 0.0);
+    EXPECT_NEAR(r.fscore[1].fscore, 1.0, 1e-14);
+    EXPECT_NEAR(r.fscore[1].threshold_absolute, 2.0 * d, 1e-15);
+    // PSNR by hand: peak^2 = 2, e = 1/64: 10 log10(3 x 2 x 64) = 10 log10(384) = 25.8433 dB.
+    EXPECT_NEAR(r.summary->psnr.peak, std::sqrt(2.0), 1e-15);
+    EXPECT_NEAR(r.summary->psnr.mse_db, 10.0 * std::log10(384.0), 1e-11);
+    EXPECT_NEAR(r.summary->psnr.hausdorff_db, 10.0 * std::log10(384.0), 1e-11);
+    EXPECT_NEAR(r.summary->psnr.mse_db, 25.843312243675, 1e-9);
+}
+
+TEST(SummaryMetrics, PlaneAgainstPyramidMatchesTheSurfaceIntegrals)
+{
+    // A: the flat fan; B: the pyramid of height h. Forward, a point of A at
+    // m = max(|x|, |y|) lies h (1 - m) / s below its face of B, s = sqrt(1 + h^2);
+    // backward, a point of B lies h (1 - m) above A. Over the square, the mean
+    // of 1 - m is 1/3 and that of (1 - m)^2 is 1/6 (B's area element is s times
+    // the projected one, the same on every face, so B's means are those of the
+    // square). The distances are linear on every face: the lattice sampling
+    // gets their means exactly (its points are symmetric about the centroid);
+    // the mean squares converge as 1/k (the lattice order k, here about 440:
+    // the lattice leaves out a band of width 1/(k+2) along the edges).
+    const double h = 0.75, s = std::sqrt(1.0 + h * h);
+    const Mesh a = pyramid(0.0), b = pyramid(h);
+    SamplingOptions o;
+    o.samples = 400000;
+    const double diag = 2.0 * std::sqrt(2.0);
+    const double t = 0.1;  // absolute F-score threshold
+    SummaryOptions so;
+    so.fscore_thresholds = {t / diag};
+    const SurfaceDistance r = surface_distance(a, b, o, false, std::nullopt, so);
+    ASSERT_TRUE(r.forward.area_weighted && r.backward.area_weighted && r.summary);
+    const AreaWeightedStats& f = *r.forward.area_weighted;
+    const AreaWeightedStats& bw = *r.backward.area_weighted;
+    EXPECT_NEAR(f.mean, h / (3.0 * s), 1e-13);
+    EXPECT_NEAR(bw.mean, h / 3.0, 1e-13);
+    EXPECT_NEAR(f.mean_square, h * h / (6.0 * s * s), 5e-3 * h * h / (6.0 * s * s));
+    EXPECT_NEAR(bw.mean_square, h * h / 6.0, 5e-3 * h * h / 6.0);
+    EXPECT_NEAR(f.area, 4.0, 1e-12);
+    EXPECT_NEAR(bw.area, 4.0 * s, 1e-12);
+    EXPECT_NEAR(r.summary->chamfer_l1, h / (3.0 * s) + h / 3.0, 1e-13);
+    EXPECT_NEAR(r.summary->chamfer_l2, h * h / (6.0 * s * s) + h * h / 6.0, 5e-3 * h * h / 3.0);
+    // Metro's pooled mean is not the surface mean (vertex and edge samples).
+    EXPECT_GT(std::abs(r.backward.mean - h / 3.0), 1e-4);
+    // F-score: share of the square with 1 - m < u is 1 - (1 - u)^2.
+    const double recall = 1.0 - std::pow(1.0 - t * s / h, 2), precision = 1.0 - std::pow(1.0 - t / h, 2);
+    ASSERT_EQ(r.fscore.size(), 1u);
+    EXPECT_NEAR(r.fscore[0].recall, recall, 3e-3);
+    EXPECT_NEAR(r.fscore[0].precision, precision, 3e-3);
+    EXPECT_NEAR(r.fscore[0].fscore, 2.0 * precision * recall / (precision + recall), 3e-3);
+    // PSNR: the larger mean square is the backward one, h^2 / 6.
+    EXPECT_NEAR(r.summary->psnr.mse_db, psnr_of(diag, h * h / 6.0), 0.03);  // 10 log10(1.005) = 0.02 dB
+    EXPECT_NEAR(r.summary->psnr.hausdorff_db, psnr_of(diag, r.hausdorff * r.hausdorff), 1e-12);
+    EXPECT_NEAR(r.hausdorff, h, 1e-14);  // the apex, a vertex sample
+}
+
+TEST(SummaryMetrics, MeshAgainstItselfHasFScoreOne)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    SummaryOptions so;
+    so.fscore_thresholds = {1e-6, 0.001, 0.005};
+    const SurfaceDistance r = surface_distance(a, a, {}, false, std::nullopt, so);
+    ASSERT_TRUE(r.summary);
+    for (const FScore& f : r.fscore) {
+        EXPECT_EQ(f.precision, 1.0);
+        EXPECT_EQ(f.recall, 1.0);
+        EXPECT_EQ(f.fscore, 1.0);
+    }
+    EXPECT_LT(r.summary->chamfer_l1, 1e-15 * r.diagonal);
+    EXPECT_GT(r.summary->psnr.mse_db, 250.0);  // rounding-level distances
+}
+
+TEST(SummaryMetrics, WeightsAreTheAreaEachFaceSampleStandsFor)
+{
+    // Brute force from the kept samples: w = area(f) / (face samples on f).
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    for (const FaceSampling scheme : {FaceSampling::SimilarTriangles, FaceSampling::MonteCarlo}) {
+        SamplingOptions o;
+        o.face_scheme = scheme;
+        const SampledSurfaceDistance r = surface_distance_samples(a, b, o);
+        const auto& s = r.forward.samples;
+        std::vector<int> n(a.n_faces(), 0);
+        for (std::size_t i = 0; i < s.size(); ++i)
+            if (s.kind[i] == SampleKind::OnFace) ++n[s.element[i]];
+        long double sw = 0, swd = 0, swd2 = 0;
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            if (s.kind[i] != SampleKind::OnFace) continue;
+            const long double w = 0.5L * (long double)face_cross(a, s.element[i]).norm() / n[s.element[i]];
+            const long double d = r.forward.distances[i];
+            sw += w;
+            swd += w * d;
+            swd2 += w * d * d;
+        }
+        ASSERT_TRUE(r.distance.forward.area_weighted);
+        EXPECT_NEAR(r.distance.forward.area_weighted->mean, double(swd / sw), 1e-12 * double(swd / sw));
+        EXPECT_NEAR(r.distance.forward.area_weighted->mean_square, double(swd2 / sw), 1e-12 * double(swd2 / sw));
+    }
+}
+
+TEST(SummaryMetrics, NoFaceSamplesGiveNoSummaryAndAReason)
+{
+    const Mesh a = plane_grid(5, 5).mesh;
+    SamplingOptions o;
+    o.faces = false;
+    const SurfaceDistance r = surface_distance(a, a, o);
+    EXPECT_FALSE(r.forward.area_weighted);
+    EXPECT_FALSE(r.summary);
+    EXPECT_NE(r.summary_unavailable.find("no face sample"), std::string::npos);
+    SummaryOptions bad;
+    bad.fscore_thresholds = {0.0};
+    EXPECT_THROW(surface_distance(a, a, {}, false, std::nullopt, bad), InvalidArgumentError);
+    bad.fscore_thresholds = {NAN};
+    EXPECT_THROW(surface_distance(a, a, {}, false, std::nullopt, bad), InvalidArgumentError);
+    bad.fscore_thresholds.clear();
+    bad.histogram_bins = kMaxHistogramBins + 1;
+    EXPECT_THROW(surface_distance(a, a, {}, false, std::nullopt, bad), InvalidArgumentError);
+}
+
+TEST(SummaryMetrics, DefaultStatisticsAreBitwiseUnchangedByTheSummary)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    SummaryOptions so;
+    so.fscore_thresholds = {0.001};
+    so.histogram_bins = 16;
+    const SurfaceDistance plain = surface_distance(a, b);
+    const SurfaceDistance full = surface_distance(a, b, {}, false, std::nullopt, so);
+    expect_identical(plain.forward, full.forward);
+    expect_identical(plain.backward, full.backward);
+    EXPECT_TRUE(plain.forward.histogram.counts.empty());
+    EXPECT_EQ(full.forward.histogram.counts.size(), 16u);
+}
+
+TEST(Histogram, CountsEverySampleInEqualBinsUpToTheMaximum)
+{
+    const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
+    const Mesh b = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    SummaryOptions so;
+    so.histogram_bins = 7;
+    const SampledSurfaceDistance r = surface_distance_samples(a, b, {}, so);
+    for (const auto& [stats, dir] : {std::pair{&r.distance.forward, &r.forward}, {&r.distance.backward, &r.backward}}) {
+        const Histogram& h = stats->histogram;
+        ASSERT_EQ(h.edges.size(), 8u);
+        ASSERT_EQ(h.counts.size(), 7u);
+        EXPECT_EQ(h.edges.front(), 0.0);
+        EXPECT_EQ(h.edges.back(), stats->max);
+        // Brute force: count the distances in [e_i, e_{i+1}) (the last bin closed).
+        for (std::size_t i = 0; i < 7; ++i) {
+            std::size_t n = 0;
+            for (double d : dir->distances)
+                if (d >= h.edges[i] && (d < h.edges[i + 1] || (i == 6 && d <= h.edges[7]))) ++n;
+            EXPECT_NEAR(double(h.counts[i]), double(n), 2.0) << "bin " << i;  // ties at an edge may round either way
+        }
+        std::size_t total = 0;
+        for (auto c : h.counts) total += c;
+        EXPECT_EQ(total, stats->n_samples());
+    }
+    EXPECT_THROW(distance_histogram({}, 3), InvalidArgumentError);
+    EXPECT_THROW(distance_histogram({1.0}, 0), InvalidArgumentError);
+    const Histogram zero = distance_histogram({0.0, 0.0}, 4);
+    EXPECT_EQ(zero.counts[0], 2u);
+}
+
+TEST(SummaryMetrics, MeanSquaresConvergeToTheSurfaceIntegral)
+{
+    // The pyramid's backward mean square h^2 / 6 (see above): the lattice's
+    // error falls as the sample count grows (about 1/k, k ~ sqrt(samples)).
+    const double h = 0.75;
+    double previous = INFINITY;
+    for (std::size_t n : {4000u, 40000u, 400000u}) {
+        SamplingOptions o;
+        o.samples = n;
+        const SurfaceDistance r = surface_distance(pyramid(0.0), pyramid(h), o);
+        const double error = std::abs(r.backward.area_weighted->mean_square - h * h / 6.0);
+        EXPECT_LT(error, 0.5 * previous) << n << " samples";
+        previous = error;
+    }
+    // Monte Carlo face samples: no lattice bias; within a few standard errors.
+    SamplingOptions mc;
+    mc.samples = 400000;
+    mc.face_scheme = FaceSampling::MonteCarlo;
+    const SurfaceDistance r = surface_distance(pyramid(0.0), pyramid(h), mc);
+    EXPECT_NEAR(r.backward.area_weighted->mean_square, h * h / 6.0, 1e-2 * h * h / 6.0);  // 5 standard errors
+    EXPECT_NEAR(r.backward.area_weighted->mean, h / 3.0, 1e-2 * h / 3.0);
+}

@@ -4,6 +4,7 @@
 #include "meshdiff/io.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/text.h"
+#include "meshdiff/sample_cloud.h"
 #include "meshdiff/vertex_maps.h"
 #include "options.h"
 
@@ -22,6 +23,7 @@ struct CompareArgs
     CompareCliOptions compare;
     std::string json;
     std::string distance_map;
+    std::string samples_out;
     std::vector<double> color_range;
     int threads = 0;
 };
@@ -29,10 +31,14 @@ struct CompareArgs
 int run_compare(const CompareArgs& a)
 {
     set_threads(a.threads);
-    for (const auto& [what, out] : {std::pair{"--json", a.json}, {"--distance-map", a.distance_map}})
+    for (const auto& [what, out] :
+         {std::pair{"--json", a.json}, {"--distance-map", a.distance_map}, {"--samples-out", a.samples_out}})
         refuse_overwriting_inputs(what, out, {a.original, a.processed});
     CompareOptions options = to_compare_options(a.compare);
     options.vertex_distances = !a.distance_map.empty();
+    options.keep_samples = !a.samples_out.empty();
+    if (options.keep_samples && !options.distance)
+        throw InvalidArgumentError("--samples-out needs the surface distance: leave out --no-distance");
     std::optional<std::pair<double, double>> range;
     if (!a.color_range.empty()) {
         if (!(a.color_range.size() == 2 && a.color_range[0] < a.color_range[1]))
@@ -43,6 +49,9 @@ int run_compare(const CompareArgs& a)
     const LoadedMesh processed = read_mesh(a.processed);
     const Comparison c = compare_meshes(original, processed, options);
     if (!a.distance_map.empty()) write_ply(a.distance_map, processed.mesh, distance_map(c, range));
+    if (!a.samples_out.empty())
+        write_sample_cloud(a.samples_out, original.mesh, c.forward_samples, processed.mesh, c.backward_samples,
+                           {"original " + a.original, "processed " + a.processed});
     if (!a.json.empty()) write_json(a.json, comparison_json(c));
     if (a.json != "-") std::cout << comparison_text(c);
     return 0;
@@ -62,6 +71,9 @@ void add_compare_command(CLI::App& app, Action& action)
     sub->add_option("--json", args->json, "write the JSON report to FILE, or '-' for stdout");
     sub->add_option("--distance-map", args->distance_map,
                     "write the processed mesh with per-vertex distance to the original and a colour ramp as PLY");
+    sub->add_option("--samples-out", args->samples_out,
+                    "write the samples of both directions with their distances as a binary PLY point cloud "
+                    "(x y z distance kind direction face)");
     sub->add_option("--color-range", args->color_range, "fix the distance colour range: MIN MAX")
         ->expected(2)
         ->check(in_range(-1e300, 1e300));

@@ -122,6 +122,29 @@ std::vector<double> parse_radii(const std::string& text)
     return radii;
 }
 
+std::vector<double> parse_fscore(const std::string& text)
+{
+    std::vector<double> thresholds;
+    std::stringstream ss(text);
+    std::string item;
+    while (std::getline(ss, item, ',')) {
+        const auto v = finite_number(item);
+        if (!v)
+            throw InvalidArgumentError(fmt::format(
+                "--fscore: '{}' is not a list of thresholds like 0.001,0.005 (relative to the diagonal)", text));
+        if (!(*v > 0.0) || *v > 1e6)
+            throw InvalidArgumentError(fmt::format("--fscore: threshold {} is not in (0, 1e6]", item));
+        thresholds.push_back(*v);
+        if (thresholds.size() > kMaxFscoreThresholds)
+            throw InvalidArgumentError(
+                fmt::format("--fscore: '{}' lists more than the limit of {} thresholds", text, kMaxFscoreThresholds));
+    }
+    if (thresholds.empty() && !text.empty())
+        throw InvalidArgumentError(fmt::format(
+            "--fscore: '{}' is not a list of thresholds like 0.001,0.005 (relative to the diagonal)", text));
+    return thresholds;
+}
+
 void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii)
 {
     sub->add_option("--levels", o.levels, "ring levels, e.g. 1,2,5,10,20 or 1-20")->capture_default_str();
@@ -188,6 +211,12 @@ void add_compare_options(CLI::App* sub, CompareCliOptions& o)
                     "most triangle bounds per direction before the interval reached is reported (default "
                     "2,000,000 + 20 x the faces of the sampled mesh)")
         ->check(in_range(1, kMaxHausdorffBudget, true));
+    sub->add_option("--fscore", o.fscore,
+                    "F-score thresholds relative to the original's bounding-box diagonal, e.g. 0.001,0.005 "
+                    "(area-weighted face samples; in the JSON and the text report)");
+    sub->add_option("--histogram", o.histogram,
+                    "N bins over [0, max] of each direction's sample distances, in the JSON report")
+        ->check(in_range(1, double(kMaxHistogramBins), true));
 }
 
 CompareOptions to_compare_options(const CompareCliOptions& o)
@@ -207,6 +236,8 @@ CompareOptions to_compare_options(const CompareCliOptions& o)
     c.sampling.edges = !o.no_edge_samples;
     c.sampling.faces = !o.no_face_samples;
     validate(c.sampling);
+    c.summary.fscore_thresholds = parse_fscore(o.fscore);
+    c.summary.histogram_bins = o.histogram;
     if (o.hausdorff == "sampled") {
         c.hausdorff.reset();
     } else {

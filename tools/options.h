@@ -24,6 +24,12 @@ std::vector<int> parse_levels(const std::string& text);
 //!        or > kMaxRadius, or more than kMaxRadii radii.
 std::vector<double> parse_radii(const std::string& text);
 
+//! Parses F-score thresholds such as "0.001,0.005" (relative to the diagonal),
+//! or "" (none).
+//! \throw InvalidArgumentError on a malformed list, a threshold not in (0, 1e6]
+//!        or more than kMaxFscoreThresholds thresholds.
+std::vector<double> parse_fscore(const std::string& text);
+
 //! Options of the roughness profile shared by profile, compare and batch.
 struct ProfileCliOptions
 {
@@ -55,6 +61,8 @@ struct CompareCliOptions
     double hausdorff_tolerance = 0.0;  // 0: 1e-4, or none when an absolute tolerance is given
     double hausdorff_abs_tolerance = 0.0;
     std::size_t hausdorff_budget = 0;  // 0: the library's default
+    std::string fscore;                // F-score thresholds, relative; empty: none
+    std::size_t histogram = 0;         // histogram bins; 0: none
 };
 void add_compare_options(CLI::App* sub, CompareCliOptions& o);
 CompareOptions to_compare_options(const CompareCliOptions& o);

@@ -11,10 +11,12 @@
 #include "meshdiff/io.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/roughness_distance.h"
+#include "meshdiff/same_connectivity.h"
 #include "meshdiff/sampling.h"
 #include "meshdiff/surface_distance.h"
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace meshdiff {
@@ -34,6 +36,13 @@ struct CompareOptions
     //! original surface (Comparison::processed_vertex_distance), for a
     //! distance map; it reuses the index of the surface distance.
     bool vertex_distances = false;
+    //! F-score thresholds and histogram bins of the surface distance (the
+    //! area-weighted means, Chamfer and PSNR are always computed).
+    SummaryOptions summary{};
+    //! Keep the samples of both directions and their distances
+    //! (Comparison::forward_samples, backward_samples; about 40 bytes per
+    //! sample and direction), e.g. for sample_cloud.h.
+    bool keep_samples = false;
 };
 
 struct Comparison
@@ -48,6 +57,14 @@ struct Comparison
     //! With CompareOptions::vertex_distances: per vertex of the processed mesh,
     //! its exact distance to the original surface.
     std::vector<double> processed_vertex_distance;
+    //! Displacement and normal deviation when both meshes have the same
+    //! connectivity (same_connectivity.h); else std::nullopt and the reason.
+    std::optional<SameConnectivity> same_connectivity;
+    std::string same_connectivity_unavailable;
+    //! With CompareOptions::keep_samples: the samples of the original
+    //! (forward) and of the processed mesh (backward) and their distances.
+    SampledDirection forward_samples;
+    SampledDirection backward_samples;
 };
 
 //! Runs the halves asked for in \p options.

@@ -23,6 +23,8 @@
 #include "meshdiff/point_triangle.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/roughness_distance.h"
+#include "meshdiff/same_connectivity.h"
+#include "meshdiff/sample_cloud.h"
 #include "meshdiff/sampling.h"
 #include "meshdiff/shapes.h"
 #include "meshdiff/smoothing.h"

@@ -198,7 +198,37 @@ nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal)
     j["samples"] = s.n_samples();
     j["samples_by_kind"] = {{"vertex", s.n_vertex}, {"edge", s.n_edge}, {"face", s.n_face}};
     j["relative"] = block(relative_to(s, diagonal));
+    if (s.area_weighted) {
+        const AreaWeightedStats& a = *s.area_weighted;
+        j["area_weighted"] = {{"mean", a.mean},
+                              {"rms", a.rms},
+                              {"mean_square", a.mean_square},
+                              {"face_samples", a.n_face},
+                              {"area", a.area},
+                              {"area_fraction", a.area_fraction},
+                              {"relative", {{"mean", a.mean / diagonal}, {"rms", a.rms / diagonal}}}};
+    } else {
+        j["area_weighted"] = nullptr;
+    }
+    if (!s.histogram.counts.empty())  // only when asked for (--histogram)
+        j["histogram"] = {{"edges", s.histogram.edges}, {"counts", s.histogram.counts}};
     return j;
+}
+
+nlohmann::json same_connectivity_json(const SameConnectivity& s, double diagonal)
+{
+    return {{"vertices", s.vertices},
+            {"faces", s.faces},
+            {"degenerate_faces_skipped", s.degenerate_faces},
+            {"displacement",
+             {{"rms", s.displacement_rms},
+              {"max", s.displacement_max},
+              {"max_vertex", s.max_vertex},
+              {"relative", {{"rms", s.displacement_rms / diagonal}, {"max", s.displacement_max / diagonal}}}}},
+            {"normal_deviation_deg", {{"rms", s.normal_rms_deg}, {"max", s.normal_max_deg}, {"max_face", s.max_face}}},
+            {"definition",
+             "displacement |p' - p| per vertex; normal deviation: angle between the unit normals of the same face in "
+             "both meshes, faces non-degenerate in both; RMS and max over vertices (faces), each counted once"}};
 }
 
 namespace {
@@ -261,8 +291,49 @@ nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOpt
                      {"relative", {{"lower", d.hausdorff / d.diagonal}, {"upper", nullptr}}},
                      {"relative_metro", {{"lower", d.hausdorff / d.metro_diagonal}, {"upper", nullptr}}}};
     }
+    nlohmann::json chamfer = nullptr, fscore = nullptr, psnr = nullptr;
+    if (d.summary) {
+        const SummaryMetrics& m = *d.summary;
+        chamfer = {{"l1", m.chamfer_l1},
+                   {"l2", m.chamfer_l2},
+                   {"l1_relative", m.chamfer_l1 / d.diagonal},
+                   {"l2_relative", m.chamfer_l2 / (d.diagonal * d.diagonal)},
+                   {"convention",
+                    "area-weighted face samples; l1 = mean forward + mean backward distance; l2 = mean squared forward "
+                    "+ mean squared backward distance (sums, not halves); l1_relative = l1 / diagonal, l2_relative = "
+                    "l2 / diagonal^2"}};
+        fscore = nlohmann::json::array();
+        for (const FScore& f : d.fscore)
+            fscore.push_back({{"threshold", f.threshold},
+                              {"threshold_absolute", f.threshold_absolute},
+                              {"precision", f.precision},
+                              {"recall", f.recall},
+                              {"fscore", f.fscore}});
+        const Psnr& p = m.psnr;
+        psnr = {{"peak", p.peak},
+                {"peak_is", "bounding-box diagonal of the original mesh"},
+                {"factor", p.factor},
+                {"formula", "10 log10(factor peak^2 / e), e = mse or hausdorff^2 (MPEG pc_error); null when e = 0"},
+                {"mse", p.mse},
+                {"mse_is", "max of the area-weighted mean squared distances of both directions"},
+                {"mse_db", number_or_null(p.mse_db)},
+                {"forward_mse_db", number_or_null(p.forward_mse_db)},
+                {"backward_mse_db", number_or_null(p.backward_mse_db)},
+                {"hausdorff", p.hausdorff},
+                {"hausdorff_is", "the sampled symmetric Hausdorff distance"},
+                {"hausdorff_db", number_or_null(p.hausdorff_db)},
+                {"forward_hausdorff_db", number_or_null(p.forward_hausdorff_db)},
+                {"backward_hausdorff_db", number_or_null(p.backward_hausdorff_db)}};
+    }
     return {{"forward", forward},
             {"backward", backward},
+            {"chamfer", chamfer},
+            {"fscore", fscore},
+            {"fscore_samples",
+             "precision: area share of the processed mesh's face samples closer than the threshold to the original; "
+             "recall: area share of the original's face samples closer than the threshold to the processed mesh"},
+            {"psnr", psnr},
+            {"summary_unavailable", d.summary ? nlohmann::json(nullptr) : nlohmann::json(d.summary_unavailable)},
             {"hausdorff", hausdorff},
             {"sampled_hausdorff", d.hausdorff},
             {"sampled_hausdorff_relative", d.hausdorff / d.diagonal},
@@ -303,6 +374,13 @@ nlohmann::json comparison_json(const Comparison& c)
         j["surface_distance"] = surface_distance_json(*c.distance, c.options.sampling);
     } else {
         j["surface_distance"] = nullptr;
+    }
+    if (c.same_connectivity) {
+        j["same_connectivity"] = same_connectivity_json(*c.same_connectivity, c.original.box.diagonal());
+        j["same_connectivity_unavailable"] = nullptr;
+    } else {
+        j["same_connectivity"] = nullptr;
+        j["same_connectivity_unavailable"] = c.same_connectivity_unavailable;
     }
     return j;
 }

@@ -91,6 +91,52 @@ std::string stats_text(const std::string& title, const DistanceStats& s, double 
     return out;
 }
 
+// The summary metrics of a surface distance (METHOD.md section 6).
+std::string summary_text(const SurfaceDistance& d)
+{
+    if (!d.summary) return fmt::format("Summary metrics unavailable: {}\n", d.summary_unavailable);
+    const SummaryMetrics& m = *d.summary;
+    const AreaWeightedStats& f = *d.forward.area_weighted;
+    const AreaWeightedStats& b = *d.backward.area_weighted;
+    std::string s = "Summary metrics (face samples, each weighted by the area it stands for):\n";
+    s += fmt::format("  area-weighted mean   forward {:.6g} ({:.6g} wrt diagonal), backward {:.6g} ({:.6g})\n", f.mean,
+                     f.mean / d.diagonal, b.mean, b.mean / d.diagonal);
+    s += fmt::format("  area-weighted RMS    forward {:.6g} ({:.6g} wrt diagonal), backward {:.6g} ({:.6g})\n", f.rms,
+                     f.rms / d.diagonal, b.rms, b.rms / d.diagonal);
+    if (f.area_fraction < 1.0 || b.area_fraction < 1.0)
+        s += fmt::format("  area with face samples: {:.4g}% and {:.4g}% of the surfaces\n", 100.0 * f.area_fraction,
+                         100.0 * b.area_fraction);
+    s += fmt::format("  Chamfer L1 (mean forward + mean backward)        {:.6g} ({:.6g} wrt diagonal)\n", m.chamfer_l1,
+                     m.chamfer_l1 / d.diagonal);
+    s += fmt::format("  Chamfer L2 (mean squared forward + backward)     {:.6g} ({:.6g} wrt diagonal^2)\n",
+                     m.chamfer_l2, m.chamfer_l2 / (d.diagonal * d.diagonal));
+    auto db = [](double x) { return std::isfinite(x) ? fmt::format("{:.4f} dB", x) : std::string("inf"); };
+    s += fmt::format("  PSNR (MPEG: 10 log10(3 peak^2 / e), peak = diagonal {:.6g}): mean squared {}, Hausdorff {}\n",
+                     m.psnr.peak, db(m.psnr.mse_db), db(m.psnr.hausdorff_db));
+    for (const FScore& x : d.fscore)
+        s += fmt::format("  F-score at {:g} x diagonal ({:.6g}): {:.6f} (precision {:.6f}, recall {:.6f})\n",
+                         x.threshold, x.threshold_absolute, x.fscore, x.precision, x.recall);
+    return s;
+}
+
+std::string same_connectivity_text(const Comparison& c)
+{
+    if (!c.same_connectivity)
+        return fmt::format("\nSame connectivity: no ({}); no displacement or normal deviation\n",
+                           c.same_connectivity_unavailable);
+    const SameConnectivity& m = *c.same_connectivity;
+    const double diag = c.original.box.diagonal();
+    std::string s = fmt::format("\nSame connectivity ({} vertices, {} faces compared", m.vertices, m.faces);
+    if (m.degenerate_faces) s += fmt::format(", {} degenerate left out", m.degenerate_faces);
+    s += "):\n";
+    s += fmt::format("  vertex displacement  RMS {:.6g} ({:.6g} wrt diagonal), max {:.6g} ({:.6g}) at vertex {}\n",
+                     m.displacement_rms, m.displacement_rms / diag, m.displacement_max, m.displacement_max / diag,
+                     m.max_vertex);
+    s += fmt::format("  face normal angle    RMS {:.6g} deg, max {:.6g} deg at face {}\n", m.normal_rms_deg,
+                     m.normal_max_deg, m.max_face);
+    return s;
+}
+
 }  // namespace
 
 std::string comparison_text(const Comparison& c)
@@ -179,7 +225,9 @@ std::string comparison_text(const Comparison& c)
                 "widened union box, diagonal {:.6g})\n",
                 d.hausdorff, d.hausdorff / d.diagonal, d.hausdorff / d.metro_diagonal, d.metro_diagonal);
         }
+        s += summary_text(d);
     }
+    s += same_connectivity_text(c);
     return s;
 }
 

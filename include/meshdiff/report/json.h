@@ -42,8 +42,14 @@ nlohmann::json exact_profile_json(const RoughnessProfile& estimated, const Exact
 //! The roughness_distance object of "meshdiff.compare/2".
 nlohmann::json roughness_distance_json(const RoughnessDistance& d);
 
-//! One direction's distance statistics (absolute, and relative to \p diagonal).
+//! One direction's distance statistics (absolute, and relative to \p diagonal),
+//! its area-weighted statistics (null without face samples) and histogram
+//! (only when computed).
 nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal);
+
+//! The same_connectivity object of "meshdiff.compare/2" (distances also
+//! relative to \p diagonal, the original's).
+nlohmann::json same_connectivity_json(const SameConnectivity& s, double diagonal);
 
 //! The surface_distance object of "meshdiff.compare/2": both directions (with
 //! their certified Hausdorff distances when computed, else null), the

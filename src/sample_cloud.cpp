@@ -1,0 +1,91 @@
+#include "meshdiff/sample_cloud.h"
+
+#include "meshdiff/error.h"
+#include "meshdiff/output_file.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+
+namespace meshdiff {
+
+namespace {
+
+// Per vertex, the lowest-index face using it (-1 for an unreferenced vertex).
+std::vector<std::int32_t> first_face_of_vertex(const Mesh& m)
+{
+    std::vector<std::int32_t> first(m.n_vertices(), -1);
+    for (std::size_t f = m.n_faces(); f-- > 0;)
+        for (auto v : m.faces[f]) first[std::size_t(v)] = std::int32_t(f);
+    return first;
+}
+
+void check(const char* name, const Mesh& m, const SampledDirection& d)
+{
+    const SurfaceSamples& s = d.samples;
+    if (d.distances.size() != s.size() || s.kind.size() != s.size() || s.element.size() != s.size())
+        throw InvalidArgumentError(
+            fmt::format("write_sample_cloud: {} direction has {} samples, {} distances, {} "
+                        "kinds and {} elements",
+                        name, s.size(), d.distances.size(), s.kind.size(), s.element.size()));
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const std::size_t n = s.kind[i] == SampleKind::OnVertex ? m.n_vertices() : m.n_faces();
+        if (s.element[i] >= n)
+            throw InvalidArgumentError(
+                fmt::format("write_sample_cloud: {} sample {} names element {} of {}", name, i, s.element[i], n));
+    }
+}
+
+}  // namespace
+
+void write_sample_cloud(const std::filesystem::path& path, const Mesh& a, const SampledDirection& forward,
+                        const Mesh& b, const SampledDirection& backward, const std::vector<std::string>& comments)
+{
+    check("forward", a, forward);
+    check("backward", b, backward);
+    write_atomically(path, [&](const std::filesystem::path& tmp) {
+        std::ofstream out(tmp, std::ios::binary);
+        if (!out) throw IoError(fmt::format("{}: cannot open for writing", path.string()));
+        out << "ply\nformat binary_little_endian 1.0\ncomment written by meshdiff: surface distance samples\n";
+        out << "comment direction 0 = forward (a sample of the original, distance to the processed surface), "
+               "1 = backward (a sample of the processed mesh, distance to the original surface)\n";
+        out << "comment kind 0 = vertex, 1 = edge, 2 = face; face = the face sampled (edge: the lowest-index face "
+               "having the edge; vertex: the lowest-index face using the vertex) of the sampled mesh\n";
+        for (std::string c : comments) {
+            std::replace_if(
+                c.begin(), c.end(), [](char ch) { return ch == '\n' || ch == '\r'; }, ' ');
+            out << "comment " << c << "\n";
+        }
+        out << "element vertex " << forward.samples.size() + backward.samples.size() << "\n";
+        out << "property double x\nproperty double y\nproperty double z\nproperty double distance\n";
+        out << "property uchar kind\nproperty uchar direction\nproperty int face\nend_header\n";
+        static_assert(sizeof(double) == 8 && sizeof(std::int32_t) == 4, "PLY types");
+        std::uint8_t direction = 0;
+        for (const auto& [mesh, d] : {std::pair{&a, &forward}, {&b, &backward}}) {
+            const std::vector<std::int32_t> first = first_face_of_vertex(*mesh);
+            const SurfaceSamples& s = d->samples;
+            std::vector<char> buf(kSampleCloudStride * s.size());
+            char* p = buf.data();
+            for (std::size_t i = 0; i < s.size(); ++i) {
+                std::memcpy(p, s.points[i].data(), 24);
+                std::memcpy(p + 24, &d->distances[i], 8);
+                const auto kind = std::uint8_t(s.kind[i]);
+                const std::int32_t face =
+                    s.kind[i] == SampleKind::OnVertex ? first[s.element[i]] : std::int32_t(s.element[i]);
+                std::memcpy(p + 32, &kind, 1);
+                std::memcpy(p + 33, &direction, 1);
+                std::memcpy(p + 34, &face, 4);
+                p += kSampleCloudStride;
+            }
+            out.write(buf.data(), std::streamsize(buf.size()));
+            ++direction;
+        }
+        out.close();
+        if (!out) throw IoError(fmt::format("{}: write failed", path.string()));
+    });
+}
+
+}  // namespace meshdiff
