@@ -125,8 +125,9 @@ std::string cell(const nlohmann::json& v)
 }
 
 // The scalars under \p j, one column each, named by their path joined with
-// '_' (below \p prefix). Lists of numbers (histograms, coordinates) and the
-// sampling settings are left out; a list of objects with a "threshold" (the
+// '_' (below \p prefix); strings only for the Hausdorff method and where it
+// is attained, and the reasons of *_unavailable fields. Lists of numbers
+// (histograms, coordinates) and the sampling settings are left out; a list of objects with a "threshold" (the
 // F-scores) gives one group of columns per threshold.
 void flatten(Table& t, std::size_t row, const std::string& prefix, const nlohmann::json& j)
 {
@@ -145,7 +146,8 @@ void flatten(Table& t, std::size_t row, const std::string& prefix, const nlohman
                     flatten(t, row, fmt::format("{}_{}", name, cell(e["threshold"])), rest);
                 }
         } else if (!v.is_string() || name.find("hausdorff_method") != std::string::npos ||
-                   name.find("hausdorff_attained") != std::string::npos) {
+                   name.find("hausdorff_attained") != std::string::npos ||
+                   (name.size() > 12 && name.compare(name.size() - 12, 12, "_unavailable") == 0)) {
             t.set(row, name, cell(v));
         }
     }
@@ -250,6 +252,8 @@ int run_summary(const SummaryArgs& a)
                         table.set(row, fmt::format("{}_{}", dir, k), cell(sd[dir][k]));
             flatten(table, row, "", sd);
         }
+        if (r.contains("same_connectivity") && r["same_connectivity"].is_object())
+            flatten(table, row, "same_connectivity", r["same_connectivity"]);
         if (r.contains("roughness_distance") && r["roughness_distance"].is_object())
             roughness_columns(table, row, r["roughness_distance"]);
     }
