@@ -325,6 +325,14 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         summarize(r.forward, a, d, recall);
         if (forward) *forward = std::move(d);
         d = SampledDirection{};  // free the samples before the certification
+        if (b_vertex_distances) {
+            if (certify) {
+                r.a_vertex_distance.resize(vq.size());
+                for (std::size_t v = 0; v < vq.size(); ++v) r.a_vertex_distance[v] = vq[v].distance;
+            } else {
+                r.a_vertex_distance = vertex_distances(a, index_b);
+            }
+        }
         if (certify)
             r.forward_hausdorff = detail::certified_hausdorff(a, b, index_b, *certify, seed_of(a, r.forward), vq);
     }

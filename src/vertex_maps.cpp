@@ -8,10 +8,24 @@
 
 namespace meshdiff {
 
-VertexMap distance_map(const Comparison& c, std::optional<std::pair<double, double>> color_range)
+std::pair<double, double> distance_map_range(const Comparison& c)
 {
-    const std::vector<double>& d = c.processed_vertex_distance;
-    if (d.size() != c.processed.topology.vertices)
+    if (c.processed_vertex_distance.size() != c.processed.topology.vertices ||
+        c.original_vertex_distance.size() != c.original.topology.vertices)
+        throw InvalidArgumentError("distance_map_range: the comparison was made without vertex distances");
+    double hi = 0.0;
+    for (double x : c.processed_vertex_distance) hi = std::max(hi, x);
+    for (double x : c.original_vertex_distance) hi = std::max(hi, x);
+    return {0.0, hi};
+}
+
+VertexMap distance_map(const Comparison& c, MapSide side, std::optional<std::pair<double, double>> color_range)
+{
+    const bool processed = side == MapSide::Processed;
+    const std::vector<double>& d = processed ? c.processed_vertex_distance : c.original_vertex_distance;
+    const MeshFacts& self = processed ? c.processed : c.original;
+    const MeshFacts& other = processed ? c.original : c.processed;
+    if (d.size() != self.topology.vertices)
         throw InvalidArgumentError("distance_map: the comparison was made without vertex distances");
     double lo = 0.0, hi = 0.0;
     if (color_range) {
@@ -25,25 +39,34 @@ VertexMap distance_map(const Comparison& c, std::optional<std::pair<double, doub
     VertexMap m;
     m.scalars.push_back({"distance", d});
     m.colors = sequential_colors(d, lo, hi);
-    m.comments = {
-        fmt::format("per-vertex distance of {} to the surface of {}", c.processed.input.path, c.original.input.path),
-        fmt::format("colour: blue (low) to red (high) over [{:.9g}, {:.9g}]", lo, hi)};
+    m.comments = {fmt::format("per-vertex distance of {} to the surface of {}", self.input.path, other.input.path),
+                  fmt::format("colour: blue (low) to red (high) over [{:.9g}, {:.9g}]", lo, hi)};
     // Where the certified one-sided Hausdorff distances are attained on this
-    // (the processed) mesh: the backward one at a point of it, the forward one
-    // at the closest point of it to a point of the original.
+    // mesh: the one whose samples lie on it at a point of it, the other at the
+    // closest point of it to a point of the other mesh.
     if (c.distance && c.distance->backward_hausdorff && c.distance->forward_hausdorff) {
-        const HausdorffLocation& b = c.distance->backward_hausdorff->location;
-        const HausdorffLocation& f = c.distance->forward_hausdorff->location;
+        const CertifiedHausdorff& from_self =
+            processed ? *c.distance->backward_hausdorff : *c.distance->forward_hausdorff;
+        const CertifiedHausdorff& to_self =
+            processed ? *c.distance->forward_hausdorff : *c.distance->backward_hausdorff;
+        const char* self_name = processed ? "processed" : "original";
+        const char* other_name = processed ? "original" : "processed";
+        const HausdorffLocation& a = from_self.location;
+        const HausdorffLocation& b = to_self.location;
         m.comments.push_back(
-            fmt::format("hausdorff processed->original in [{:.9g}, {:.9g}] attained at {:.9g} {:.9g} {:.9g} on face {}",
-                        c.distance->backward_hausdorff->lower, c.distance->backward_hausdorff->upper, b.point.x(),
-                        b.point.y(), b.point.z(), b.face));
-        m.comments.push_back(fmt::format(
-            "hausdorff original->processed in [{:.9g}, {:.9g}] attained nearest to {:.9g} {:.9g} {:.9g} on face {}",
-            c.distance->forward_hausdorff->lower, c.distance->forward_hausdorff->upper, f.closest_point.x(),
-            f.closest_point.y(), f.closest_point.z(), f.closest_face));
+            fmt::format("hausdorff {}->{} in [{:.9g}, {:.9g}] attained at {:.9g} {:.9g} {:.9g} on face {}", self_name,
+                        other_name, from_self.lower, from_self.upper, a.point.x(), a.point.y(), a.point.z(), a.face));
+        m.comments.push_back(
+            fmt::format("hausdorff {}->{} in [{:.9g}, {:.9g}] attained nearest to {:.9g} {:.9g} {:.9g} on face {}",
+                        other_name, self_name, to_self.lower, to_self.upper, b.closest_point.x(), b.closest_point.y(),
+                        b.closest_point.z(), b.closest_face));
     }
     return m;
+}
+
+VertexMap distance_map(const Comparison& c, std::optional<std::pair<double, double>> color_range)
+{
+    return distance_map(c, MapSide::Processed, color_range);
 }
 
 VertexMap profile_map(const RoughnessProfile& profile, const std::string& source, double color_range)

@@ -131,4 +131,37 @@ SLURM_ARRAY_TASK_ID=x "$bin" batch "$tmp/pairs.csv" --out "$tmp/x.jsonl" --shard
 [ $? -eq 2 ] && grep -q "SLURM_ARRAY_TASK_ID='x' is not a non-negative integer" "$tmp/stderr" && pass ||
     fail "bad Slurm variable: $(cat "$tmp/stderr")"
 
+# --- distance maps of both meshes: compare --distance-maps, and batch --maps-dir (one pair of files per id)
+expect 0 compare "$tmp/a.ply" "$tmp/b.ply" --levels 1 --distance-maps "$tmp/m" &&
+    grep -q "^Distance map of the original: $tmp/m_original.ply" "$tmp/stdout" &&
+    grep -q "^Distance map of the processed: $tmp/m_processed.ply" "$tmp/stdout" && pass ||
+    fail "compare --distance-maps: $(tail -3 "$tmp/stdout")"
+python3 - "$tmp/m_original.ply" "$tmp/m_processed.ply" <<'PY' && pass || fail "the two maps do not share one colour range"
+import sys
+def header(p):
+    lines = []
+    with open(p, "rb") as f:
+        for raw in f:
+            line = raw.decode("ascii", "replace").strip()
+            lines.append(line)
+            if line == "end_header":
+                return lines
+a, b = header(sys.argv[1]), header(sys.argv[2])
+ra = [l for l in a if l.startswith("comment colour:")]
+rb = [l for l in b if l.startswith("comment colour:")]
+assert ra and ra == rb, (ra, rb)
+assert any("of " in l and "a.ply to the surface of" in l for l in a)
+assert any("b.ply to the surface of" in l for l in b)
+PY
+expect 2 compare "$tmp/a.ply" "$tmp/b.ply" --distance-maps "$tmp/m" --distance-map "$tmp/x.ply"
+printf 'original,processed,id
+a.ply,b.ply,first pair
+a.ply,b.ply,second
+' > "$tmp/pm.csv"
+expect 0 batch "$tmp/pm.csv" --out "$tmp/pm.jsonl" --maps-dir "$tmp/maps" "${opts[@]}" &&
+    [ -f "$tmp/maps/second_original.ply" ] && [ -f "$tmp/maps/second_processed.ply" ] &&
+    [ "$(ls "$tmp/maps" | grep -c '^first_pair-[0-9a-f]*_original.ply$')" -eq 1 ] &&
+    grep -q '"distance_maps":{"original":"[^"]*maps/second_original.ply"' "$tmp/pm.jsonl" && pass ||
+    fail "batch --maps-dir: $(ls "$tmp/maps" 2>&1) $(grep -o '"distance_maps":{[^}]*}' "$tmp/pm.jsonl")"
+
 finish

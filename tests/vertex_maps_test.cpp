@@ -79,6 +79,47 @@ TEST(DistanceMap, DistanceIsTheBruteForceDistanceOfEveryProcessedVertex)
     }
 }
 
+TEST(DistanceMap, OriginalSideIsTheBruteForceDistanceOfEveryOriginalVertex)
+{
+    const Comparison& c = distance_comparison();
+    const VertexMap m = distance_map(c, MapSide::Original);
+    ASSERT_EQ(m.scalars.size(), 1u);
+    const auto& d = m.scalars[0].values;
+    ASSERT_EQ(d.size(), sphere().mesh.n_vertices());
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        const double want = closest_point_brute_force(ellipsoid().mesh, sphere().mesh.points[i]).distance;
+        EXPECT_NEAR(d[i], want, 1e-15 * want) << i;
+    }
+    // The comments name this side; the Hausdorff distance from the original
+    // is attained at a point of it (the forward location).
+    EXPECT_NE(m.comments[0].find("per-vertex distance of " + c.original.input.path), std::string::npos);
+    ASSERT_GE(m.comments.size(), 4u);
+    EXPECT_NE(m.comments[2].find("hausdorff original->processed"), std::string::npos) << m.comments[2];
+    // The processed side is distance_map(c), unchanged.
+    EXPECT_EQ(distance_map(c, MapSide::Processed).comments, distance_map(c).comments);
+}
+
+TEST(DistanceMap, BothSidesShareOneRangeWhenAsked)
+{
+    const Comparison& c = distance_comparison();
+    const auto range = distance_map_range(c);
+    double hi = 0.0;
+    for (double x : c.original_vertex_distance) hi = std::max(hi, x);
+    for (double x : c.processed_vertex_distance) hi = std::max(hi, x);
+    EXPECT_EQ(range.first, 0.0);
+    EXPECT_EQ(range.second, hi);
+    const VertexMap a = distance_map(c, MapSide::Original, range);
+    const VertexMap b = distance_map(c, MapSide::Processed, range);
+    EXPECT_EQ(a.comments[1], b.comments[1]);
+    // One colour means one distance: both ramps run over [0, hi].
+    EXPECT_EQ(a.colors, sequential_colors(a.scalars[0].values, 0.0, hi));
+    EXPECT_EQ(b.colors, sequential_colors(b.scalars[0].values, 0.0, hi));
+    EXPECT_NE(a.colors, distance_map(c, MapSide::Original).colors);  // its own maximum is below hi
+    CompareOptions o;
+    o.roughness = false;
+    EXPECT_THROW(distance_map_range(compare_meshes(sphere(), ellipsoid(), o)), InvalidArgumentError);
+}
+
 TEST(DistanceMap, DefaultRangeIsZeroToTheMaximumFromBlueToRed)
 {
     const VertexMap m = distance_map(distance_comparison());
@@ -135,6 +176,7 @@ TEST(DistanceMap, SameVertexDistancesWithoutTheSurfaceDistance)
     const Comparison c = compare_meshes(sphere(), ellipsoid(), o);
     EXPECT_FALSE(c.distance.has_value());
     EXPECT_EQ(c.processed_vertex_distance, distance_comparison().processed_vertex_distance);
+    EXPECT_EQ(c.original_vertex_distance, distance_comparison().original_vertex_distance);
     EXPECT_EQ(distance_map(c).scalars[0].values, distance_map(distance_comparison()).scalars[0].values);
 }
 

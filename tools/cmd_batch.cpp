@@ -16,9 +16,11 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -41,18 +43,36 @@ struct BatchArgs
     int threads = 0;
     bool quiet = false;
     double pair_timeout = 0.0;  // seconds; 0: none
+    std::string maps_dir;       // distance maps of every pair, when set
     CLI::App* app = nullptr;    // the parsed subcommand (its options are passed on to each pair)
 };
 
 // The exit_code of a pair that ran out of time (as coreutils' timeout).
 constexpr int kPairTimeout = 124;
 
+// The prefix of a pair's distance maps in --maps-dir: the id with every
+// character other than letters, digits, '.', '-' and '_' replaced by '_',
+// plus a hash of the id when that changed it (so that two ids stay two files).
+std::string map_prefix(const std::string& dir, const std::string& id)
+{
+    std::string safe;
+    for (const char ch : id)
+        safe += std::isalnum(static_cast<unsigned char>(ch)) || ch == '.' || ch == '-' || ch == '_' ? ch : '_';
+    if (safe.empty() || safe[0] == '.') safe = "_" + safe;
+    if (safe != id) {
+        std::uint64_t h = 14695981039346656037ull;  // FNV-1a
+        for (const char ch : id) h = (h ^ static_cast<unsigned char>(ch)) * 1099511628211ull;
+        safe += fmt::format("-{:08x}", std::uint32_t(h));
+    }
+    return (std::filesystem::path(dir) / safe).string();
+}
+
 // The command line of one pair's child process: `meshdiff compare ORIGINAL
 // PROCESSED --json -` with the batch's comparison options as they were given.
 std::vector<std::string> compare_args(const BatchArgs& a, const Pair& p)
 {
     std::vector<std::string> args{"meshdiff", "compare", p.original, p.processed};
-    static const std::set<std::string> batch_only = {"out", "shard", "quiet", "pair-timeout", "help"};
+    static const std::set<std::string> batch_only = {"out", "shard", "quiet", "pair-timeout", "maps-dir", "help"};
     for (const CLI::Option* o : a.app->get_options()) {
         if (o->count() == 0 || o->get_lnames().empty() || batch_only.count(o->get_lnames()[0])) continue;
         const std::string name = "--" + o->get_lnames()[0];
@@ -65,6 +85,7 @@ std::vector<std::string> compare_args(const BatchArgs& a, const Pair& p)
             args.push_back(value);
         }
     }
+    if (!a.maps_dir.empty()) args.insert(args.end(), {"--distance-maps", map_prefix(a.maps_dir, p.id)});
     args.insert(args.end(), {"--json", "-"});
     return args;
 }
@@ -136,6 +157,13 @@ int run_batch(const BatchArgs& a)
         throw IoError(fmt::format("{}: is a directory, not a pair list", a.pairs));
     const auto [shard, n_shards] = parse_shard(a.shard);
     to_compare_options(a.compare);  // every option checked here, before any pair runs
+    if (!a.maps_dir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(a.maps_dir, ec);
+        if (ec || !std::filesystem::is_directory(a.maps_dir))
+            throw IoError(fmt::format("{}: cannot create the maps folder ({})", a.maps_dir,
+                                      ec ? ec.message() : "not a directory"));
+    }
     const std::vector<Pair> pairs = read_pairs(a.pairs);
     const std::string self = self_executable();
 
@@ -167,6 +195,10 @@ int run_batch(const BatchArgs& a)
         line["elapsed_seconds"] =
             std::round(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1000.0) / 1000.0;
         line["meshdiff_version"] = MESHDIFF_VERSION;
+        if (code == kOk && !a.maps_dir.empty()) {
+            const std::string prefix = map_prefix(a.maps_dir, p.id);
+            line["distance_maps"] = {{"original", prefix + "_original.ply"}, {"processed", prefix + "_processed.ply"}};
+        }
         (code == kOk ? ok : failed) += 1;
         // One write of the whole record with its newline: a kill leaves a whole line or a torn last one.
         const std::string text = line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
@@ -207,6 +239,9 @@ void add_batch_command(CLI::App& app, Action& action)
                     "no limit")
         ->check(in_range(0, 1e7))
         ->capture_default_str();
+    sub->add_option("--maps-dir", args->maps_dir,
+                    "write both distance maps of every pair into this folder: ID_original.ply and ID_processed.ply "
+                    "(the id made file-safe), one colour scale per pair");
     args->app = sub;
     sub->callback([args, &action] { action = [args] { return run_batch(*args); }; });
 }

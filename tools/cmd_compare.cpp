@@ -8,9 +8,12 @@
 #include "meshdiff/vertex_maps.h"
 #include "options.h"
 
+#include <fmt/format.h>
+
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 namespace meshdiff::cli {
@@ -22,7 +25,9 @@ struct CompareArgs
     std::string original, processed;
     CompareCliOptions compare;
     std::string json;
-    std::string distance_map;
+    std::string distance_map;           // the processed mesh's map
+    std::string distance_map_original;  // the original's map
+    std::string distance_maps;          // prefix of both
     std::string samples_out;
     std::vector<double> color_range;
     int threads = 0;
@@ -31,11 +36,24 @@ struct CompareArgs
 int run_compare(const CompareArgs& a)
 {
     set_threads(a.threads);
-    for (const auto& [what, out] :
-         {std::pair{"--json", a.json}, {"--distance-map", a.distance_map}, {"--samples-out", a.samples_out}})
+    std::string map_processed = a.distance_map, map_original = a.distance_map_original;
+    if (!a.distance_maps.empty()) {
+        if (!map_processed.empty() || !map_original.empty())
+            throw InvalidArgumentError(
+                "--distance-maps PREFIX writes both maps: leave out --distance-map and "
+                "--distance-map-original");
+        map_processed = a.distance_maps + "_processed.ply";
+        map_original = a.distance_maps + "_original.ply";
+    }
+    if (!map_processed.empty() && map_processed == map_original)
+        throw InvalidArgumentError("--distance-map and --distance-map-original name the same file");
+    for (const auto& [what, out] : {std::pair{"--json", a.json},
+                                    {"--distance-map", map_processed},
+                                    {"--distance-map-original", map_original},
+                                    {"--samples-out", a.samples_out}})
         refuse_overwriting_inputs(what, out, {a.original, a.processed});
     CompareOptions options = to_compare_options(a.compare);
-    options.vertex_distances = !a.distance_map.empty();
+    options.vertex_distances = !map_processed.empty() || !map_original.empty();
     options.keep_samples = !a.samples_out.empty();
     if (options.keep_samples && !options.distance)
         throw InvalidArgumentError("--samples-out needs the surface distance: leave out --no-distance");
@@ -48,12 +66,23 @@ int run_compare(const CompareArgs& a)
     const LoadedMesh original = read_mesh(a.original);
     const LoadedMesh processed = read_mesh(a.processed);
     const Comparison c = compare_meshes(original, processed, options);
-    if (!a.distance_map.empty()) write_ply(a.distance_map, processed.mesh, distance_map(c, range));
+    // Both maps share one colour scale: the given range, else [0, the largest distance of both].
+    if (!range && !map_processed.empty() && !map_original.empty()) range = distance_map_range(c);
+    std::string legend;
+    for (const auto& [path, side, mesh] : {std::tuple{map_original, MapSide::Original, &original.mesh},
+                                           std::tuple{map_processed, MapSide::Processed, &processed.mesh}}) {
+        if (path.empty()) continue;
+        const VertexMap map = distance_map(c, side, range);
+        write_ply(path, *mesh, map);
+        legend += fmt::format("Distance map of the {}: {} (vertex property 'distance' to the {} surface; {})\n",
+                              side == MapSide::Original ? "original" : "processed", path,
+                              side == MapSide::Original ? "processed" : "original", map.comments[1]);
+    }
     if (!a.samples_out.empty())
         write_sample_cloud(a.samples_out, original.mesh, c.forward_samples, processed.mesh, c.backward_samples,
                            {"original " + a.original, "processed " + a.processed});
     if (!a.json.empty()) write_json(a.json, comparison_json(c));
-    if (a.json != "-") std::cout << comparison_text(c);
+    if (a.json != "-") std::cout << comparison_text(c) << legend;
     return 0;
 }
 
@@ -71,6 +100,11 @@ void add_compare_command(CLI::App& app, Action& action)
     sub->add_option("--json", args->json, "write the JSON report to FILE, or '-' for stdout");
     sub->add_option("--distance-map", args->distance_map,
                     "write the processed mesh with per-vertex distance to the original and a colour ramp as PLY");
+    sub->add_option("--distance-map-original", args->distance_map_original,
+                    "write the original mesh with per-vertex distance to the processed one as PLY (with "
+                    "--distance-map: one colour scale for both)");
+    sub->add_option("--distance-maps", args->distance_maps,
+                    "write both maps, PREFIX_original.ply and PREFIX_processed.ply, on one colour scale");
     sub->add_option("--samples-out", args->samples_out,
                     "write the samples of both directions with their distances as a binary PLY point cloud "
                     "(x y z distance kind direction face)");

@@ -33,8 +33,9 @@ struct CompareOptions
     //! keeps the sampled maximum only (`--hausdorff sampled`).
     std::optional<HausdorffOptions> hausdorff = HausdorffOptions{};
     //! Also the exact distance of every vertex of the processed mesh to the
-    //! original surface (Comparison::processed_vertex_distance), for a
-    //! distance map; it reuses the index of the surface distance.
+    //! original surface and of the original to the processed one
+    //! (Comparison::processed_vertex_distance, original_vertex_distance), for
+    //! distance maps; it reuses the indexes of the surface distance.
     bool vertex_distances = false;
     //! F-score thresholds and histogram bins of the surface distance (the
     //! area-weighted means, Chamfer and PSNR are always computed).
@@ -57,6 +58,8 @@ struct Comparison
     //! With CompareOptions::vertex_distances: per vertex of the processed mesh,
     //! its exact distance to the original surface.
     std::vector<double> processed_vertex_distance;
+    //! The same per vertex of the original mesh, to the processed surface.
+    std::vector<double> original_vertex_distance;
     //! Displacement and normal deviation when both meshes have the same
     //! connectivity (same_connectivity.h); else std::nullopt and the reason.
     std::optional<SameConnectivity> same_connectivity;

@@ -183,6 +183,9 @@ struct SurfaceDistance
     //! ones included) to the surface of A, in vertex order, from the index of A
     //! that the backward direction built (a per-vertex distance map of B).
     std::vector<double> b_vertex_distance;
+    //! Asked for with b_vertex_distance: the same for every vertex of A to the
+    //! surface of B, from the forward direction's index of B.
+    std::vector<double> a_vertex_distance;
     //! Chamfer and PSNR; std::nullopt (with summary_unavailable saying why)
     //! when a direction has no area-weighted statistics.
     std::optional<SummaryMetrics> summary;
@@ -240,7 +243,7 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
 //! Both directions, the symmetric Hausdorff distance and the diagonals.
 //! \p a is the original, \p b the processed mesh; \p options apply to both
 //! directions (an unset target means 10 x max(#faces A, #faces B)). With
-//! \p b_vertex_distances, SurfaceDistance::b_vertex_distance is filled too.
+//! \p b_vertex_distances, SurfaceDistance::b_vertex_distance and a_vertex_distance are filled too.
 //! With \p certify, both one-sided Hausdorff distances are also certified
 //! (hausdorff.h), reusing the indexes of the sampling.
 //! \throw InvalidArgumentError for invalid options or if they give no sample.

@@ -34,6 +34,26 @@ struct VertexMap
 //!        the range is not MIN < MAX.
 VertexMap distance_map(const Comparison& comparison, std::optional<std::pair<double, double>> color_range = {});
 
+//! Which mesh of a comparison a distance map shows.
+enum class MapSide
+{
+    Original,   //!< the original's vertices, distances to the processed surface
+    Processed,  //!< the processed mesh's vertices, distances to the original surface
+};
+
+//! The distance map of either mesh (distance_map(c, range) is the processed
+//! one): property "distance", colours as above; comments name the side, the
+//! range and where the certified Hausdorff distances are attained on that
+//! mesh. Give both maps of one comparison the same range (e.g.
+//! distance_map_range()) so that one colour means one distance on both.
+VertexMap distance_map(const Comparison& comparison, MapSide side,
+                       std::optional<std::pair<double, double>> color_range = {});
+
+//! [0, the largest vertex distance of both meshes]: one colour scale for the
+//! two maps of a comparison.
+//! \throw InvalidArgumentError if the comparison has no vertex distances.
+std::pair<double, double> distance_map_range(const Comparison& comparison);
+
 //! The per-vertex data of a profile made with keep_vertex_data: H, D_<level>
 //! per level, D_global, D_r<radius> per metric level (the radius's decimal
 //! point written p: D_r0p05), and `worst` (1 at the worst |D| vertices of some
