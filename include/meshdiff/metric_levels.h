@@ -19,10 +19,10 @@
 
 namespace meshdiff {
 
-//! The radii of `--radii default`: 0.0125 * 2^(k/2), k = 0..6 (0.0125 ...
-//! 0.1), geometric: from the edge length of a fine scan (igea, 134K vertices)
-//! to the extent of its ring level 9 (METHOD.md section 5a explains the choice
-//! and its upper bound, set by the cost).
+//! The radii of `--radii default`: 0.0125 * 2^(k/2), k = 0..8 (0.0125 ...
+//! 0.2), geometric: from the edge length of a fine scan (igea, 134K vertices)
+//! to the extent of its ring level 20 (METHOD.md section 5a explains the
+//! choice and its upper bound, set by the cost).
 std::vector<double> default_radii();
 
 //! Throws InvalidArgumentError unless every radius is finite and > 0.
