@@ -1,8 +1,8 @@
 //! \file morton.h
-//! \brief Vertices in Morton (Z-curve) order of their positions: the order in
-//! which the ring search (neighborhood.cpp) and the ball search
-//! (metric_levels.cpp) take their centres, so that consecutive centres are
-//! close in space.
+//! \brief Vertices in Morton (Z-curve) order of their positions, and the
+//! compact batches of centres built from it, shared by the ring search
+//! (neighborhood.cpp) and the ball search (metric_levels.cpp) so that the
+//! centres of a batch are close in space.
 #pragma once
 
 #include "meshdiff/mesh.h"
