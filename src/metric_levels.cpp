@@ -66,7 +66,7 @@ std::vector<std::uint32_t> bfs_patch(const Mesh& mesh, const Adjacency& adj, std
 // at radius index b, centre k's bit enters vertex u only from a neighbour that
 // has it, and only if u is inside the ball B(p_k, r_b), tested when the bit
 // arrives: so the vertices holding bit k are then N_{r_b}(k) plus k. A bit
-// refused at radius b stays on the vertex (refused_) and is tested again at
+// refused at radius b stays on the vertex (refused) and is tested again at
 // the next radius, where the vertex enters if it is inside the larger ball
 // (its neighbour inside the smaller one joins it to k), and the search goes on
 // from there. A vertex first reached by centre k at radius index b adds its
@@ -79,22 +79,28 @@ public:
 
     // \p r2: distinct squared radii, ascending.
     BatchBall(const Mesh& mesh, const Adjacency& adj, const std::vector<double>& values,
-              const std::vector<double>& weights, const std::vector<double>& r2)
-        : mesh_(mesh), adj_(adj), values_(values), weights_(weights), r2_(r2), nr_(r2.size()), where_(mesh.n_vertices())
+              const std::vector<double>& weights, const std::vector<double>& r2, bool with_sizes)
+        : mesh_(mesh),
+          adj_(adj),
+          values_(values),
+          weights_(weights),
+          r2_(r2),
+          nr_(r2.size()),
+          sizes_(with_sizes),
+          where_(mesh.n_vertices())
     {
         sum.resize(nr_ * kBatch);
         wsum.resize(nr_ * kBatch);
-        defined.resize(nr_ * kBatch);
         count.resize(nr_ * kBatch);
     }
 
-    // Fills sum, wsum, defined, count ([radius index][centre], cumulative
-    // over radii) for centres[0..nb).
+    // Fills sum, wsum and, if asked for, count ([radius index][centre],
+    // cumulative over radii) for centres[0..nb). wsum > 0 only if a vertex
+    // with a defined value was found (only those add to it).
     void run(const std::uint32_t* centres, std::size_t nb)
     {
         std::fill(sum.begin(), sum.end(), 0.0);
         std::fill(wsum.begin(), wsum.end(), 0.0);
-        std::fill(defined.begin(), defined.end(), 0u);
         std::fill(count.begin(), count.end(), 0u);
         if (++stamp_ == 0) {
             std::fill(where_.begin(), where_.end(), Where{});
@@ -147,13 +153,12 @@ public:
                 const std::size_t i = b * kBatch + k, j = (b - 1) * kBatch + k;
                 sum[i] += sum[j];
                 wsum[i] += wsum[j];
-                defined[i] += defined[j];
                 count[i] += count[j];
             }
     }
 
     std::vector<double> sum, wsum;
-    std::vector<std::uint32_t> defined, count;
+    std::vector<std::uint32_t> count;
 
 private:
     static constexpr std::uint32_t kOut = std::numeric_limits<std::uint32_t>::max();
@@ -202,7 +207,6 @@ private:
         const double wt = weights_[v], wx = wt * x;
         double* bsum = &sum[b * kBatch];
         double* bwsum = &wsum[b * kBatch];
-        std::uint32_t* bdefined = &defined[b * kBatch];
         std::uint32_t* bcount = &count[b * kBatch];
         std::uint64_t any = 0;
         for (int w = 0; w < W; ++w) {
@@ -218,11 +222,10 @@ private:
                 const double dx = px - cx_[k], dy = py - cy_[k], dz = pz - cz_[k];
                 if (dx * dx + dy * dy + dz * dz > r2) continue;
                 in |= std::uint64_t(1) << i;
-                ++bcount[k];
+                if (sizes_) ++bcount[k];
                 if (has) {
                     bsum[k] += wx;
                     bwsum[k] += wt;
-                    ++bdefined[k];
                 }
             }
             m.refused[w] |= offered & ~in;
@@ -272,6 +275,7 @@ private:
     const std::vector<double>& weights_;
     const std::vector<double>& r2_;
     const std::size_t nr_;
+    const bool sizes_;
     std::vector<Where> where_;
     std::uint32_t stamp_ = 0;
     std::uint32_t n_slots_ = 0;
@@ -362,7 +366,7 @@ BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
 
 #pragma omp parallel
     {
-        BatchBall<kBallWords> search(pm, padj, pvalues, pweights, r2);
+        BatchBall<kBallWords> search(pm, padj, pvalues, pweights, r2, with_sizes);
 #pragma omp for schedule(dynamic, 1)
         for (std::ptrdiff_t ib = 0; ib < std::ptrdiff_t(n_batches); ++ib) {
             const std::size_t first = std::size_t(ib) * kBatch;
@@ -372,7 +376,7 @@ BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
                 for (std::size_t c = 0; c < nb; ++c) {
                     const std::size_t i = slot[k] * kBatch + c;
                     const std::uint32_t v = order[centres[first + c]];
-                    if (search.defined[i] > 0 && search.wsum[i] > 0.0) m.mean[k][v] = search.sum[i] / search.wsum[i];
+                    if (search.wsum[i] > 0.0) m.mean[k][v] = search.sum[i] / search.wsum[i];
                     if (with_sizes) m.size[k][v] = search.count[i];
                 }
         }
