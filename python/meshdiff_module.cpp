@@ -805,7 +805,7 @@ Options (keyword-only, as `meshdiff profile`):
   levels=range(1, 21), global_level=True, curvature="goldfeather",
   weighting="none", threads=0   (see compare())
   radii=None     metric levels [--radii]: a sequence of radii > 0 on the unit-scaled
-                 mesh, or "default" (0.0125 * 2**(k/2), k = 0..6); adds "radii",
+                 mesh, or "default" (0.0125 * 2**(k/2), k = 0..8); adds "radii",
                  "sigma_radii" and "radius_details" to the dict (METHOD.md 5a)
 )doc";
 

@@ -24,7 +24,7 @@ shared=$(realpath "$here/../../shared/data/meshes")
 out=$here/out/7_radii
 work=$here/out/work/radii
 decimater=${DECIMATER:-OpenMesh-commandlineDecimater}
-radii=${RADII:-0.0125,0.0177,0.025,0.0354,0.05,0.0707,0.1,0.141,0.2}
+radii=${RADII:-default}
 mkdir -p "$out" "$work"
 
 # 1. tori

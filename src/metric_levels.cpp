@@ -7,10 +7,9 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <utility>
 
 namespace meshdiff {
@@ -18,7 +17,7 @@ namespace meshdiff {
 std::vector<double> default_radii()
 {
     std::vector<double> r;
-    for (int k = 0; k <= 6; ++k) r.push_back(0.0125 * std::pow(2.0, 0.5 * k));
+    for (int k = 0; k <= 8; ++k) r.push_back(0.0125 * std::pow(2.0, 0.5 * k));
     return r;
 }
 
@@ -44,92 +43,253 @@ std::vector<double> vertex_areas(const Mesh& mesh)
 
 namespace {
 
-// One centre's ball search, with buffers reused across centres (one per thread).
-class BallSearch
+// One centre's patch, for ball_patch(): a breadth-first search that enters
+// only vertices inside the ball.
+std::vector<std::uint32_t> bfs_patch(const Mesh& mesh, const Adjacency& adj, std::uint32_t v, double r2)
+{
+    std::vector<char> seen(mesh.n_vertices(), 0);
+    std::vector<std::uint32_t> found{v};
+    seen[v] = 1;
+    const Vec3& c = mesh.points[v];
+    for (std::size_t q = 0; q < found.size(); ++q)
+        for (const std::uint32_t* it = adj.begin(found[q]); it != adj.end(found[q]); ++it)
+            if (!seen[*it]) {
+                seen[*it] = 1;
+                if ((mesh.points[*it] - c).squaredNorm() <= r2) found.push_back(*it);
+            }
+    return found;
+}
+
+// Bit-parallel ball search from W * 64 centres at a time (the ring search of
+// neighborhood.cpp, with the ball as a filter). Bit k of a vertex's masks
+// stands for centre k of the batch. The radii are taken in increasing order;
+// at radius index b, centre k's bit enters vertex u only from a neighbour that
+// has it, and only if u is inside the ball B(p_k, r_b), tested when the bit
+// arrives: so the vertices holding bit k are then N_{r_b}(k) plus k. A bit
+// refused at radius b stays on the vertex (refused) and is tested again at
+// the next radius, where the vertex enters if it is inside the larger ball
+// (its neighbour inside the smaller one joins it to k), and the search goes on
+// from there. A vertex first reached by centre k at radius index b adds its
+// value to centre k's sums of b (then cumulated over b).
+template <int W>
+class BatchBall
 {
 public:
-    BallSearch(const Mesh& mesh, const Adjacency& adj)
-        : mesh_(mesh), adj_(adj), seen_(mesh.n_vertices()), b2_(mesh.n_vertices(), 0.0)
-    {}
+    static constexpr std::size_t kBatch = 64 * W;
 
-    // Finds the vertices joined to \p v inside B(p_v, sqrt(r2max)), in
-    // breadth-first order (v first), and for each the smallest squared radius
-    // whose ball joins it to v (key()).
-    void run(std::uint32_t v, double r2max)
+    // \p r2: distinct squared radii, ascending.
+    BatchBall(const Mesh& mesh, const Adjacency& adj, const std::vector<double>& values,
+              const std::vector<double>& weights, const std::vector<double>& r2, bool with_sizes)
+        : mesh_(mesh),
+          adj_(adj),
+          values_(values),
+          weights_(weights),
+          r2_(r2),
+          nr_(r2.size()),
+          sizes_(with_sizes),
+          where_(mesh.n_vertices())
     {
-        ++current_;
-        found_.clear();
-        const Vec3& c = mesh_.points[v];
-        seen_[v] = {0.0, current_};
-        found_.push_back(v);
-        bool exact_needed = false;
-        for (std::size_t q = 0; q < found_.size(); ++q) {
-            const std::uint32_t u = found_[q];
-            const double du = seen_[u].d2;
-            bool lower = false;
-            for (const std::uint32_t* it = adj_.begin(u); it != adj_.end(u); ++it) {
-                const std::uint32_t w = *it;
-                Seen& sw = seen_[w];
-                if (sw.stamp != current_) {
-                    sw.stamp = current_;
-                    sw.d2 = (mesh_.points[w] - c).squaredNorm();
-                    if (sw.d2 <= r2max) found_.push_back(w);
-                }
-                if (sw.d2 < du) lower = true;
-            }
-            // A vertex with no neighbour nearer to v may be joined to v only
-            // through vertices farther than itself: its smallest radius is
-            // then not its distance.
-            if (q > 0 && !lower) exact_needed = true;
-        }
-        key_.resize(found_.size());
-        if (!exact_needed) {
-            for (std::size_t q = 0; q < found_.size(); ++q) key_[q] = seen_[found_[q]].d2;
-            return;
-        }
-        // Minimax path (Dijkstra on the largest squared distance along the
-        // path), restricted to the vertices found.
-        const double inf = std::numeric_limits<double>::infinity();
-        for (std::uint32_t u : found_) b2_[u] = inf;
-        b2_[v] = 0.0;
-        using Item = std::pair<double, std::uint32_t>;
-        std::priority_queue<Item, std::vector<Item>, std::greater<>> heap;
-        heap.emplace(0.0, v);
-        while (!heap.empty()) {
-            const auto [b, u] = heap.top();
-            heap.pop();
-            if (b > b2_[u]) continue;
-            for (const std::uint32_t* it = adj_.begin(u); it != adj_.end(u); ++it) {
-                const std::uint32_t w = *it;
-                if (seen_[w].stamp != current_ || seen_[w].d2 > r2max) continue;
-                const double cand = std::max(b, seen_[w].d2);
-                if (cand < b2_[w]) {
-                    b2_[w] = cand;
-                    heap.emplace(cand, w);
-                }
-            }
-        }
-        for (std::size_t q = 0; q < found_.size(); ++q) key_[q] = b2_[found_[q]];
+        sum.resize(nr_ * kBatch);
+        wsum.resize(nr_ * kBatch);
+        count.resize(nr_ * kBatch);
     }
 
-    const std::vector<std::uint32_t>& found() const { return found_; }
-    const std::vector<double>& key() const { return key_; }
+    // Fills sum, wsum and, if asked for, count ([radius index][centre],
+    // cumulative over radii) for centres[0..nb). wsum > 0 only if a vertex
+    // with a defined value was found (only those add to it).
+    void run(const std::uint32_t* centres, std::size_t nb)
+    {
+        std::fill(sum.begin(), sum.end(), 0.0);
+        std::fill(wsum.begin(), wsum.end(), 0.0);
+        std::fill(count.begin(), count.end(), 0u);
+        if (++stamp_ == 0) {
+            std::fill(where_.begin(), where_.end(), Where{});
+            stamp_ = 1;
+        }
+        n_slots_ = 0;
+        // A sphere around the batch's centres: a vertex farther than (its
+        // radius + the largest r) from its middle is in no ball.
+        Vec3 mid = Vec3::Zero();
+        for (std::size_t k = 0; k < nb; ++k) {
+            const Vec3& p = mesh_.points[centres[k]];
+            mid += p;
+            cx_[k] = p.x();
+            cy_[k] = p.y();
+            cz_[k] = p.z();
+        }
+        mid /= double(nb);
+        double spread = 0.0;
+        for (std::size_t k = 0; k < nb; ++k) spread = std::max(spread, (mesh_.points[centres[k]] - mid).norm());
+        mid_ = mid;
+        const double reach = (spread + std::sqrt(r2_.back())) * (1.0 + 1e-9) + 1e-300;
+        reach2_ = reach * reach;
+
+        flist_.clear();
+        for (std::size_t k = 0; k < nb; ++k) {
+            const std::uint32_t s = slot(centres[k]);
+            marks_[s].seen[k / 64] |= std::uint64_t(1) << (k % 64);
+            marks_[s].frontier[k / 64] |= std::uint64_t(1) << (k % 64);
+            flist_.push_back(s);
+        }
+        for (std::size_t b = 0; b < nr_; ++b) {
+            if (b > 0) {
+                // The bits refused at the radius before, tested again.
+                flist_.clear();
+                for (std::uint32_t s = 0; s < n_slots_; ++s) {
+                    Marks& m = marks_[s];
+                    std::uint64_t any = 0;
+                    for (int w = 0; w < W; ++w) {
+                        m.next[w] = m.refused[w];
+                        m.refused[w] = 0;
+                        any |= m.next[w];
+                    }
+                    if (any && enter(s, b)) flist_.push_back(s);
+                }
+            }
+            expand(b);
+        }
+        for (std::size_t b = 1; b < nr_; ++b)
+            for (std::size_t k = 0; k < kBatch; ++k) {
+                const std::size_t i = b * kBatch + k, j = (b - 1) * kBatch + k;
+                sum[i] += sum[j];
+                wsum[i] += wsum[j];
+                count[i] += count[j];
+            }
+    }
+
+    std::vector<double> sum, wsum;
+    std::vector<std::uint32_t> count;
 
 private:
+    static constexpr std::uint32_t kOut = std::numeric_limits<std::uint32_t>::max();
+    struct Where
+    {
+        std::uint32_t stamp = 0;
+        std::uint32_t slot = 0;
+    };
+    struct Marks
+    {
+        std::uint64_t seen[W];      // centres that reached the vertex
+        std::uint64_t next[W];      // offered by a neighbour, to be tested
+        std::uint64_t frontier[W];  // entered at the last round
+        std::uint64_t refused[W];   // offered but outside the ball at this radius
+    };
+
+    // The slot of vertex v in this batch, kOut if it is in no ball.
+    std::uint32_t slot(std::uint32_t v)
+    {
+        Where& at = where_[v];
+        if (at.stamp == stamp_) return at.slot;
+        at.stamp = stamp_;
+        if ((mesh_.points[v] - mid_).squaredNorm() > reach2_) return at.slot = kOut;
+        const std::uint32_t s = n_slots_++;
+        if (s >= vertex_.size()) {
+            const std::size_t cap = std::max<std::size_t>(1024, 2 * vertex_.size());
+            vertex_.resize(cap);
+            marks_.resize(cap);
+        }
+        vertex_[s] = v;
+        marks_[s] = Marks{};
+        return at.slot = s;
+    }
+
+    // Tests the bits offered to slot s (next) against the balls of radius
+    // index b: those inside enter (seen, frontier, the sums of b), the others
+    // are refused. True if any entered.
+    bool enter(std::uint32_t s, std::size_t b)
+    {
+        Marks& m = marks_[s];
+        const std::uint32_t v = vertex_[s];
+        const Vec3& p = mesh_.points[v];
+        const double px = p.x(), py = p.y(), pz = p.z(), r2 = r2_[b];
+        const double x = values_[v];
+        const bool has = !std::isnan(x);
+        const double wt = weights_[v], wx = wt * x;
+        double* bsum = &sum[b * kBatch];
+        double* bwsum = &wsum[b * kBatch];
+        std::uint32_t* bcount = &count[b * kBatch];
+        std::uint64_t any = 0;
+        for (int w = 0; w < W; ++w) {
+            const std::uint64_t offered = m.next[w];
+            std::uint64_t bits = offered, in = 0;
+            m.next[w] = 0;
+            const std::size_t base = 64 * std::size_t(w);
+            while (bits) {
+                const int i = __builtin_ctzll(bits);
+                bits &= bits - 1;
+                const std::size_t k = base + std::size_t(i);
+                // The expression of ball_patch() and of the tests' brute force.
+                const double dx = px - cx_[k], dy = py - cy_[k], dz = pz - cz_[k];
+                if (dx * dx + dy * dy + dz * dz > r2) continue;
+                in |= std::uint64_t(1) << i;
+                if (sizes_) ++bcount[k];
+                if (has) {
+                    bsum[k] += wx;
+                    bwsum[k] += wt;
+                }
+            }
+            m.refused[w] |= offered & ~in;
+            m.seen[w] |= in;
+            m.frontier[w] = in;
+            any |= in;
+        }
+        return any != 0;
+    }
+
+    // Breadth-first rounds at radius index b from flist_ (slots with their
+    // frontier bits) until no bit moves.
+    void expand(std::size_t b)
+    {
+        while (!flist_.empty()) {
+            nlist_.clear();
+            for (const std::uint32_t s : flist_) {
+                std::uint64_t f[W];
+                for (int w = 0; w < W; ++w) {
+                    f[w] = marks_[s].frontier[w];
+                    marks_[s].frontier[w] = 0;
+                }
+                const std::uint32_t v = vertex_[s];
+                for (const std::uint32_t* it = adj_.begin(v); it != adj_.end(v); ++it) {
+                    const std::uint32_t t = slot(*it);
+                    if (t == kOut) continue;  // in no ball of any radius
+                    Marks& m = marks_[t];
+                    std::uint64_t old_any = 0, add_any = 0;
+                    for (int w = 0; w < W; ++w) {
+                        const std::uint64_t add = f[w] & ~m.seen[w] & ~m.refused[w];
+                        old_any |= m.next[w];
+                        add_any |= add;
+                        m.next[w] |= add;
+                    }
+                    if (old_any == 0 && add_any != 0) nlist_.push_back(t);
+                }
+            }
+            flist_.clear();
+            for (const std::uint32_t t : nlist_)
+                if (enter(t, b)) flist_.push_back(t);
+        }
+    }
+
     const Mesh& mesh_;
     const Adjacency& adj_;
-    struct Seen
-    {
-        double d2 = 0.0;  // squared distance to the centre
-        std::uint32_t stamp = 0;
-    };
-    std::vector<Seen> seen_;
-    std::vector<double> b2_;
-    std::uint32_t current_ = 0;
-    std::vector<std::uint32_t> found_;
-    std::vector<double> key_;
+    const std::vector<double>& values_;
+    const std::vector<double>& weights_;
+    const std::vector<double>& r2_;
+    const std::size_t nr_;
+    const bool sizes_;
+    std::vector<Where> where_;
+    std::uint32_t stamp_ = 0;
+    std::uint32_t n_slots_ = 0;
+    Vec3 mid_ = Vec3::Zero();
+    double reach2_ = 0.0;
+    double cx_[kBatch] = {}, cy_[kBatch] = {}, cz_[kBatch] = {};
+    std::vector<std::uint32_t> vertex_;
+    std::vector<Marks> marks_;
+    std::vector<std::uint32_t> flist_, nlist_;
 };
 
+constexpr int kBallWords = 2;
+
+using detail::clustered_order;
 using detail::morton_order;
 
 void check_sizes(const Mesh& mesh, const Adjacency& adj)
@@ -147,9 +307,8 @@ std::vector<std::uint32_t> ball_patch(const Mesh& mesh, const Adjacency& adj, st
     check_sizes(mesh, adj);
     if (centre >= mesh.n_vertices())
         throw InvalidArgumentError(fmt::format("ball_patch: centre {} of {} vertices", centre, mesh.n_vertices()));
-    BallSearch s(mesh, adj);
-    s.run(std::uint32_t(centre), radius * radius);
-    std::vector<std::uint32_t> ids(s.found().begin() + 1, s.found().end());
+    const auto found = bfs_patch(mesh, adj, std::uint32_t(centre), radius * radius);
+    std::vector<std::uint32_t> ids(found.begin() + 1, found.end());
     std::sort(ids.begin(), ids.end());
     return ids;
 }
@@ -178,13 +337,9 @@ BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
     std::vector<std::size_t> slot(nr);
     for (std::size_t k = 0; k < nr; ++k)
         slot[k] = std::size_t(std::lower_bound(r2.begin(), r2.end(), radii[k] * radii[k]) - r2.begin());
-    const std::size_t nb = r2.size();
-    const double r2max = r2.back();
 
-    // A copy of the mesh renumbered in Morton order, so that the balls of
-    // consecutive centres share cache lines. Each vertex keeps the order of
-    // its neighbour list: the search visits the same vertices in the same
-    // order as on the original numbering, so the sums are the same.
+    // A copy of the mesh renumbered in Morton order, so that nearby vertices
+    // share cache lines.
     const std::vector<std::uint32_t> order = morton_order(mesh);
     std::vector<std::uint32_t> rank(n);
     for (std::size_t i = 0; i < n; ++i) rank[order[i]] = std::uint32_t(i);
@@ -204,44 +359,26 @@ BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
         for (const std::uint32_t* it = adj.begin(o); it != adj.end(o); ++it) *out++ = rank[*it];
     }
 
+    // Centres with a defined value in compact batches (as for rings).
+    constexpr std::size_t kBatch = BatchBall<kBallWords>::kBatch;
+    const std::vector<std::uint32_t> centres = clustered_order(pm, padj, pvalues, kBatch);
+    const std::size_t n_batches = (centres.size() + kBatch - 1) / kBatch;
+
 #pragma omp parallel
     {
-        BallSearch search(pm, padj);
-        std::vector<double> sum(nb), wsum(nb);
-        std::vector<std::uint32_t> defined(nb), count(nb);
-#pragma omp for schedule(dynamic, 64)
-        for (std::ptrdiff_t iv = 0; iv < std::ptrdiff_t(n); ++iv) {
-            const auto v = std::uint32_t(iv);
-            if (std::isnan(pvalues[v])) continue;
-            search.run(v, r2max);
-            std::fill(sum.begin(), sum.end(), 0.0);
-            std::fill(wsum.begin(), wsum.end(), 0.0);
-            std::fill(defined.begin(), defined.end(), 0);
-            std::fill(count.begin(), count.end(), 0);
-            const auto& found = search.found();
-            const auto& key = search.key();
-            // In breadth-first order: a fixed order for a given mesh.
-            for (std::size_t q = 1; q < found.size(); ++q) {
-                const auto b = std::size_t(std::lower_bound(r2.begin(), r2.end(), key[q]) - r2.begin());
-                ++count[b];
-                const double x = pvalues[found[q]];
-                if (std::isnan(x)) continue;
-                const double w = pweights[found[q]];
-                sum[b] += w * x;
-                wsum[b] += w;
-                ++defined[b];
-            }
-            for (std::size_t b = 1; b < nb; ++b) {
-                sum[b] += sum[b - 1];
-                wsum[b] += wsum[b - 1];
-                defined[b] += defined[b - 1];
-                count[b] += count[b - 1];
-            }
-            for (std::size_t k = 0; k < nr; ++k) {
-                const std::size_t b = slot[k];
-                if (defined[b] > 0 && wsum[b] > 0.0) m.mean[k][order[v]] = sum[b] / wsum[b];
-                if (with_sizes) m.size[k][order[v]] = count[b];
-            }
+        BatchBall<kBallWords> search(pm, padj, pvalues, pweights, r2, with_sizes);
+#pragma omp for schedule(dynamic, 1)
+        for (std::ptrdiff_t ib = 0; ib < std::ptrdiff_t(n_batches); ++ib) {
+            const std::size_t first = std::size_t(ib) * kBatch;
+            const std::size_t nb = std::min(kBatch, centres.size() - first);
+            search.run(centres.data() + first, nb);
+            for (std::size_t k = 0; k < nr; ++k)
+                for (std::size_t c = 0; c < nb; ++c) {
+                    const std::size_t i = slot[k] * kBatch + c;
+                    const std::uint32_t v = order[centres[first + c]];
+                    if (search.wsum[i] > 0.0) m.mean[k][v] = search.sum[i] / search.wsum[i];
+                    if (with_sizes) m.size[k][v] = search.count[i];
+                }
         }
     }
     return m;

@@ -40,43 +40,7 @@ std::vector<int> ring_distances(const Adjacency& adj, std::size_t source, int ma
 
 namespace {
 
-using detail::morton_order;
-
-// Centres grouped into compact patches of the mesh graph: seeds are taken in
-// Morton order, and each patch grows by breadth-first search over vertices
-// not yet assigned until it holds \p batch centres (or its component is
-// exhausted). Compact batches keep the union of their disks small.
-std::vector<std::uint32_t> clustered_order(const Mesh& mesh, const Adjacency& adj, const std::vector<double>& values,
-                                           std::size_t batch)
-{
-    const std::size_t n = adj.size();
-    std::vector<char> assigned(n, 0);
-    std::vector<std::uint32_t> order;
-    order.reserve(n);
-    std::vector<std::uint32_t> queue;
-    std::size_t in_batch = 0;
-    for (auto seed : morton_order(mesh)) {
-        if (assigned[seed] || std::isnan(values[seed])) continue;
-        queue.assign(1, seed);
-        assigned[seed] = 1;
-        for (std::size_t q = 0; q < queue.size(); ++q) {
-            const auto v = queue[q];
-            order.push_back(v);
-            if (++in_batch == batch) {
-                in_batch = 0;
-                // Release what was queued but not taken.
-                for (std::size_t r = q + 1; r < queue.size(); ++r) assigned[queue[r]] = 0;
-                break;
-            }
-            for (auto it = adj.begin(v); it != adj.end(v); ++it)
-                if (!assigned[*it] && !std::isnan(values[*it])) {
-                    assigned[*it] = 1;
-                    queue.push_back(*it);
-                }
-        }
-    }
-    return order;
-}
+using detail::clustered_order;
 
 // Bit-parallel BFS from W * 64 centres at a time. Per vertex: the centres
 // that have reached it (seen), that reach it at the level being built (next)

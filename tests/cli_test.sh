@@ -135,7 +135,7 @@ expect 0 profile "$data/fandisk.ply" --levels 1 --radii 0.05,0.1 --json "$tmp/pr
     grep -q "metric levels" "$tmp/stdout" && pass || fail "profile text with radii"
 json_check "$tmp/pr.json" 'j["radii"] == [0.05, 0.1] and len(j["sigma_radii"]) == 2 and all(s > 0 for s in j["sigma_radii"]) and j["radius_details"][1]["radius"] == 0.1 and j["levels"] == [1] and finite(j)'
 expect 0 profile "$data/fandisk.ply" --levels '' --no-global --radii default --json "$tmp/prd.json"
-json_check "$tmp/prd.json" 'len(j["radii"]) == 7 and j["levels"] == [] and j["sigma_global"] is None and finite(j)'
+json_check "$tmp/prd.json" 'j["radii"] == [0.0125 * 2 ** (k / 2) for k in range(9)] and j["levels"] == [] and j["sigma_global"] is None and finite(j)'
 expect 0 profile "$data/fandisk.ply" --levels 1 --radii 0.05,0.1 --vertex-data "$tmp/vr.ply" &&
     head -c 2000 "$tmp/vr.ply" | grep -q "property double D_r0p05" && pass || fail "vertex-data PLY lacks D_r0p05"
 expect 0 "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-distance --levels 1 --radii 0.1,0.2 --json "$tmp/cr.json" &&
@@ -147,6 +147,16 @@ expect 0 generate torus "$tmp/torus.ply" --n 256
 expect 0 profile "$tmp/torus.ply" --exact --levels 1,5 --json "$tmp/t.json"
 json_check "$tmp/t.json" 'j["exact"]["property"] == "exact_H" and len(j["exact"]["sigma"]) == 2 and j["exact"]["h_error"]["rms"] < 0.1 and finite(j)'
 expect 2 profile "$data/fandisk.ply" --exact
+# with --radii: the exact table lists the radii too, each row matching the JSON (estimated and exact sigma_r)
+expect 0 profile "$tmp/torus.ply" --exact --levels 1 --radii 0.2,0.4 --json "$tmp/tr.json" &&
+    python3 - "$tmp/stdout" "$tmp/tr.json" <<'PY' && pass || fail "profile --exact text lacks the radii"
+import json, sys
+parts = open(sys.argv[1]).read().split("sigma exact")
+j = json.load(open(sys.argv[2]))
+rows = [l.split() for l in parts[2].splitlines()[1:] if l.strip()][:len(j["radii"])] if len(parts) == 3 else []
+want = [["%g" % r, "%.6g" % s, "%.6g" % e] for r, s, e in zip(j["radii"], j["sigma_radii"], j["exact"]["sigma_radii"])]
+sys.exit(0 if len(want) == 2 and rows == want and "metric levels" in parts[2].splitlines()[0] else 1)
+PY
 
 # --- smoothing records profiles and the distance to the input
 expect 0 generate noisy-sphere "$tmp/ns.ply" --subdivisions 3

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <random>
 
@@ -83,6 +84,31 @@ Mesh two_spheres()
     for (const Vec3& p : b.points) a.points.push_back(p + Vec3(1.5, 0, 0));
     for (Face f : b.faces) a.faces.push_back({f[0] + off, f[1] + off, f[2] + off});
     return a;
+}
+
+// The same by union-find over the face edges whose ends are both inside the
+// ball: O(faces) per centre, for the larger meshes.
+std::vector<std::uint32_t> brute_patch_uf(const Mesh& mesh, std::size_t v, double r)
+{
+    const std::size_t n = mesh.n_vertices();
+    std::vector<char> inside(n);
+    for (std::size_t j = 0; j < n; ++j) inside[j] = (mesh.points[j] - mesh.points[v]).squaredNorm() <= r * r;
+    std::vector<std::size_t> parent(n);
+    std::iota(parent.begin(), parent.end(), 0);
+    auto root = [&](std::size_t a) {
+        while (parent[a] != a) a = parent[a] = parent[parent[a]];
+        return a;
+    };
+    for (const Face& f : mesh.faces)
+        for (int k = 0; k < 3; ++k) {
+            const auto a = std::size_t(f[std::size_t(k)]), b = std::size_t(f[std::size_t((k + 1) % 3)]);
+            if (inside[a] && inside[b]) parent[root(a)] = root(b);
+        }
+    std::vector<std::uint32_t> ids;
+    const std::size_t rv = root(v);
+    for (std::size_t j = 0; j < n; ++j)
+        if (j != v && inside[j] && root(j) == rv) ids.push_back(std::uint32_t(j));
+    return ids;
 }
 
 double rel(double a, double b)
@@ -188,6 +214,59 @@ TEST(MetricLevels, MeansEqualBruteForceAtEveryRadius)
                 }
             }
     }
+}
+
+TEST(MetricLevels, BatchedMeansEqualBruteForceAndIgnoreThreads)
+{
+    // Meshes of several batches of 128 centres, balls spanning several
+    // batches, folds, two components, undefined values; every centre.
+    const std::vector<Mesh> meshes = {folded_strip(120, 12, 0.05), noisy_sphere(4, 0.1, 5).mesh, two_spheres(),
+                                      torus_irregular(2500, 1.0, 0.25, 7).mesh};
+    const std::vector<double> radii = {0.4, 0.03, 0.1, 0.2, 0.1, 0.06, 5.0};
+    std::mt19937 rng(12);
+    std::uniform_real_distribution<double> U(-1.0, 1.0);
+    const int threads = omp_get_max_threads();
+    for (std::size_t im = 0; im < meshes.size(); ++im) {
+        const Mesh& m = meshes[im];
+        const std::size_t n = m.n_vertices();
+        std::vector<double> x(n), w(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            x[i] = i % 11 == 5 ? std::nan("") : U(rng);
+            w[i] = 0.5 + 0.5 * U(rng);
+        }
+        const Adjacency adj = vertex_adjacency(m);
+        omp_set_num_threads(1);
+        const BallMeans one = ball_means(m, adj, x, w, radii, true);
+        omp_set_num_threads(std::max(threads, 3));
+        const BallMeans bm = ball_means(m, adj, x, w, radii, true);
+        omp_set_num_threads(threads);
+        for (std::size_t k = 0; k < radii.size(); ++k)
+            for (std::size_t v = 0; v < n; ++v) {
+                // Bitwise the same for any thread count (NaN == NaN here).
+                ASSERT_TRUE(std::memcmp(&one.mean[k][v], &bm.mean[k][v], sizeof(double)) == 0) << im << " " << k;
+                ASSERT_EQ(one.size[k][v], bm.size[k][v]);
+                if (std::isnan(x[v])) {
+                    EXPECT_TRUE(std::isnan(bm.mean[k][v]));
+                    continue;
+                }
+                const auto patch = brute_patch_uf(m, v, radii[k]);
+                ASSERT_EQ(bm.size[k][v], patch.size()) << im << " " << k << " " << v;
+                double s = 0, ws = 0;
+                for (auto j : patch)
+                    if (!std::isnan(x[j])) {
+                        s += w[j] * x[j];
+                        ws += w[j];
+                    }
+                if (ws == 0.0) {
+                    EXPECT_TRUE(std::isnan(bm.mean[k][v])) << im << " " << k << " " << v;
+                } else {
+                    ASSERT_NEAR(bm.mean[k][v], s / ws, 1e-12) << im << " " << k << " " << v;
+                }
+            }
+    }
+    // The union-find brute force agrees with the relaxation one.
+    const Mesh f = folded_strip(40, 5, 0.08);
+    for (std::size_t v = 0; v < f.n_vertices(); v += 7) EXPECT_EQ(brute_patch_uf(f, v, 0.3), brute_patch(f, v, 0.3));
 }
 
 TEST(MetricLevels, HexagonFanExactValues)

@@ -151,7 +151,7 @@ void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii)
     if (with_radii)
         sub->add_option("--radii", o.radii,
                         "metric levels: radii on the unit-scaled mesh, e.g. 0.05,0.1,0.2, or 'default' "
-                        "(0.0125 * 2^(k/2), k = 0..6: 0.0125 to 0.1)");
+                        "(0.0125 * 2^(k/2), k = 0..8: 0.0125 to 0.2)");
     sub->add_flag("--no-global", o.no_global, "leave out the global level");
     sub->add_option("--curvature", o.curvature, "mean curvature estimator")
         ->check(CLI::IsMember(enum_names<CurvatureMethod>()))

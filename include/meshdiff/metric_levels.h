@@ -19,10 +19,10 @@
 
 namespace meshdiff {
 
-//! The radii of `--radii default`: 0.0125 * 2^(k/2), k = 0..6 (0.0125 ...
-//! 0.1), geometric: from the edge length of a fine scan (igea, 134K vertices)
-//! to the extent of its ring level 9 (METHOD.md section 5a explains the choice
-//! and its upper bound, set by the cost).
+//! The radii of `--radii default`: 0.0125 * 2^(k/2), k = 0..8 (0.0125 ...
+//! 0.2), geometric: from the edge length of a fine scan (igea, 134K vertices)
+//! to the extent of its ring level 20 (METHOD.md section 5a explains the
+//! choice and its upper bound, set by the cost).
 std::vector<double> default_radii();
 
 //! Throws InvalidArgumentError unless every radius is finite and > 0.
@@ -34,8 +34,8 @@ void check_radii(const std::vector<double>& radii);
 std::vector<double> vertex_areas(const Mesh& mesh);
 
 //! N_r(centre) as defined above, ascending ids (the centre excluded). A plain
-//! breadth-first search bounded by the ball: the single-vertex form of
-//! ball_means(), and the object the tests check against brute force.
+//! breadth-first search bounded by the ball: the single-centre, single-radius
+//! form of ball_means(), checked against brute force by the tests.
 //! \throw InvalidArgumentError for a bad radius or centre.
 std::vector<std::uint32_t> ball_patch(const Mesh& mesh, const Adjacency& adjacency, std::size_t centre, double radius);
 
@@ -52,11 +52,12 @@ struct BallMeans
     std::vector<std::vector<std::uint32_t>> size;
 };
 
-//! Ball means for all vertices and all \p radii at once: one search per centre
-//! bounded by the largest radius, each vertex assigned to the smallest radius
-//! whose ball connects it to the centre. Parallel over centres with OpenMP;
-//! the result does not depend on the thread count (each centre's sums are
-//! accumulated in a fixed order).
+//! Ball means for all vertices and all \p radii at once: a bit-parallel
+//! search from batches of 128 centres, radius by radius in increasing order
+//! (nested balls), each vertex assigned to the smallest radius whose ball
+//! connects it to the centre (METHOD.md section 5a). Parallel over batches
+//! with OpenMP; the result does not depend on the thread count (fixed
+//! batches, each batch's sums accumulated in a fixed order).
 //! \throw InvalidArgumentError for a bad radius or mismatched sizes.
 BallMeans ball_means(const Mesh& mesh, const Adjacency& adjacency, const std::vector<double>& values,
                      const std::vector<double>& weights, const std::vector<double>& radii, bool with_sizes = false);

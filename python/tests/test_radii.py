@@ -15,7 +15,7 @@ def test_profile_radii_fields(data):
     assert p["radius_details"][0]["radius"] == 0.05
     assert p["levels"] == [1]
     q = meshdiff.profile_file(data / "fandisk.ply", levels=[], radii="default", global_level=False)
-    assert len(q["radii"]) == 7 and q["levels"] == [] and q["sigma_global"] is None
+    assert q["radii"] == [0.0125 * 2 ** (k / 2) for k in range(9)] and q["levels"] == [] and q["sigma_global"] is None
     assert "radii" not in meshdiff.profile(V, F, levels=[1])
 
 

@@ -63,6 +63,12 @@ std::string exact_profile_text(const RoughnessProfile& profile, const ExactProfi
                             e.profile.levels[k].sigma);
     if (profile.has_global)
         text += fmt::format("{:>8} {:>16.6g} {:>12.6g}\n", "global", profile.global.sigma, e.profile.global.sigma);
+    if (!profile.radii.empty() && e.profile.radii.size() == profile.radii.size()) {  // only with --radii
+        text += "\n  radius  sigma estimated  sigma exact   (metric levels, area-weighted)\n";
+        for (std::size_t k = 0; k < profile.radii.size(); ++k)
+            text += fmt::format("{:>8} {:>16.6g} {:>12.6g}\n", fmt::format("{:g}", profile.radii[k].radius),
+                                profile.radii[k].sigma, e.profile.radii[k].sigma);
+    }
     return text;
 }
 
