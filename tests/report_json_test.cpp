@@ -61,13 +61,16 @@ TEST(ProfileJson, HasTheSchemaKeysAndOnlyFiniteNumbers)
     const LoadedMesh m = read_mesh(data("teapot.obj"));
     ProfileOptions o;
     o.levels = {1, 2, 5};
-    const auto j = profile_json(mesh_facts(m), roughness_profile(m.mesh, o));
+    const RoughnessProfile p = roughness_profile(m.mesh, o);
+    const auto j = profile_json(mesh_facts(m), p);
     EXPECT_EQ(j["schema"], "meshdiff.profile/1");
     for (const char* key : {"mesh", "curvature", "levels", "sigma", "sigma_global", "level_details", "warnings"})
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_EQ(j["levels"], nlohmann::json({1, 2, 5}));
     EXPECT_EQ(j["mesh"]["components"], 4);
     EXPECT_TRUE(j["curvature"].contains("undefined_vertices"));
+    EXPECT_EQ(j["curvature"]["widened_to_2_ring"], p.curvature_widened);
+    EXPECT_EQ(j["curvature"]["normal_rows_dropped"], p.curvature_normal_rows_dropped);
     EXPECT_FALSE(j["curvature"].contains("capped_neighbourhoods"));  // only when a fit was capped
     EXPECT_GT(j["mesh"]["scale_factor"].get<double>(), 0.0);
     EXPECT_TRUE(all_finite(j));

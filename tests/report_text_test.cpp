@@ -6,6 +6,7 @@
 #include "meshdiff/io.h"
 #include "meshdiff/shapes.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -102,6 +103,11 @@ TEST(ProfileText, HasOneRowPerLevelAndTheGlobalRow)
     EXPECT_TRUE(contains(rows[header + 1], g6(p.levels[0].sigma))) << rows[header + 1];
     EXPECT_TRUE(contains(rows[header + 4], g6(p.global.sigma))) << rows[header + 4];
     EXPECT_TRUE(header + 5 == rows.size() || rows[header + 5].empty());  // nothing else in the table
+    const std::string counts = "2-ring " + std::to_string(p.curvature_widened) + ", normal rows dropped " +
+                               std::to_string(p.curvature_normal_rows_dropped) + ", quadric fallback " +
+                               std::to_string(p.curvature_fallback);
+    EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const std::string& r) { return contains(r, counts); }))
+        << counts;
 }
 
 TEST(ExactProfileText, NamesThePropertyAndTheHErrorWithARowPerLevel)
