@@ -277,3 +277,27 @@ TEST(ExactProfileJson, HasTheExactSigmasAndASmallHError)
     EXPECT_LE(e["rms"].get<double>(), e["max"].get<double>());
     EXPECT_TRUE(all_finite(j));
 }
+
+TEST(CorsiniJson, OnlyWithTheCorsiniMeasureAndOnlyFiniteNumbers)
+{
+    const LoadedMesh a = read_mesh(data("sphere_ico_2562.ply"));
+    const LoadedMesh b = read_mesh(data("ellipsoid_150_100_100.ply"));
+    CompareOptions o;
+    o.profile.levels = {1, 4};
+    o.distance = false;
+    const auto plain = comparison_json(compare_meshes(a, b, o));
+    EXPECT_FALSE(plain.contains("measure") || plain.contains("corsini_distance") ||
+                 plain["original"].contains("corsini"));
+    o.measure = RoughnessMeasure::Corsini;
+    const Comparison c = compare_meshes(a, b, o);
+    const auto j = comparison_json(c);
+    EXPECT_EQ(j["measure"], "corsini");
+    EXPECT_TRUE(j["roughness_distance"].is_null());
+    EXPECT_EQ(j["original"]["corsini"]["levels"], nlohmann::json({1, 4}));
+    EXPECT_EQ(j["processed"]["corsini"]["roughness"][1], c.processed_corsini->levels[1].roughness);
+    EXPECT_EQ(j["corsini_distance"]["multiscale"]["distance"], c.corsini->multiscale.distance);
+    EXPECT_TRUE(all_finite(j));
+    const auto p = corsini_profile_json(mesh_facts(a), *c.original_corsini);
+    EXPECT_EQ(p["schema"], "meshdiff.corsini/1");
+    EXPECT_EQ(p["corsini"], j["original"]["corsini"]);
+}

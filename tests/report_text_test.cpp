@@ -190,3 +190,27 @@ TEST(ShapeText, StatesTheCountsAndTheRangeOfExactH)
     EXPECT_EQ(text, "torus.ply: 96 vertices, 192 faces, exact H in [" + g6(4.0 / 3.0) + ", " + g6(2.4) +
                         "] (torus R 1 r 0.25)\n");
 }
+
+TEST(CorsiniText, ProfileAndComparisonHaveARowPerLevelWithTheRoughness)
+{
+    const LoadedMesh a = read_mesh(data("sphere_ico_2562.ply"));
+    const LoadedMesh b = read_mesh(data("ellipsoid_150_100_100.ply"));
+    CorsiniOptions co;
+    co.levels = {1, 3};
+    const CorsiniProfile p = corsini_profile(a.mesh, co);
+    const auto rows = lines(corsini_profile_text(mesh_facts(a), p));
+    std::size_t header = 0;
+    while (header < rows.size() && !contains(rows[header], "level    roughness")) ++header;
+    ASSERT_LT(header + 3, rows.size());
+    EXPECT_EQ(rows[header + 1].rfind("       1 ", 0), 0u) << rows[header + 1];
+    EXPECT_TRUE(contains(rows[header + 2], g6(p.levels[1].roughness))) << rows[header + 2];
+    EXPECT_TRUE(contains(rows[header + 3], "global") && contains(rows[header + 3], g6(p.global.roughness)));
+    CompareOptions o;
+    o.profile.levels = {1, 3};
+    o.distance = false;
+    o.measure = RoughnessMeasure::Corsini;
+    const std::string text = comparison_text(compare_meshes(a, b, o));
+    EXPECT_TRUE(contains(text, "Corsini roughness"));
+    EXPECT_FALSE(contains(text, "Roughness profiles"));
+    EXPECT_TRUE(contains(text, "  multi "));
+}
