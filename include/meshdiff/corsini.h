@@ -21,6 +21,13 @@
 //!
 //! Unit: rad^2. Depends on angles only, so it is invariant to translation,
 //! rotation and uniform scaling; no normalisation is applied.
+//!
+//! Cost: one breadth-first search per vertex to the largest level, visiting
+//! each edge of the disk once (about 4,000 edges per vertex at level 20 on a
+//! mesh of valence 6; OpenMP over vertices, the result independent of the
+//! thread count). Known limit: where the disks cover most of the mesh (a small
+//! mesh, or the fan of a vertex of very high valence) the cost is vertices x
+//! edges.
 #pragma once
 
 #include "meshdiff/enum_names.h"
