@@ -6,6 +6,7 @@
 // so the numbers are bit for bit those of `meshdiff ... --json`.
 #include "meshdiff/closest_point.h"
 #include "meshdiff/compare.h"
+#include "meshdiff/corsini.h"
 #include "meshdiff/curvature.h"
 #include "meshdiff/error.h"
 #include "meshdiff/facts.h"
@@ -575,6 +576,23 @@ py::dict py_profile_file(const py::object& path_obj, const py::object& levels, c
     return run_profile(m, options, threads);
 }
 
+py::dict py_corsini_profile(const ArrayLike& V, const ArrayLike& F, const py::object& levels, bool global_level,
+                            bool unbiased, int threads)
+{
+    CorsiniOptions options;
+    options.levels = levels_from(levels);
+    options.global = global_level;
+    options.unbiased = unbiased;
+    const LoadedMesh m = mesh_from(V, F, "V", "F");
+    nlohmann::json j;
+    {
+        ThreadScope scope(threads);
+        py::gil_scoped_release release;
+        j = corsini_profile_json(mesh_facts(m), corsini_profile(m.mesh, options));
+    }
+    return to_python(j);
+}
+
 py::array_t<double> py_mean_curvature(const ArrayLike& V, const ArrayLike& F, const std::string& method,
                                       const std::string& weighting, int min_neighbors, double max_normal_angle_deg,
                                       int threads)
@@ -820,6 +838,16 @@ constexpr const char* kProfileFileDoc = R"doc(profile() of a file read as read_m
 `meshdiff profile PATH --json`.
 )doc";
 
+constexpr const char* kCorsiniProfileDoc =
+    R"doc(Corsini et al.'s dihedral-angle roughness of one mesh (METHOD.md 6a): the dict
+of `meshdiff profile MESH --measure corsini --json` (schema "meshdiff.corsini/1").
+In it, "corsini" holds per level L the area-weighted mean over the vertices of
+the variance of the dihedral angles of the edges within L rings (rad^2), the
+global variance, and the multi-scale roughness (the mean over the levels).
+levels: ring levels (each >= 1); global_level: add the global level;
+unbiased: variance with divisor n - 1 instead of n.
+)doc";
+
 constexpr const char* kMeanCurvatureDoc =
     R"doc(Per-vertex mean curvature H, an (n,) float64 array in 1 / (the mesh's length
 unit), NaN where undefined (isolated vertices; boundary vertices for "meyer").
@@ -917,6 +945,9 @@ PYBIND11_MODULE(meshdiff, m)
           py::arg("levels") = default_levels, py::arg("radii") = py::none(), py::arg("global_level") = true,
           py::arg("curvature") = "goldfeather", py::arg("weighting") = "none", py::arg("threads") = 0);
 
+    m.def("corsini_profile", &py_corsini_profile, kCorsiniProfileDoc, py::arg("V"), py::arg("F"), py::kw_only(),
+          py::arg("levels") = default_levels, py::arg("global_level") = true, py::arg("unbiased") = false,
+          py::arg("threads") = 0);
     m.def("mean_curvature", &py_mean_curvature, kMeanCurvatureDoc, py::arg("V"), py::arg("F"), py::kw_only(),
           py::arg("method") = "goldfeather", py::arg("weighting") = "none", py::arg("min_neighbors") = 6,
           py::arg("max_normal_angle_deg") = 60.0, py::arg("threads") = 0);

@@ -21,6 +21,10 @@ plot_bumps.sh and studies.sh; run with a python3 that has numpy and matplotlib (
       mean of a vertex property, symmetric colour range at the PCT/100-PCT percentiles.
   plot.py fig3 OUT.png DIR
       Paper Fig. 3 from DIR/fig3.json (written by summarize-side code in studies.sh).
+  plot.py corsini OUT.png NAME=DIR/NAME ...
+      Paper Fig. 1e,f: per mesh, Corsini's roughness R_L and the paper's sigma_L, each divided by
+      its global value (left and right panel), from NAME_corsini.json and NAME_sigma.json
+      (reference/corsini.sh); the unbiased-variance variant dashed.
 
 Legends are placed outside the axes (never over data).
 """
@@ -353,6 +357,37 @@ def fig3(a):
     print(a.out)
 
 
+def corsini(a):
+    fig, axes = plt.subplots(1, 2, figsize=(12.5, 5.2))
+    for k, item in enumerate(a.items):
+        name, stem = split_arg(item)
+        col = COLORS[k % len(COLORS)]
+        c = load(stem + "_corsini.json")["corsini"]
+        u = load(stem + "_corsini_unbiased.json")["corsini"]
+        sg = load(stem + "_sigma.json")
+        for d, ls, lab in ((c, "-", name), (u, "--", name + " (variance with n - 1)")):
+            axes[0].plot(d["levels"], [r / d["roughness_global"] for r in d["roughness"]], ls, color=col, marker="o",
+                         ms=3, label=lab)
+        axes[1].plot(sg["levels"], [s / sg["sigma_global"] for s in sg["sigma"]], "-", color=col, marker="o", ms=3,
+                     label=name)
+    for ax, what, title in ((axes[0], "R_L / R_G", "Corsini et al.: dihedral-angle variance R_L"),
+                            (axes[1], "sigma_L / sigma_G", "the paper: curvature deviation sigma_L")):
+        ax.axhline(1.0, color="black", lw=1, ls=":")
+        ax.set_xlabel("level L (rings)")
+        ax.set_ylabel(what)
+        ax.set_xticks(range(0, 21, 2))
+        ax.set_xlim(0.5, 20.5)
+        ax.grid(True, alpha=0.3)
+        ax.set_title(title, fontsize=10)
+    h, lab = axes[0].get_legend_handles_labels()
+    fig.legend(h, lab, loc="lower center", ncol=3, fontsize=8, frameon=False)
+    fig.suptitle("Paper Fig. 1e,f: roughness at level L over the global roughness (above 1: rougher locally than "
+                 "globally)", fontsize=11)
+    fig.tight_layout(rect=(0, 0.1, 1, 0.95))
+    fig.savefig(a.out, dpi=100)
+    print(a.out)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     s = p.add_subparsers(dest="cmd", required=True)
@@ -377,6 +412,9 @@ def main():
     q = s.add_parser("fig3")
     q.add_argument("out"); q.add_argument("dir")
     q.set_defaults(func=fig3)
+    q = s.add_parser("corsini")
+    q.add_argument("out"); q.add_argument("items", nargs="+")
+    q.set_defaults(func=corsini)
     a = p.parse_args()
     a.func(a)
 

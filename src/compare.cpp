@@ -24,7 +24,17 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
     // The serial topology reports overlap the (partly serial) analyses.
     auto facts_a = std::async(std::launch::async, [&a] { return mesh_facts(a); });
     auto facts_b = std::async(std::launch::async, [&b] { return mesh_facts(b); });
-    if (options.roughness) {
+    if (options.roughness && options.measure == RoughnessMeasure::Corsini) {
+        if (!options.profile.radii.empty())
+            throw InvalidArgumentError("compare: metric levels (radii) are not defined for the Corsini measure");
+        CorsiniOptions co;
+        co.levels = options.profile.levels;
+        co.global = options.profile.global;
+        co.unbiased = options.corsini_unbiased;
+        c.original_corsini = corsini_profile(a.mesh, co);
+        c.processed_corsini = corsini_profile(b.mesh, co);
+        c.corsini = corsini_distance(*c.original_corsini, *c.processed_corsini, options.k);
+    } else if (options.roughness) {
         c.original_profile = roughness_profile(a.mesh, options.profile);
         c.processed_profile = roughness_profile(b.mesh, options.profile);
         c.roughness = roughness_distance(*c.original_profile, *c.processed_profile, options.k);

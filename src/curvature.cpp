@@ -217,9 +217,12 @@ void gather_neighbourhood(std::size_t v, const Mesh& mesh, const Adjacency& adj,
 }
 
 // The fitting estimators (cubic with quadric fallback, or quadric only).
+// `dropped`: set when the cubic system left out a neighbour's normal rows (the
+// max_normal_angle_deg rule).
 FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
-                     bool cubic, FitScratch& s, double& H)
+                     bool cubic, FitScratch& s, double& H, bool& dropped)
 {
+    dropped = false;
     const Vec3& N = normals[v];
     const Vec3& p = mesh.points[v];
     // Any tangent frame with u x v = N.
@@ -263,6 +266,8 @@ FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& n
                 s.M.row(r) << 0, x, y, 0, x * x, 2 * x * y, 3 * y * y;
                 s.M.row(r) *= wt;
                 s.rhs(r++) = -wt * b / c;
+            } else {
+                dropped = true;
             }
         }
         if (r >= 7) {
@@ -307,7 +312,8 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
     const bool cubic = opt.method == CurvatureMethod::GoldfeatherCubic;
     CurvatureField field;
     field.H.assign(n, kNaN);
-    std::vector<unsigned char> how(n, 0);  // bit 0 widened, bit 1 fallback, bit 2 no normal, bit 3 capped
+    // bit 0 widened, bit 1 fallback, bit 2 no normal, bit 3 capped, bit 4 normal rows dropped
+    std::vector<unsigned char> how(n, 0);
     HubTrees hubs;
     for (std::size_t v = 0; v < n; ++v)
         if (adj.degree(v) > kHubDegree) {
@@ -331,11 +337,12 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
             if (capped) how[v] = 8;
             if (s.nbrs.size() < 3) continue;
             double H = kNaN;
-            const FitResult r = fit_vertex(v, mesh, normals, opt, cubic, s, H);
+            bool dropped = false;
+            const FitResult r = fit_vertex(v, mesh, normals, opt, cubic, s, H, dropped);
             if (r == FitResult::Failed) continue;
             field.H[v] = H;
             how[v] = static_cast<unsigned char>((widened ? 1 : 0) | (cubic && r == FitResult::Quadric ? 2 : 0) |
-                                                (capped ? 8 : 0));
+                                                (capped ? 8 : 0) | (dropped ? 16 : 0));
         }
     }
     for (std::size_t v = 0; v < n; ++v) {
@@ -343,6 +350,7 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
         if (how[v] & 1) ++field.widened;
         if (how[v] & 2) ++field.quadric_fallback;
         if (how[v] & 4) ++field.no_normal;
+        if (how[v] & 16) ++field.normal_rows_dropped;
         if (how[v] & 8) {
             ++field.capped;
             if (field.capped_vertices.size() < kCappedVerticesListed) field.capped_vertices.push_back(std::uint32_t(v));

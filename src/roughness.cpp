@@ -146,6 +146,7 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
     CurvatureField field = mean_curvature(unit, adj, normals, options.curvature);
     p.curvature_undefined = field.undefined;
     p.curvature_widened = field.widened;
+    p.curvature_normal_rows_dropped = field.normal_rows_dropped;
     p.curvature_fallback = field.quadric_fallback;
     p.curvature_capped = field.capped;
     p.curvature_capped_vertices = field.capped_vertices;

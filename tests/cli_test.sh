@@ -129,6 +129,20 @@ expect 0 profile "$tmp/v.ply" --levels 1 || fail "vertex-data PLY does not read 
 expect 0 profile "$data/fandisk.ply" --json - --no-global --curvature meyer
 json_check "$tmp/stdout" 'j["sigma_global"] is None and j["curvature"]["method"] == "meyer" and len(j["levels"]) == 20'
 
+# --- Corsini et al.'s roughness (--measure corsini): profile and compare, JSON, text, refused options
+json_check "$tmp/p.json" '"normal_rows_dropped" in j["curvature"] and "corsini" not in j'
+expect 0 profile "$data/fandisk.ply" --measure corsini --levels 1,2 --json "$tmp/pc.json" &&
+    grep -q "multi-scale roughness" "$tmp/stdout" && pass || fail "corsini profile text"
+json_check "$tmp/pc.json" 'j["schema"] == "meshdiff.corsini/1" and j["corsini"]["levels"] == [1, 2] and all(r > 0 for r in j["corsini"]["roughness"]) and j["corsini"]["roughness_global"] > 0 and abs(j["corsini"]["multiscale"] - sum(j["corsini"]["roughness"]) / 2) < 1e-12 and finite(j)'
+expect 0 "$data/fandisk.ply" "$data/fandisk.ply" --measure corsini --levels 1,3 --no-distance --json "$tmp/cc.json" &&
+    grep -q "Corsini roughness" "$tmp/stdout" && pass || fail "corsini compare text"
+json_check "$tmp/cc.json" 'j["measure"] == "corsini" and j["roughness_distance"] is None and j["corsini_distance"]["levels"] == [1, 3] and j["corsini_distance"]["distance"] == [0, 0] and j["corsini_distance"]["multiscale"]["distance"] == 0 and j["original"]["corsini"]["levels"] == [1, 3] and finite(j)'
+expect 2 profile "$data/fandisk.ply" --measure corsini --radii 0.1
+expect 2 profile "$data/fandisk.ply" --measure corsini --exact
+expect 2 profile "$data/fandisk.ply" --unbiased-variance
+expect 2 profile "$data/fandisk.ply" --measure nope
+expect 2 "$data/fandisk.ply" "$data/fandisk.ply" --measure corsini --radii 0.1
+
 # --- metric levels (--radii): only when asked for; JSON, text, compare
 json_check "$tmp/p.json" '"radii" not in j and "sigma_radii" not in j and "radius_details" not in j'
 expect 0 profile "$data/fandisk.ply" --levels 1 --radii 0.05,0.1 --json "$tmp/pr.json" &&

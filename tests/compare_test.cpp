@@ -201,3 +201,28 @@ TEST(CompareMeshes, IdenticalForOneAndTwoThreads)
     omp_set_num_threads(saved);
     expect_same_comparison(one, two);
 }
+
+TEST(CompareMeshes, CorsiniMeasureReplacesTheSigmaProfilesWithCorsinisRoughness)
+{
+    CompareOptions o = small_options();
+    o.distance = false;
+    o.measure = RoughnessMeasure::Corsini;
+    const Comparison c = compare_meshes(sphere(), irregular(), o);
+    EXPECT_FALSE(c.original_profile);
+    EXPECT_FALSE(c.roughness);
+    ASSERT_TRUE(c.original_corsini && c.processed_corsini && c.corsini);
+    CorsiniOptions co;
+    co.levels = o.profile.levels;
+    const CorsiniProfile a = corsini_profile(sphere().mesh, co), b = corsini_profile(irregular().mesh, co);
+    ASSERT_EQ(c.corsini->levels.size(), 3u);
+    for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_EQ(c.original_corsini->levels[k].roughness, a.levels[k].roughness);
+        EXPECT_EQ(c.corsini->levels[k].distance,
+                  level_distance(co.levels[k], a.levels[k].roughness, b.levels[k].roughness, o.k).distance);
+    }
+    EXPECT_EQ(c.corsini->multiscale.distance, level_distance(0, a.multiscale, b.multiscale, o.k).distance);
+    const Comparison self = compare_meshes(sphere(), sphere(), o);
+    for (const auto& l : self.corsini->levels) EXPECT_EQ(l.distance, 0.0);
+    o.profile.radii = {0.1};
+    EXPECT_THROW(compare_meshes(sphere(), sphere(), o), InvalidArgumentError);
+}

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -27,6 +28,48 @@ CurvatureOptions method(CurvatureMethod m)
     CurvatureOptions o;
     o.method = m;
     return o;
+}
+
+// The surface of the cube [0, k]^3 as a closed triangle mesh: each face a
+// k x k grid of unit squares, each square cut along the same diagonal,
+// oriented outwards. 6 k^2 + 2 vertices.
+Mesh subdivided_cube(int k)
+{
+    Mesh m;
+    std::vector<int> id(std::size_t((k + 1) * (k + 1) * (k + 1)), -1);
+    auto vertex = [&](int x, int y, int z) {
+        int& i = id[std::size_t((x * (k + 1) + y) * (k + 1) + z)];
+        if (i < 0) {
+            i = int(m.points.size());
+            m.points.emplace_back(x, y, z);
+        }
+        return i;
+    };
+    // Face `axis` = c (0 or k); (a, b) span the other two axes in a
+    // right-handed order, so that a x b points along +axis.
+    for (int axis = 0; axis < 3; ++axis)
+        for (int c : {0, k}) {
+            const int ia = (axis + 1) % 3, ib = (axis + 2) % 3;
+            auto at = [&](int a, int b) {
+                int p[3];
+                p[axis] = c;
+                p[ia] = a;
+                p[ib] = b;
+                return vertex(p[0], p[1], p[2]);
+            };
+            for (int a = 0; a < k; ++a)
+                for (int b = 0; b < k; ++b) {
+                    const auto v00 = at(a, b), v10 = at(a + 1, b), v11 = at(a + 1, b + 1), v01 = at(a, b + 1);
+                    if (c == k) {
+                        m.faces.push_back({v00, v10, v11});
+                        m.faces.push_back({v00, v11, v01});
+                    } else {
+                        m.faces.push_back({v00, v11, v10});
+                        m.faces.push_back({v00, v01, v11});
+                    }
+                }
+        }
+    return m;
 }
 
 }  // namespace
@@ -138,6 +181,42 @@ TEST(MeanCurvature, FallbacksAndUndefinedVerticesAreCounted)
     EXPECT_EQ(mean_curvature(grid.mesh).undefined, 0u);
     // Valence-5 icosphere vertices widen to the 2-ring (min_neighbors 6).
     EXPECT_EQ(mean_curvature(icosphere(3).mesh).widened, 12u);
+}
+
+TEST(MeanCurvature, DroppedNormalRowsAreCountedOnExactlyTheVerticesOfTheRule)
+{
+    // Subdivided cube: the angle-weighted normal of a vertex inside a face is
+    // the face normal, of a vertex on a cube edge the bisector of the two face
+    // normals (45 degrees from each), of a corner the diagonal (54.7 degrees
+    // from each face normal, 35.3 from the edge bisectors). With a 40-degree
+    // rule the normal rows are dropped exactly where a vertex of the fitting
+    // neighbourhood lies on another plane or line: every edge and corner
+    // vertex and every face vertex next to one, i.e. all but the inner
+    // (k - 3) x (k - 3) vertices of each face (valence 6: not widened).
+    CurvatureOptions o;
+    o.max_normal_angle_deg = 40.0;
+    for (int k : {4, 6}) {
+        const Mesh cube = subdivided_cube(k);
+        ASSERT_EQ(cube.n_vertices(), std::size_t(6 * k * k + 2));
+        const auto f = mean_curvature(cube, o);
+        EXPECT_EQ(f.undefined, 0u);
+        EXPECT_EQ(f.normal_rows_dropped, cube.n_vertices() - std::size_t(6 * (k - 3) * (k - 3))) << "k = " << k;
+        // Only the cubic fit has normal rows.
+        EXPECT_EQ(mean_curvature(cube, method(CurvatureMethod::Quadric)).normal_rows_dropped, 0u);
+        EXPECT_EQ(mean_curvature(cube, method(CurvatureMethod::MeyerCotangent)).normal_rows_dropped, 0u);
+    }
+}
+
+TEST(MeanCurvature, NoNormalRowsDroppedWhereNormalsAreClose)
+{
+    // A plane (all normals equal, boundary vertices widened) and icospheres
+    // (neighbouring normals within a few degrees, valence-5 vertices widened).
+    EXPECT_EQ(mean_curvature(plane_grid(12, 9).mesh).normal_rows_dropped, 0u);
+    for (int k : {2, 3}) {
+        const auto f = mean_curvature(icosphere(k).mesh);
+        EXPECT_EQ(f.normal_rows_dropped, 0u);
+        EXPECT_EQ(f.widened, 12u);
+    }
 }
 
 TEST(MeanCurvature, InverseSquareWeightingIsMeasuredNotDefault)

@@ -61,13 +61,16 @@ TEST(ProfileJson, HasTheSchemaKeysAndOnlyFiniteNumbers)
     const LoadedMesh m = read_mesh(data("teapot.obj"));
     ProfileOptions o;
     o.levels = {1, 2, 5};
-    const auto j = profile_json(mesh_facts(m), roughness_profile(m.mesh, o));
+    const RoughnessProfile p = roughness_profile(m.mesh, o);
+    const auto j = profile_json(mesh_facts(m), p);
     EXPECT_EQ(j["schema"], "meshdiff.profile/1");
     for (const char* key : {"mesh", "curvature", "levels", "sigma", "sigma_global", "level_details", "warnings"})
         EXPECT_TRUE(j.contains(key)) << key;
     EXPECT_EQ(j["levels"], nlohmann::json({1, 2, 5}));
     EXPECT_EQ(j["mesh"]["components"], 4);
     EXPECT_TRUE(j["curvature"].contains("undefined_vertices"));
+    EXPECT_EQ(j["curvature"]["widened_to_2_ring"], p.curvature_widened);
+    EXPECT_EQ(j["curvature"]["normal_rows_dropped"], p.curvature_normal_rows_dropped);
     EXPECT_FALSE(j["curvature"].contains("capped_neighbourhoods"));  // only when a fit was capped
     EXPECT_GT(j["mesh"]["scale_factor"].get<double>(), 0.0);
     EXPECT_TRUE(all_finite(j));
@@ -327,4 +330,28 @@ TEST(CompareJson, SummaryAndSameConnectivityGiveTheirReasonsWhenUnavailable)
     EXPECT_TRUE(j["same_connectivity"].is_null());
     EXPECT_EQ(j["same_connectivity_unavailable"], "vertex counts differ (1887 vs 453)");
     EXPECT_TRUE(all_finite(j));
+}
+
+TEST(CorsiniJson, OnlyWithTheCorsiniMeasureAndOnlyFiniteNumbers)
+{
+    const LoadedMesh a = read_mesh(data("sphere_ico_2562.ply"));
+    const LoadedMesh b = read_mesh(data("ellipsoid_150_100_100.ply"));
+    CompareOptions o;
+    o.profile.levels = {1, 4};
+    o.distance = false;
+    const auto plain = comparison_json(compare_meshes(a, b, o));
+    EXPECT_FALSE(plain.contains("measure") || plain.contains("corsini_distance") ||
+                 plain["original"].contains("corsini"));
+    o.measure = RoughnessMeasure::Corsini;
+    const Comparison c = compare_meshes(a, b, o);
+    const auto j = comparison_json(c);
+    EXPECT_EQ(j["measure"], "corsini");
+    EXPECT_TRUE(j["roughness_distance"].is_null());
+    EXPECT_EQ(j["original"]["corsini"]["levels"], nlohmann::json({1, 4}));
+    EXPECT_EQ(j["processed"]["corsini"]["roughness"][1], c.processed_corsini->levels[1].roughness);
+    EXPECT_EQ(j["corsini_distance"]["multiscale"]["distance"], c.corsini->multiscale.distance);
+    EXPECT_TRUE(all_finite(j));
+    const auto p = corsini_profile_json(mesh_facts(a), *c.original_corsini);
+    EXPECT_EQ(p["schema"], "meshdiff.corsini/1");
+    EXPECT_EQ(p["corsini"], j["original"]["corsini"]);
 }

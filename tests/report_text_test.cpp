@@ -6,6 +6,7 @@
 #include "meshdiff/io.h"
 #include "meshdiff/shapes.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -125,6 +126,11 @@ TEST(ProfileText, HasOneRowPerLevelAndTheGlobalRow)
     EXPECT_TRUE(contains(rows[header + 1], g6(p.levels[0].sigma))) << rows[header + 1];
     EXPECT_TRUE(contains(rows[header + 4], g6(p.global.sigma))) << rows[header + 4];
     EXPECT_TRUE(header + 5 == rows.size() || rows[header + 5].empty());  // nothing else in the table
+    const std::string counts = "2-ring " + std::to_string(p.curvature_widened) + ", normal rows dropped " +
+                               std::to_string(p.curvature_normal_rows_dropped) + ", quadric fallback " +
+                               std::to_string(p.curvature_fallback);
+    EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const std::string& r) { return contains(r, counts); }))
+        << counts;
 }
 
 TEST(ExactProfileText, NamesThePropertyAndTheHErrorWithARowPerLevel)
@@ -206,4 +212,28 @@ TEST(ShapeText, StatesTheCountsAndTheRangeOfExactH)
     // H on the inner equator (1 - 0.5) / (0.5 0.75) = 4/3, on the outer (1 + 0.5) / (0.5 1.25) = 2.4.
     EXPECT_EQ(text, "torus.ply: 96 vertices, 192 faces, exact H in [" + g6(4.0 / 3.0) + ", " + g6(2.4) +
                         "] (torus R 1 r 0.25)\n");
+}
+
+TEST(CorsiniText, ProfileAndComparisonHaveARowPerLevelWithTheRoughness)
+{
+    const LoadedMesh a = read_mesh(data("sphere_ico_2562.ply"));
+    const LoadedMesh b = read_mesh(data("ellipsoid_150_100_100.ply"));
+    CorsiniOptions co;
+    co.levels = {1, 3};
+    const CorsiniProfile p = corsini_profile(a.mesh, co);
+    const auto rows = lines(corsini_profile_text(mesh_facts(a), p));
+    std::size_t header = 0;
+    while (header < rows.size() && !contains(rows[header], "level    roughness")) ++header;
+    ASSERT_LT(header + 3, rows.size());
+    EXPECT_EQ(rows[header + 1].rfind("       1 ", 0), 0u) << rows[header + 1];
+    EXPECT_TRUE(contains(rows[header + 2], g6(p.levels[1].roughness))) << rows[header + 2];
+    EXPECT_TRUE(contains(rows[header + 3], "global") && contains(rows[header + 3], g6(p.global.roughness)));
+    CompareOptions o;
+    o.profile.levels = {1, 3};
+    o.distance = false;
+    o.measure = RoughnessMeasure::Corsini;
+    const std::string text = comparison_text(compare_meshes(a, b, o));
+    EXPECT_TRUE(contains(text, "Corsini roughness"));
+    EXPECT_FALSE(contains(text, "Roughness profiles"));
+    EXPECT_TRUE(contains(text, "  multi "));
 }

@@ -97,6 +97,7 @@ void add_compare_command(CLI::App& app, Action& action)
     sub->add_option("ORIGINAL", args->original, "original mesh (.ply .obj .off .stl)")->required();
     sub->add_option("PROCESSED", args->processed, "processed mesh")->required();
     add_compare_options(sub, args->compare);
+    add_measure_options(sub, args->compare.profile);
     sub->add_option("--json", args->json, "write the JSON report to FILE, or '-' for stdout");
     sub->add_option("--distance-map", args->distance_map,
                     "write the processed mesh with per-vertex distance to the original and a colour ramp as PLY");

@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "meshdiff/corsini.h"
 #include "meshdiff/error.h"
 #include "meshdiff/facts.h"
 #include "meshdiff/io.h"
@@ -30,12 +31,29 @@ struct ProfileArgs
     std::string exact_property = "exact_H";
 };
 
+// profile --measure corsini: Corsini et al.'s roughness (corsini.h).
+int run_corsini(const ProfileArgs& a)
+{
+    if (!a.vertex_data.empty() || a.exact || a.color_range > 0.0)
+        throw InvalidArgumentError("--vertex-data, --exact and --color-range need --measure sigma");
+    const CorsiniOptions options = to_corsini_options(a.profile);
+    const LoadedMesh loaded = read_mesh(a.mesh);
+    auto facts_future = std::async(std::launch::async, [&loaded] { return mesh_facts(loaded); });
+    const CorsiniProfile profile = corsini_profile(loaded.mesh, options);
+    const MeshFacts facts = facts_future.get();
+    if (!a.json.empty()) write_json(a.json, corsini_profile_json(facts, profile));
+    if (a.json != "-") std::cout << corsini_profile_text(facts, profile);
+    return 0;
+}
+
 int run_profile(const ProfileArgs& a)
 {
     set_threads(a.threads);
     for (const auto& [what, out] : {std::pair{"--json", a.json}, {"--vertex-data", a.vertex_data}})
         refuse_overwriting_inputs(what, out, {a.mesh});
     if (a.color_range < 0.0) throw InvalidArgumentError("--color-range must be > 0");
+    if (parse_enum<RoughnessMeasure>(a.profile.measure) == RoughnessMeasure::Corsini) return run_corsini(a);
+    if (a.profile.unbiased_variance) throw InvalidArgumentError("--unbiased-variance needs --measure corsini");
     const ProfileOptions options = to_profile_options(a.profile, !a.vertex_data.empty() || a.exact);
     const LoadedMesh loaded = read_mesh(a.mesh);
     // The topology report is serial; it overlaps the serial stages of the
@@ -73,6 +91,7 @@ void add_profile_command(CLI::App& app, Action& action)
     auto* sub = app.add_subcommand("profile", "roughness profile of one mesh");
     sub->add_option("MESH", args->mesh, "mesh file (.ply .obj .off .stl)")->required();
     add_profile_options(sub, args->profile);
+    add_measure_options(sub, args->profile);
     sub->add_option("--json", args->json, "write the JSON report to FILE, or '-' for stdout");
     sub->add_option("--vertex-data", args->vertex_data,
                     "write the normalised mesh with per-vertex H, D_L and an H colour map as PLY");

@@ -161,6 +161,27 @@ void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii)
         ->capture_default_str();
 }
 
+void add_measure_options(CLI::App* sub, ProfileCliOptions& o)
+{
+    sub->add_option("--measure", o.measure,
+                    "sigma: the paper's curvature-deviation profile; corsini: Corsini et al.'s dihedral-angle "
+                    "roughness (variance of dihedral angles per ring level, METHOD.md 6a)")
+        ->check(CLI::IsMember(enum_names<RoughnessMeasure>()))
+        ->capture_default_str();
+    sub->add_flag("--unbiased-variance", o.unbiased_variance,
+                  "with --measure corsini: variance with divisor n - 1 instead of n");
+}
+
+CorsiniOptions to_corsini_options(const ProfileCliOptions& o)
+{
+    if (!o.radii.empty()) throw InvalidArgumentError("--radii: metric levels are not defined for --measure corsini");
+    CorsiniOptions c;
+    c.levels = parse_levels(o.levels);
+    c.global = !o.no_global;
+    c.unbiased = o.unbiased_variance;
+    return c;
+}
+
 ProfileOptions to_profile_options(const ProfileCliOptions& o, bool keep_vertex_data)
 {
     ProfileOptions p;
@@ -223,6 +244,13 @@ CompareOptions to_compare_options(const CompareCliOptions& o)
 {
     CompareOptions c;
     c.profile = to_profile_options(o.profile, false);
+    c.measure = parse_enum<RoughnessMeasure>(o.profile.measure);
+    if (c.measure == RoughnessMeasure::Corsini) {
+        const CorsiniOptions co = to_corsini_options(o.profile);
+        c.corsini_unbiased = co.unbiased;
+    } else if (o.profile.unbiased_variance) {
+        throw InvalidArgumentError("--unbiased-variance needs --measure corsini");
+    }
     c.k = o.k;
     c.roughness = !o.no_roughness;
     c.distance = !o.no_distance;

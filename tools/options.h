@@ -3,6 +3,7 @@
 #pragma once
 
 #include "meshdiff/compare.h"
+#include "meshdiff/corsini.h"
 #include "meshdiff/curvature.h"
 #include "meshdiff/roughness.h"
 
@@ -38,12 +39,22 @@ struct ProfileCliOptions
     bool no_global = false;
     std::string curvature = "goldfeather";
     std::string weighting = "none";
+    std::string measure = "sigma";  // only profile and compare offer --measure
+    bool unbiased_variance = false;
 };
 //! \param with_radii also offer --radii (not for smooth, whose records hold ring levels only)
 void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii = true);
 
+//! --measure and --unbiased-variance (profile and compare only).
+void add_measure_options(CLI::App* sub, ProfileCliOptions& o);
+
 //! The library options for the parsed command-line options.
 ProfileOptions to_profile_options(const ProfileCliOptions& o, bool keep_vertex_data);
+
+//! The Corsini options (levels, global, variance) for the parsed options.
+//! \throw InvalidArgumentError if --radii was given, or --unbiased-variance
+//!        without --measure corsini.
+CorsiniOptions to_corsini_options(const ProfileCliOptions& o);
 
 //! Options of a comparison shared by compare and batch.
 struct CompareCliOptions

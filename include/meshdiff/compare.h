@@ -6,6 +6,7 @@
 //! JSON (schema "meshdiff.compare/2") and text forms are in meshdiff/report/.
 #pragma once
 
+#include "meshdiff/corsini.h"
 #include "meshdiff/facts.h"
 #include "meshdiff/hausdorff.h"
 #include "meshdiff/io.h"
@@ -23,11 +24,17 @@ namespace meshdiff {
 
 struct CompareOptions
 {
-    ProfileOptions profile{};    //!< levels, global, curvature estimator (same for both meshes)
-    double k = 1e-4;             //!< the constant of eq. 10 (an assumption; see METHOD.md 6)
-    bool roughness = true;       //!< compute the profiles and their distance
-    bool distance = true;        //!< compute the surface distance
-    SamplingOptions sampling{};  //!< surface sampling (Metro defaults)
+    ProfileOptions profile{};  //!< levels, global, curvature estimator (same for both meshes)
+    double k = 1e-4;           //!< the constant of eq. 10 (an assumption; see METHOD.md 6)
+    bool roughness = true;     //!< compute the profiles and their distance
+    //! The roughness of the roughness half: the paper's sigma_L profiles
+    //! (default), or Corsini et al.'s dihedral-angle roughness (corsini.h) at
+    //! profile.levels and globally, and its score R(M, M'); profile.radii must
+    //! then be empty and the curvature options are not used.
+    RoughnessMeasure measure = RoughnessMeasure::Sigma;
+    bool corsini_unbiased = false;  //!< CorsiniOptions::unbiased
+    bool distance = true;           //!< compute the surface distance
+    SamplingOptions sampling{};     //!< surface sampling (Metro defaults)
     //! Certify both one-sided Hausdorff distances (hausdorff.h) with these
     //! options, the lower bounds seeded with the sampled maxima; std::nullopt
     //! keeps the sampled maximum only (`--hausdorff sampled`).
@@ -54,6 +61,10 @@ struct Comparison
     std::optional<RoughnessProfile> original_profile;
     std::optional<RoughnessProfile> processed_profile;
     std::optional<RoughnessDistance> roughness;
+    //! With RoughnessMeasure::Corsini, instead of the three above.
+    std::optional<CorsiniProfile> original_corsini;
+    std::optional<CorsiniProfile> processed_corsini;
+    std::optional<CorsiniDistance> corsini;
     std::optional<SurfaceDistance> distance;
     //! With CompareOptions::vertex_distances: per vertex of the processed mesh,
     //! its exact distance to the original surface.
@@ -71,7 +82,8 @@ struct Comparison
 };
 
 //! Runs the halves asked for in \p options.
-//! \throw InvalidArgumentError for bad options (k <= 0, both halves off, bad sampling).
+//! \throw InvalidArgumentError for bad options (k <= 0, both halves off, bad
+//!        sampling, radii with the Corsini measure).
 Comparison compare_meshes(const LoadedMesh& original, const LoadedMesh& processed, const CompareOptions& options = {});
 
 }  // namespace meshdiff

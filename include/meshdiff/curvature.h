@@ -105,8 +105,12 @@ struct CurvatureOptions
 struct CurvatureField
 {
     std::vector<double> H;
-    std::size_t undefined = 0;                   //!< vertices with NaN H
-    std::size_t widened = 0;                     //!< fits that used the 2-ring
+    std::size_t undefined = 0;  //!< vertices with NaN H
+    std::size_t widened = 0;    //!< fits that used the 2-ring
+    //! Cubic fits (GoldfeatherCubic) with a defined H that left out the two
+    //! normal rows of at least one neighbour (max_normal_angle_deg rule), the
+    //! fits that fell back to the quadric included; 0 for the other methods.
+    std::size_t normal_rows_dropped = 0;
     std::size_t quadric_fallback = 0;            //!< cubic fits that fell back to the quadric
     std::size_t no_normal = 0;                   //!< vertices without a vertex normal (all faces degenerate)
     std::size_t capped = 0;                      //!< 2-ring neighbourhoods cut to kMaxFitNeighbors (fit defined or not)

@@ -7,6 +7,7 @@
 #include "meshdiff/closest_point.h"
 #include "meshdiff/colormap.h"
 #include "meshdiff/compare.h"
+#include "meshdiff/corsini.h"
 #include "meshdiff/cotangent.h"
 #include "meshdiff/curvature.h"
 #include "meshdiff/enum_names.h"

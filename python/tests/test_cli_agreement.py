@@ -115,3 +115,13 @@ def test_float32_and_strided_input_are_converted_once(data):
     tri = meshdiff.surface_distance([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]],
                                     [[0, 0, 0.5], [1, 0, 0.5], [0, 1, 0.5]], [[0, 1, 2]])
     assert tri["sampled_hausdorff"] == tri["hausdorff"]["lower"] == 0.5
+
+
+def test_corsini_profile_equals_the_cli_json(cli, data):
+    path = data / "fandisk.ply"
+    V, F = meshdiff.read_mesh(path)
+    arrays = meshdiff.corsini_profile(V, F, levels=[1, 2, 5], unbiased=True)
+    expected = cli_json(cli, "profile", str(path), "--measure", "corsini", "--levels", "1,2,5", "--unbiased-variance")
+    del arrays["mesh"]["path"], expected["mesh"]["path"]
+    assert differences(arrays, expected) == []
+    assert arrays["schema"] == "meshdiff.corsini/1" and len(arrays["corsini"]["roughness"]) == 3

@@ -84,6 +84,7 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
                       {"max_normal_angle_deg", p.curvature_options.max_normal_angle_deg},
                       {"undefined_vertices", p.curvature_undefined},
                       {"widened_to_2_ring", p.curvature_widened},
+                      {"normal_rows_dropped", p.curvature_normal_rows_dropped},
                       {"quadric_fallback", p.curvature_fallback},
                       {"sign_convention", "H > 0 where convex with outward normals (unit sphere: +1)"},
                       {"units", "1/length on the mesh scaled to mean vertex distance 1 from the centroid"}};
@@ -185,6 +186,87 @@ nlohmann::json roughness_distance_json(const RoughnessDistance& d)
         arrays(
             d.radii, [](const auto& l) { return l.radius; }, "radii", "distance_radii", "relative_change_radii",
             "reference_zero_radii");
+    return j;
+}
+
+namespace {
+nlohmann::json corsini_level_json(const CorsiniLevel& l)
+{
+    return {{"level", l.level},
+            {"roughness", l.roughness},
+            {"vertices_used", l.vertices_used},
+            {"no_neighborhood", l.no_neighborhood},
+            {"mean_edges", l.mean_edges}};
+}
+}  // namespace
+
+nlohmann::json corsini_json(const CorsiniProfile& p)
+{
+    nlohmann::json levels = nlohmann::json::array(), r = nlohmann::json::array(), details = nlohmann::json::array();
+    for (const auto& l : p.levels) {
+        levels.push_back(l.level);
+        r.push_back(l.roughness);
+        details.push_back(corsini_level_json(l));
+    }
+    nlohmann::json j;
+    j["levels"] = levels;
+    j["roughness"] = r;
+    j["roughness_global"] = p.has_global ? nlohmann::json(p.global.roughness) : nlohmann::json(nullptr);
+    j["multiscale"] = p.levels.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.multiscale);
+    j["level_details"] = details;
+    if (p.has_global) j["global"] = corsini_level_json(p.global);
+    j["dihedral"] = {{"edges", p.edges},
+                     {"edges_with_angle", p.dihedral_edges},
+                     {"mean", p.mean_dihedral},
+                     {"max", p.max_dihedral},
+                     {"unit", "rad"}};
+    j["variance"] = p.options.unbiased ? "sample (divisor n - 1)" : "population (divisor n)";
+    j["unit"] = "rad^2";
+    j["definition"] =
+        "theta_e = angle between the normals of the two faces of edge e; R_L(v) = variance of theta_e over the edges "
+        "with both ends within L edges of v; R_L(M) = sum A_v R_L(v) / sum A_v (A_v = a third of the incident face "
+        "areas); global: variance over all edges; multiscale: mean of R_L(M) over the levels (METHOD.md 6a)";
+    return j;
+}
+
+nlohmann::json corsini_profile_json(const MeshFacts& f, const CorsiniProfile& p)
+{
+    nlohmann::json j;
+    j["schema"] = "meshdiff.corsini/1";
+    j["meshdiff_version"] = MESHDIFF_VERSION;
+    j["mesh"] = mesh_json(f);
+    j["measure"] = "corsini";
+    j["corsini"] = corsini_json(p);
+    j["warnings"] = warnings_json(warnings(f));
+    return j;
+}
+
+nlohmann::json corsini_distance_json(const CorsiniDistance& d)
+{
+    auto change = [](const LevelDistance& l) {
+        return l.relative_change_defined ? nlohmann::json(l.relative_change) : nlohmann::json(nullptr);
+    };
+    auto one = [&](const LevelDistance& l) {
+        return nlohmann::json{
+            {"distance", l.distance}, {"relative_change", change(l)}, {"reference_zero", l.reference_zero}};
+    };
+    nlohmann::json levels = nlohmann::json::array(), dist = nlohmann::json::array(), rel = nlohmann::json::array();
+    nlohmann::json zero = nlohmann::json::array();
+    for (const auto& l : d.levels) {
+        levels.push_back(l.level);
+        dist.push_back(l.distance);
+        rel.push_back(change(l));
+        if (l.reference_zero) zero.push_back(l.level);
+    }
+    nlohmann::json j;
+    j["k"] = d.k;
+    j["formula"] = "R(M, M') = ln(|R' - R| / R + k) - ln(k); relative_change = (R' - R) / R";
+    j["levels"] = levels;
+    j["distance"] = dist;
+    j["relative_change"] = rel;
+    j["reference_zero_levels"] = zero;
+    j["global"] = d.has_global ? one(d.global) : nlohmann::json(nullptr);
+    j["multiscale"] = d.has_multiscale ? one(d.multiscale) : nlohmann::json(nullptr);
     return j;
 }
 
@@ -370,6 +452,12 @@ nlohmann::json comparison_json(const Comparison& c)
     j["original"] = side(c.original, c.original_profile);
     j["processed"] = side(c.processed, c.processed_profile);
     j["roughness_distance"] = c.roughness ? roughness_distance_json(*c.roughness) : nlohmann::json(nullptr);
+    if (c.corsini) {  // only with --measure corsini: other reports are unchanged
+        j["measure"] = "corsini";
+        j["original"]["corsini"] = corsini_json(*c.original_corsini);
+        j["processed"]["corsini"] = corsini_json(*c.processed_corsini);
+        j["corsini_distance"] = corsini_distance_json(*c.corsini);
+    }
     if (c.distance) {
         j["surface_distance"] = surface_distance_json(*c.distance, c.options.sampling);
     } else {

@@ -9,7 +9,10 @@
 
 namespace meshdiff {
 
-std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
+namespace {
+
+// The mesh and defect lines that head a profile report.
+std::string mesh_header(const MeshFacts& f)
 {
     const auto& t = f.topology;
     std::string s;
@@ -22,15 +25,23 @@ std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
         "faces {},\n           orientation conflicts {}, unreferenced vertices removed {}\n",
         t.non_manifold_edges, t.non_manifold_vertices, t.degenerate_faces, t.duplicate_faces, t.orientation_conflicts,
         f.input.unreferenced_vertices);
+    return s;
+}
+
+}  // namespace
+
+std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
+{
+    std::string s = mesh_header(f);
     s += fmt::format("scale      centroid ({:.6g}, {:.6g}, {:.6g}), s = {:.6g} (mean vertex distance to centroid)\n",
                      p.normalization.center.x(), p.normalization.center.y(), p.normalization.center.z(),
                      p.normalization.scale);
-    s += fmt::format("curvature  {}{}; undefined {}, 2-ring {}, quadric fallback {}\n",
+    s += fmt::format("curvature  {}{}; undefined {}, 2-ring {}, normal rows dropped {}, quadric fallback {}\n",
                      to_string(p.curvature_options.method),
                      p.curvature_options.method == CurvatureMethod::MeyerCotangent
                          ? ""
                          : fmt::format(" (row weighting {})", to_string(p.curvature_options.weighting)),
-                     p.curvature_undefined, p.curvature_widened, p.curvature_fallback);
+                     p.curvature_undefined, p.curvature_widened, p.curvature_normal_rows_dropped, p.curvature_fallback);
     s += fmt::format("\n   level        sigma     used   no-nbhd {:>9}\n",
                      fmt::format("top{:g}%", 100.0 * p.outlier_fraction));
     auto row = [&](const std::string& name, const LevelRoughness& l) {
@@ -45,6 +56,29 @@ std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
         for (const auto& l : p.radii) row(fmt::format("{:g}", l.radius), l);
     }
     const auto w = warnings(f, &p);
+    if (!w.empty()) {
+        s += "\nwarnings\n";
+        for (const auto& line : w) s += "  - " + line.text + "\n";
+    }
+    return s;
+}
+
+std::string corsini_profile_text(const MeshFacts& f, const CorsiniProfile& p)
+{
+    std::string s = mesh_header(f);
+    s += fmt::format(
+        "corsini    dihedral-angle roughness (Corsini et al. 2007; METHOD.md 6a): {} of {} edges have an angle, "
+        "mean {:.6g} rad, max {:.6g} rad; {} variance\n",
+        p.dihedral_edges, p.edges, p.mean_dihedral, p.max_dihedral, p.options.unbiased ? "sample" : "population");
+    s += fmt::format("\n   level    roughness     used   no-nbhd   edges/nbhd   (rad^2)\n");
+    auto row = [&](const std::string& name, const CorsiniLevel& l) {
+        s += fmt::format("{:>8} {:>12.6g} {:>8} {:>9} {:>12.1f}\n", name, l.roughness, l.vertices_used,
+                         l.no_neighborhood, l.mean_edges);
+    };
+    for (const auto& l : p.levels) row(std::to_string(l.level), l);
+    if (p.has_global) row("global", p.global);
+    if (!p.levels.empty()) s += fmt::format("\nmulti-scale roughness (mean over the levels): {:.6g}\n", p.multiscale);
+    const auto w = warnings(f);
     if (!w.empty()) {
         s += "\nwarnings\n";
         for (const auto& line : w) s += "  - " + line.text + "\n";
@@ -191,6 +225,28 @@ std::string comparison_text(const Comparison& c)
             for (const auto& w : warnings(p == &pa ? c.original : c.processed, p))
                 if (w.kind == WarningKind::OutliersDominate || w.kind == WarningKind::CappedNeighbourhoods)
                     s += fmt::format("  ! {}: {}\n", p == &pa ? "original" : "processed", w.text);
+    }
+    if (c.corsini) {
+        const auto& pa = *c.original_corsini;
+        const auto& pb = *c.processed_corsini;
+        s += "\nCorsini roughness (variance of dihedral angles, rad^2; Corsini et al. 2007, METHOD.md 6a)\n";
+        s += fmt::format("  R(M, M') = ln(|R' - R| / R + k) - ln(k), k = {:g}; change = (R' - R) / R\n", c.corsini->k);
+        s += fmt::format("  {:>7} {:>13} {:>13} {:>10} {:>9}\n", "level", "R orig", "R proc", "change", "R(M,M')");
+        auto row = [&](const std::string& name, double ra, double rb, const LevelDistance& d) {
+            const std::string change =
+                d.relative_change_defined ? fmt::format("{:+.2f}%", 100.0 * d.relative_change) : "undef";
+            s += fmt::format("  {:>7} {:>13.6g} {:>13.6g} {:>10} {:>9.4f}\n", name, ra, rb, change, d.distance);
+        };
+        for (const auto& d : c.corsini->levels) {
+            double ra = 0, rb = 0;
+            for (const auto& l : pa.levels)
+                if (l.level == d.level) ra = l.roughness;
+            for (const auto& l : pb.levels)
+                if (l.level == d.level) rb = l.roughness;
+            row(std::to_string(d.level), ra, rb, d);
+        }
+        if (c.corsini->has_global) row("global", pa.global.roughness, pb.global.roughness, c.corsini->global);
+        if (c.corsini->has_multiscale) row("multi", pa.multiscale, pb.multiscale, c.corsini->multiscale);
     }
     if (c.distance) {
         const auto& d = *c.distance;

@@ -42,6 +42,15 @@ nlohmann::json exact_profile_json(const RoughnessProfile& estimated, const Exact
 //! The roughness_distance object of "meshdiff.compare/2".
 nlohmann::json roughness_distance_json(const RoughnessDistance& d);
 
+//! The "corsini" block of a profile or of one side of a comparison: the
+//! roughness per level, global and multi-scale, with counts and definition.
+nlohmann::json corsini_json(const CorsiniProfile& profile);
+
+//! `meshdiff profile --measure corsini` (schema "meshdiff.corsini/1").
+nlohmann::json corsini_profile_json(const MeshFacts& facts, const CorsiniProfile& profile);
+
+//! The comparison score R(M, M') per level, global and multi-scale.
+nlohmann::json corsini_distance_json(const CorsiniDistance& d);
 //! One direction's distance statistics (absolute, and relative to \p diagonal),
 //! its area-weighted statistics (null without face samples) and histogram
 //! (only when computed).

@@ -19,6 +19,9 @@ namespace meshdiff {
 //! The profile report of one mesh.
 std::string profile_text(const MeshFacts& facts, const RoughnessProfile& profile);
 
+//! The Corsini roughness report of one mesh (profile --measure corsini).
+std::string corsini_profile_text(const MeshFacts& facts, const CorsiniProfile& profile);
+
 //! The table of an exact profile beside the estimated one (profile --exact).
 std::string exact_profile_text(const RoughnessProfile& estimated, const ExactProfile& exact,
                                const std::string& property);
