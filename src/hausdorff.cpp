@@ -226,10 +226,8 @@ void validate(const HausdorffOptions& o)
         throw InvalidArgumentError("HausdorffOptions: relative_tolerance and absolute_tolerance are both 0");
 }
 
-CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
-                                               const HausdorffOptions& options,
-                                               const std::optional<HausdorffSeed>& seed,
-                                               const std::vector<ClosestPoint>& vq)
+namespace {
+void validate_inputs(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index, const HausdorffOptions& options)
 {
     validate(options);
     validate(a, "certified_hausdorff: mesh A");
@@ -237,6 +235,15 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
     if (b_index.n_faces() != b.n_faces())
         throw InvalidArgumentError(fmt::format("certified_hausdorff: the index holds {} faces but mesh B has {}",
                                                b_index.n_faces(), b.n_faces()));
+}
+}  // namespace
+
+CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
+                                               const HausdorffOptions& options,
+                                               const std::optional<HausdorffSeed>& seed,
+                                               const std::vector<ClosestPoint>& vq)
+{
+    validate_inputs(a, b, b_index, options);
     if (vq.size() != a.n_vertices())
         throw InvalidArgumentError(
             fmt::format("certified_hausdorff: {} vertex closest points for {} vertices", vq.size(), a.n_vertices()));
@@ -449,12 +456,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
 CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
                                        const HausdorffOptions& options, const std::optional<HausdorffSeed>& seed)
 {
-    validate(options);
-    validate(a, "certified_hausdorff: mesh A");
-    validate(b, "certified_hausdorff: mesh B");
-    if (b_index.n_faces() != b.n_faces())
-        throw InvalidArgumentError(fmt::format("certified_hausdorff: the index holds {} faces but mesh B has {}",
-                                               b_index.n_faces(), b.n_faces()));
+    validate_inputs(a, b, b_index, options);  // before the vertex queries
     return detail::certified_hausdorff(a, b, b_index, options, seed, b_index.closest_points(a.points));
 }
 

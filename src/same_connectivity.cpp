@@ -2,6 +2,8 @@
 
 #include "meshdiff/topology.h"
 
+#include "detail/compensated_sum.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -11,18 +13,7 @@ namespace meshdiff {
 
 namespace {
 
-// Neumaier's compensated sum, sequential.
-struct Sum
-{
-    double s = 0.0, c = 0.0;
-    void add(double x)
-    {
-        const double t = s + x;
-        c += std::abs(s) >= std::abs(x) ? (s - t) + x : (x - t) + s;
-        s = t;
-    }
-    double value() const { return s + c; }
-};
+using Sum = detail::CompensatedSum;  // sequential, in index order
 
 constexpr double kPi = 3.14159265358979323846;
 

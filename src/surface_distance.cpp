@@ -2,6 +2,7 @@
 
 #include "meshdiff/error.h"
 
+#include "detail/compensated_sum.h"
 #include "detail/hausdorff.h"
 
 #include <fmt/format.h>
@@ -15,18 +16,7 @@ namespace meshdiff {
 
 namespace {
 
-// Neumaier's compensated sum, sequential in index order.
-struct Sum
-{
-    double s = 0.0, c = 0.0;
-    void add(double x)
-    {
-        const double t = s + x;
-        c += std::abs(s) >= std::abs(x) ? (s - t) + x : (x - t) + s;
-        s = t;
-    }
-    double value() const { return s + c; }
-};
+using Sum = detail::CompensatedSum;  // sequential, in index order
 
 std::size_t rank_of(std::size_t n, unsigned q)
 {
@@ -315,47 +305,33 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         if (summary.histogram_bins > 0) s.histogram = distance_histogram(d.distances, summary.histogram_bins);
     };
 
-    SurfaceDistance r;
-    {
-        const ClosestPointIndex index_b(b);
-        std::vector<ClosestPoint> vq;  // A's vertices: samples and certification
-        if (certify) vq = index_b.closest_points(a.points);
-        SampledDirection d = sampled_direction(a, index_b, opt, certify ? &vq : nullptr);
-        r.forward = distance_stats(d.samples, d.distances);
-        summarize(r.forward, a, d, recall);
-        if (forward) *forward = std::move(d);
+    // One direction: samples on `from`, exact distances to `to`.
+    auto direction = [&](const Mesh& from, const Mesh& to, DistanceStats& stats, std::vector<double>& within,
+                         SampledDirection* keep, std::vector<double>* vertex_distance,
+                         std::optional<CertifiedHausdorff>& certified) {
+        const ClosestPointIndex index(to);
+        std::vector<ClosestPoint> vq;  // from's vertices: samples and certification
+        if (certify) vq = index.closest_points(from.points);
+        SampledDirection d = sampled_direction(from, index, opt, certify ? &vq : nullptr);
+        stats = distance_stats(d.samples, d.distances);
+        summarize(stats, from, d, within);
+        if (keep) *keep = std::move(d);
         d = SampledDirection{};  // free the samples before the certification
-        if (b_vertex_distances) {
+        if (vertex_distance) {
             if (certify) {
-                r.a_vertex_distance.resize(vq.size());
-                for (std::size_t v = 0; v < vq.size(); ++v) r.a_vertex_distance[v] = vq[v].distance;
+                vertex_distance->resize(vq.size());
+                for (std::size_t v = 0; v < vq.size(); ++v) (*vertex_distance)[v] = vq[v].distance;
             } else {
-                r.a_vertex_distance = vertex_distances(a, index_b);
+                *vertex_distance = vertex_distances(from, index);
             }
         }
-        if (certify)
-            r.forward_hausdorff = detail::certified_hausdorff(a, b, index_b, *certify, seed_of(a, r.forward), vq);
-    }
-    {
-        const ClosestPointIndex index_a(a);
-        std::vector<ClosestPoint> vq;
-        if (certify) vq = index_a.closest_points(b.points);
-        SampledDirection d = sampled_direction(b, index_a, opt, certify ? &vq : nullptr);
-        r.backward = distance_stats(d.samples, d.distances);
-        summarize(r.backward, b, d, precision);
-        if (backward) *backward = std::move(d);
-        d = SampledDirection{};
-        if (b_vertex_distances) {
-            if (certify) {
-                r.b_vertex_distance.resize(vq.size());
-                for (std::size_t v = 0; v < vq.size(); ++v) r.b_vertex_distance[v] = vq[v].distance;
-            } else {
-                r.b_vertex_distance = vertex_distances(b, index_a);
-            }
-        }
-        if (certify)
-            r.backward_hausdorff = detail::certified_hausdorff(b, a, index_a, *certify, seed_of(b, r.backward), vq);
-    }
+        if (certify) certified = detail::certified_hausdorff(from, to, index, *certify, seed_of(from, stats), vq);
+    };
+    SurfaceDistance r;
+    direction(a, b, r.forward, recall, forward, b_vertex_distances ? &r.a_vertex_distance : nullptr,
+              r.forward_hausdorff);
+    direction(b, a, r.backward, precision, backward, b_vertex_distances ? &r.b_vertex_distance : nullptr,
+              r.backward_hausdorff);
     r.hausdorff = std::max(r.forward.max, r.backward.max);
     r.diagonal = diagonal;
     r.metro_diagonal = metro_diagonal(a, b);
