@@ -157,6 +157,10 @@ std::vector<std::array<std::uint32_t, 3>> edge_neighbours(const Mesh& m)
 // Local descents over B's faces, each keeping the exact value of a face it
 // holds (so any result is a valid upper bound). At most kMaxSteps moves.
 constexpr int kMaxSteps = 16;
+// The cuts of a cell along planes between adjacent triangles of B: at most
+// this deep, and this many parts evaluated per cell.
+constexpr int kPieceDepth = 8;
+constexpr int kPieceWork = 48;
 using Neighbours = std::vector<std::array<std::uint32_t, 3>>;
 
 // Face \p t of B is at distance \p d from \p p; moves to a neighbour closer to
@@ -200,6 +204,109 @@ bool descend_hull(const std::array<Vec3, 3>& c, const Triangles& b, const Neighb
         t = next;
     }
     return false;
+}
+
+// A convex polygon: a piece of a cell cut along the planes between adjacent
+// triangles of B.
+constexpr int kMaxPiece = 16;
+struct Piece
+{
+    std::array<Vec3, kMaxPiece> p;
+    int n = 0;
+};
+
+// Cuts \p in by the plane through \p o with normal \p m: the part where
+// (v - o).m >= 0 into \p keep, the part where it is <= 0 into \p rest (the
+// crossing points into both, so that together they cover \p in up to the
+// rounding of those points). False if a part would exceed kMaxPiece corners.
+bool cut(const Piece& in, const Vec3& o, const Vec3& m, Piece& keep, Piece& rest)
+{
+    keep.n = rest.n = 0;
+    auto push = [](Piece& q, const Vec3& v) {
+        if (q.n == kMaxPiece) return false;
+        q.p[std::size_t(q.n++)] = v;
+        return true;
+    };
+    for (int i = 0; i < in.n; ++i) {
+        const Vec3& a = in.p[std::size_t(i)];
+        const Vec3& b = in.p[std::size_t((i + 1) % in.n)];
+        const double sa = (a - o).dot(m), sb = (b - o).dot(m);
+        if (sa >= 0.0 && !push(keep, a)) return false;
+        if (sa <= 0.0 && !push(rest, a)) return false;
+        if ((sa > 0.0 && sb < 0.0) || (sa < 0.0 && sb > 0.0)) {
+            const Vec3 x = a + (sa / (sa - sb)) * (b - a);
+            if (!push(keep, x) || !push(rest, x)) return false;
+        }
+    }
+    return true;
+}
+
+// The plane between face t of B and its neighbour t2 across edge k (corners
+// k, k + 1 of t): through that edge, bisecting the angle between the two
+// faces; \p m points to t's side. False for a collapsed edge or neighbour.
+bool bisector(const Mesh& b, std::uint32_t t, std::size_t k, std::uint32_t t2, Vec3& o, Vec3& m)
+{
+    const Face& f = b.faces[t];
+    const int v0 = f[k], v1 = f[(k + 1) % 3], vo = f[(k + 2) % 3];
+    int wo = -1;
+    for (const int w : b.faces[t2])
+        if (w != v0 && w != v1) wo = w;
+    if (wo < 0) return false;
+    o = b.points[std::size_t(v0)];
+    const Vec3 e = b.points[std::size_t(v1)] - o;
+    const double ee = e.squaredNorm();
+    if (!(ee > 0.0)) return false;
+    auto across = [&](int v) -> Vec3 {  // unit vector from the edge towards v, across it
+        Vec3 d = b.points[std::size_t(v)] - o;
+        d -= (d.dot(e) / ee) * e;
+        const double len = d.norm();
+        return len > 0.0 ? Vec3(d / len) : Vec3(Vec3::Zero());
+    };
+    const Vec3 u = across(vo), u2 = across(wo);
+    m = u - u2;
+    if (!(m.squaredNorm() > 1e-12)) m = u;
+    return m.squaredNorm() > 0.0;
+}
+
+// An upper bound of d(., B) over the convex piece \p q: the largest distance
+// from its corners to face t (convexity), and where that exceeds \p goal and
+// q reaches across an edge of t, the larger of the bounds of its two parts
+// cut along the bisecting plane of that edge, the far part bounded by the
+// neighbour (so around a vertex of B a piece is passed along its fan). +inf
+// when it cannot get below \p goal within \p depth cuts or \p work piece
+// evaluations. Any cut gives a valid bound: every point of q lies in a part.
+double piece_bound(const Piece& q, std::uint32_t t, int depth, double goal, const Mesh& b, const Triangles& tris,
+                   const Neighbours& nbr, int& work)
+{
+    if (q.n == 0) return 0.0;
+    if (--work < 0) return kInf;
+    double v2 = 0.0;
+    for (int i = 0; i < q.n; ++i) v2 = std::max(v2, squared_distance(q.p[std::size_t(i)], tris[t]));
+    const double v = std::sqrt(v2);
+    if (v <= goal) return v;
+    if (depth == 0) return kInf;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const std::uint32_t t2 = nbr[t][k];
+        Vec3 o, m;
+        if (t2 == kNone || !bisector(b, t, k, t2, o, m)) continue;
+        // Outside beyond rounding: the crossing points of an earlier cut along
+        // this plane lie on it up to a few ulps.
+        double most = 0.0, least = 0.0;
+        for (int i = 0; i < q.n; ++i) {
+            const double s = (q.p[std::size_t(i)] - o).dot(m);
+            most = std::max(most, std::abs(s));
+            least = std::min(least, s);
+        }
+        const bool outside = least < -1e-9 * most;
+        if (!outside) continue;
+        Piece keep, rest;
+        if (!cut(q, o, m, keep, rest)) return kInf;
+        const double near = keep.n ? piece_bound(keep, t, depth - 1, goal, b, tris, nbr, work) : 0.0;
+        if (near > goal) return kInf;
+        const double far = piece_bound(rest, t2, depth - 1, goal, b, tris, nbr, work);
+        return far > goal ? kInf : std::max(near, far);
+    }
+    return kInf;  // inside t's wedge and still above the goal
 }
 
 double largest_coordinate(const Mesh& m)
@@ -344,6 +451,21 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
                 c.hint = best_face;
             }
             u = std::min(u, best_face_u);
+            // Across edges of B: the cell cut along the planes between
+            // adjacent triangles, each part bounded by its own triangle.
+            if (u > threshold && best_face != kNone && coverable) {
+                Piece q;
+                q.n = 3;
+                for (std::size_t k = 0; k < 3; ++k) q.p[k] = c.corner[k];
+                int work = kPieceWork;
+                const double v = piece_bound(q, best_face, kPieceDepth, threshold, b, tris, nbr, work);
+                if (v <= threshold) {
+                    // The crossing points are rounded: a point of the cell is
+                    // within a few ulps of its coordinates from a part.
+                    const double slack = 1e-14 * (diam + c.corner[0].cwiseAbs().maxCoeff());
+                    u = std::min(u, v + slack);
+                }
+            }
             // A search is worth it only if one triangle of B can be near all
             // the corners: not when the cell is much wider than the triangles
             // near them (a cost heuristic: skipping only means splitting).

@@ -452,3 +452,21 @@ TEST(Hausdorff, CertifyingKeepsTheSampledNumbersBitForBit)
     EXPECT_EQ(h.upper, cert.forward_hausdorff->upper);
     EXPECT_EQ(h.location.face, cert.forward_hausdorff->location.face);
 }
+
+TEST(Hausdorff, TwoTriangulationsOfOneSurfaceAreCertifiedWithinTheBudget)
+{
+    // A remesher's pair: every triangle of one lies within the sag of the
+    // other, so it is bounded only by cutting it along the planes between
+    // the other's adjacent triangles (one triangle bounds no cell over an
+    // edge or a vertex). Before those cuts the budget ran out here.
+    const Mesh a = torus_irregular(3000, 1.0, 0.3, 1).mesh;
+    const Mesh b = torus_irregular(3000, 1.0, 0.3, 2).mesh;
+    for (const auto& [x, y] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+        const CertifiedHausdorff h = certified_hausdorff(*x, *y, {});
+        expect_certified(h);
+        EXPECT_FALSE(h.budget_exhausted);
+        EXPECT_LT(h.bound_evaluations, 40 * x->n_faces());
+        EXPECT_LE(dense_maximum(*x, *y, 8), h.upper * (1 + 1e-12));
+        EXPECT_LE(h.upper - h.lower, 1e-4 * h.lower);
+    }
+}

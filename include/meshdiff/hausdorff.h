@@ -19,7 +19,14 @@
 //!   smaller largest corner distance, while there is one), and only where the
 //!   descent ends without a local minimum (a boundary, a cap of 16 steps) or
 //!   at the depth limit by a search of B's bounding-volume hierarchy
-//!   (ClosestPointIndex::hull_distance_bound()). A second, cheaper
+//!   (ClosestPointIndex::hull_distance_bound()). Where no one triangle is
+//!   near enough to all of T (T lies over an edge or a vertex of B), T is cut
+//!   along the plane through that edge bisecting the angle between its two
+//!   triangles, each part bounded by its own triangle (the maximum over a
+//!   convex part is at one of its corners), a part reaching over another edge
+//!   cut again (at most 8 cuts deep, 48 parts): around a vertex of B a part is
+//!   passed along its fan. Any cut gives a valid bound, since every point of T
+//!   lies in a part. A second, cheaper
 //!   bound comes first: d(., B) is 1-Lipschitz and every point of T lies
 //!   within diam(T) / sqrt(3) of a corner, so U(T) <= max d(c, B) +
 //!   diam(T) / sqrt(3). A T too wide for any triangle of B to be near all
