@@ -260,3 +260,58 @@ TEST(DiskMeans, AgreeWithBreadthFirstSearchAroundAHub)
         if (std::isnan(v)) v = 0.5;
     expect_brute_force_disk_means(mesh, values, {2, 1});
 }
+
+TEST(DiskMeans, AgreeWithBreadthFirstSearchOnAShuffledVertexOrder)
+{
+    // Neighbours scattered in memory: the search runs on a copy renumbered in
+    // Morton order (see disk_means()); its means are those of a search of each
+    // centre, for a sample of centres.
+    const Shape torus = torus_irregular(20000, 1.0, 0.3, 7);
+    const Mesh& grid = torus.mesh;
+    const std::size_t n = grid.n_vertices();
+    std::vector<std::uint32_t> perm(n);  // new id of old vertex i
+    for (std::size_t i = 0; i < n; ++i) perm[i] = std::uint32_t(i);
+    std::shuffle(perm.begin(), perm.end(), std::mt19937(11));
+    Mesh mesh;
+    mesh.points.resize(n);
+    for (std::size_t i = 0; i < n; ++i) mesh.points[perm[i]] = grid.points[i];
+    mesh.faces = grid.faces;
+    for (auto& f : mesh.faces)
+        for (auto& v : f) v = int(perm[std::size_t(v)]);
+    std::vector<double> values(n);
+    for (std::size_t i = 0; i < n; ++i)
+        values[i] = std::sin(9.0 * mesh.points[i].x()) + mesh.points[i].z() + (i % 97 == 0 ? NAN : 0.0);
+
+    const Adjacency adj = vertex_adjacency(mesh);
+    std::size_t far = 0;
+    for (std::size_t v = 0; v < n; ++v)
+        for (auto it = adj.begin(v); it != adj.end(v); ++it) far += (*it > v ? *it - v : v - *it) > 4096;
+    ASSERT_GT(far, adj.index.size() / 2) << "the order is not scattered enough to take the renumbered path";
+
+    const std::vector<int> levels{4, 1, 9};
+    const DiskMeans dm = disk_means(mesh, adj, values, levels, true);
+    std::mt19937 pick(5);
+    for (int trial = 0; trial < 300; ++trial) {
+        const std::size_t c = pick() % n;
+        for (std::size_t k = 0; k < levels.size(); ++k) {
+            if (std::isnan(values[c])) {
+                EXPECT_TRUE(std::isnan(dm.mean[k][c]));
+                continue;
+            }
+            const auto dist = ring_distances(adj, c, levels[k]);
+            double sum = 0;
+            std::uint32_t cnt = 0, size = 0;
+            for (std::size_t j = 0; j < n; ++j)
+                if (dist[j] > 0) {
+                    ++size;
+                    if (!std::isnan(values[j])) {
+                        sum += values[j];
+                        ++cnt;
+                    }
+                }
+            ASSERT_EQ(dm.size[k][c], size) << "vertex " << c << ", level " << levels[k];
+            ASSERT_NEAR(dm.mean[k][c], sum / cnt, 1e-12 * (1 + std::abs(sum / cnt)))
+                << "vertex " << c << ", level " << levels[k];
+        }
+    }
+}
