@@ -85,12 +85,13 @@ struct DistanceStats
     std::size_t n_vertex = 0;  //!< vertex samples
     std::size_t n_edge = 0;    //!< edge samples
     std::size_t n_face = 0;    //!< face samples
+    std::size_t n_point = 0;   //!< points of a point cloud (cloud_distance.h)
     //! Where the maximum lies: the first sample (in sample order) at `max`,
     //! its kind and source element (SurfaceSamples::element).
     Vec3 max_point = Vec3::Zero();
     SampleKind max_kind = SampleKind::OnVertex;
     std::uint32_t max_element = 0;
-    std::size_t n_samples() const { return n_vertex + n_edge + n_face; }
+    std::size_t n_samples() const { return n_vertex + n_edge + n_face + n_point; }
     //! Face samples only, area-weighted; std::nullopt when the direction has
     //! no face sample (faces off, or a budget the vertices and edges used up).
     std::optional<AreaWeightedStats> area_weighted;
