@@ -139,18 +139,24 @@ std::string stats_text(const std::string& title, const DistanceStats& s, double 
 }
 
 // The summary metrics of a surface distance (METHOD.md section 6).
-std::string summary_text(const SurfaceDistance& d)
+// With a point cloud on the forward (\p cloud_a) or backward (\p cloud_b)
+// sampled side, that direction weights its points equally (cloud_distance.h).
+std::string summary_text(const SurfaceDistance& d, bool cloud_a = false, bool cloud_b = false)
 {
     if (!d.summary) return fmt::format("Summary metrics unavailable: {}\n", d.summary_unavailable);
     const SummaryMetrics& m = *d.summary;
     const AreaWeightedStats& f = *d.forward.area_weighted;
     const AreaWeightedStats& b = *d.backward.area_weighted;
-    std::string s = "Summary metrics (face samples, each weighted by the area it stands for):\n";
+    std::string s = cloud_a || cloud_b ? fmt::format("Summary metrics ({}):\n",
+                                                     cloud_a && cloud_b ? "every point of each cloud weighted equally"
+                                                                        : "a mesh's face samples weighted by the area "
+                                                                          "each stands for, a cloud's points equally")
+                                       : "Summary metrics (face samples, each weighted by the area it stands for):\n";
     s += fmt::format("  area-weighted mean   forward {:.6g} ({:.6g} wrt diagonal), backward {:.6g} ({:.6g})\n", f.mean,
                      f.mean / d.diagonal, b.mean, b.mean / d.diagonal);
     s += fmt::format("  area-weighted RMS    forward {:.6g} ({:.6g} wrt diagonal), backward {:.6g} ({:.6g})\n", f.rms,
                      f.rms / d.diagonal, b.rms, b.rms / d.diagonal);
-    if (f.area_fraction < 1.0 || b.area_fraction < 1.0)
+    if (!(cloud_a || cloud_b) && (f.area_fraction < 1.0 || b.area_fraction < 1.0))
         s += fmt::format("  area with face samples: {:.4g}% and {:.4g}% of the surfaces\n", 100.0 * f.area_fraction,
                          100.0 * b.area_fraction);
     s += fmt::format("  Chamfer L1 (mean forward + mean backward)        {:.6g} ({:.6g} wrt diagonal)\n", m.chamfer_l1,
@@ -219,11 +225,12 @@ std::string cloud_distance_text(const Comparison& c)
         d.forward_hausdorff && d.backward_hausdorff ? "exact" : "a sampled lower bound");
     s += side("forward  (M1 -> M2):", cloud_a, cloud_b, d.forward_hausdorff, d.forward);
     s += side("backward (M2 -> M1):", cloud_b, cloud_a, d.backward_hausdorff, d.backward);
-    s += summary_text(d);
-    if (d.summary)
-        s += fmt::format("  ({} weights every point equally: the plain mean over its points)\n",
-                         cloud_a && cloud_b ? "each direction" : cloud_a ? "the forward direction" : "the backward "
-                                                                                                     "direction");
+    s += summary_text(d, cloud_a, cloud_b);
+    if (d.summary && !(cloud_a && cloud_b)) {
+        const AreaWeightedStats& m = cloud_a ? *d.backward.area_weighted : *d.forward.area_weighted;
+        if (m.area_fraction < 1.0)
+            s += fmt::format("  area with face samples: {:.4g}% of the mesh\n", 100.0 * m.area_fraction);
+    }
     return s;
 }
 
