@@ -240,6 +240,8 @@ SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const Sampl
     r.metro_diagonal = metro_diagonal(a, b);
     r.summary = summary_metrics(r, &r.summary_unavailable);
     if (r.summary) r.fscore = fscores(summary.fscore_thresholds, diagonal, recall, precision);
+    r.forward_kind = distance_kind(cloud_a, cloud_b);
+    r.backward_kind = distance_kind(cloud_b, cloud_a);
     return r;
 }
 

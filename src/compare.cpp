@@ -40,8 +40,6 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
     Comparison c;
     c.options = options;
     if (options.roughness) c.roughness_unavailable = which + " (no faces): roughness needs faces on both sides";
-    c.forward_kind = distance_kind(cloud_a, cloud_b);
-    c.backward_kind = distance_kind(cloud_b, cloud_a);
     c.distance = cloud_surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff,
                                         options.summary, options.keep_samples ? &c.forward_samples : nullptr,
                                         options.keep_samples ? &c.backward_samples : nullptr);

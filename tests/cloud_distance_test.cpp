@@ -334,9 +334,9 @@ TEST(CompareWithCloud, SkipsRoughnessAndReportsTheKinds)
     EXPECT_FALSE(c.roughness);
     EXPECT_FALSE(c.original_profile);
     EXPECT_NE(c.roughness_unavailable.find("processed input is a point cloud"), std::string::npos);
-    EXPECT_EQ(c.forward_kind, DistanceKind::SurfaceToPoint);
-    EXPECT_EQ(c.backward_kind, DistanceKind::PointToSurface);
     ASSERT_TRUE(c.distance);
+    EXPECT_EQ(c.distance->forward_kind, DistanceKind::SurfaceToPoint);
+    EXPECT_EQ(c.distance->backward_kind, DistanceKind::PointToSurface);
     EXPECT_DOUBLE_EQ(c.distance->backward.max, 1.0);
     EXPECT_DOUBLE_EQ(c.distance->diagonal, std::sqrt(2.0));  // the original's box
     EXPECT_FALSE(c.same_connectivity);
@@ -382,10 +382,11 @@ TEST(CompareWithCloud, MeshReportsKeepSurfaceToSurface)
     CompareOptions o;
     o.roughness = false;
     const Comparison c = compare_meshes(a, a, o);
-    EXPECT_EQ(c.forward_kind, DistanceKind::SurfaceToSurface);
+    EXPECT_EQ(c.distance->forward_kind, DistanceKind::SurfaceToSurface);
     const nlohmann::json j = comparison_json(c);
     EXPECT_EQ(j["surface_distance"]["forward"]["distance_kind"], "surface-to-surface");
     EXPECT_EQ(j["surface_distance"]["forward"]["samples_by_kind"]["point"], 0);
     EXPECT_TRUE(j["roughness_unavailable"].is_null());
     EXPECT_FALSE(j["surface_distance"].contains("distance_kinds"));
+    EXPECT_EQ(j["surface_distance"], surface_distance_json(*c.distance, o.sampling));
 }

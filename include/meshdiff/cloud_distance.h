@@ -34,7 +34,7 @@
 //! formed as in surface_distance.h.
 #pragma once
 
-#include "meshdiff/enum_names.h"
+#include "meshdiff/distance_kind.h"
 #include "meshdiff/hausdorff.h"
 #include "meshdiff/mesh.h"
 #include "meshdiff/sampling.h"
@@ -47,25 +47,6 @@
 #include <vector>
 
 namespace meshdiff {
-
-//! Which distance a direction measures.
-enum class DistanceKind
-{
-    SurfaceToSurface,  //!< samples of a mesh, exact distance to a mesh (Metro)
-    PointToSurface,    //!< points of a cloud, exact distance to a mesh
-    SurfaceToPoint,    //!< samples of a mesh, distance to the nearest point of a cloud
-    PointToPoint,      //!< points of a cloud, distance to the nearest point of a cloud
-};
-
-template <>
-struct EnumNames<DistanceKind>
-{
-    static constexpr const char* what = "distance kind";
-    static constexpr std::array<EnumName<DistanceKind>, 4> names{{{DistanceKind::SurfaceToSurface, "surface-to-surface"},
-                                                                  {DistanceKind::PointToSurface, "point-to-surface"},
-                                                                  {DistanceKind::SurfaceToPoint, "surface-to-point"},
-                                                                  {DistanceKind::PointToPoint, "point-to-point"}}};
-};
 
 //! The kind of the direction that samples a cloud (\p from_cloud) or a mesh,
 //! against a cloud (\p to_cloud) or a mesh.

@@ -80,10 +80,6 @@ struct Comparison
     //! (forward) and of the processed mesh (backward) and their distances.
     SampledDirection forward_samples;
     SampledDirection backward_samples;
-    //! Which distance each direction measures: surface-to-surface for two
-    //! meshes; with a point cloud (read_mesh_or_cloud()) see cloud_distance.h.
-    DistanceKind forward_kind = DistanceKind::SurfaceToSurface;
-    DistanceKind backward_kind = DistanceKind::SurfaceToSurface;
     //! Why the roughness half asked for was skipped (an input is a point
     //! cloud: roughness needs faces on both sides); empty otherwise.
     std::string roughness_unavailable;

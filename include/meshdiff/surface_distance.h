@@ -30,6 +30,7 @@
 #pragma once
 
 #include "meshdiff/closest_point.h"
+#include "meshdiff/distance_kind.h"
 #include "meshdiff/hausdorff.h"
 #include "meshdiff/mesh.h"
 #include "meshdiff/sampling.h"
@@ -194,6 +195,10 @@ struct SurfaceDistance
     //! One per SummaryOptions::fscore_thresholds, in the order asked (empty
     //! when none was asked or the summary is unavailable).
     std::vector<FScore> fscore;
+    //! Which distance each direction measures: surface-to-surface here; with
+    //! a point cloud, as cloud_surface_distance() sets them (cloud_distance.h).
+    DistanceKind forward_kind = DistanceKind::SurfaceToSurface;
+    DistanceKind backward_kind = DistanceKind::SurfaceToSurface;
 };
 
 //! The area-weighted statistics of \p distances, the distances of \p samples

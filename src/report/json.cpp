@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <tuple>
+#include <utility>
 
 namespace meshdiff {
 
@@ -345,6 +345,46 @@ nlohmann::json certified_json(const std::optional<CertifiedHausdorff>& h, double
 
 }  // namespace
 
+namespace {
+
+// The distance kind of each direction and, for a point cloud side, what its
+// weights and its Hausdorff value are (cloud_distance.h).
+void cloud_notes_json(nlohmann::json& sd, const SurfaceDistance& dist)
+{
+    for (const auto& [key, kind] : {std::pair{"forward", dist.forward_kind}, {"backward", dist.backward_kind}}) {
+        nlohmann::json& d = sd[key];
+        d["distance_kind"] = to_string(kind);
+        if (from_cloud(kind) && d["area_weighted"].is_object()) {
+            d["area_weighted"]["area"] = nullptr;
+            d["area_weighted"]["area_fraction"] = nullptr;
+            d["area_weighted"]["points"] = d["samples"];
+            d["area_weighted"]["weights"] = "uniform: every point of the cloud weight 1 (a point cloud has no areas)";
+        }
+        if (from_cloud(kind) && d["hausdorff"].is_object()) {
+            d["hausdorff"]["exact_over_points"] = true;
+            d["hausdorff"]["location"]["point_index"] = d["hausdorff"]["location"]["face"];
+            d["hausdorff"]["location"]["face"] = nullptr;
+            if (to_cloud(kind)) {
+                d["hausdorff"]["location"]["closest_point_index"] = d["hausdorff"]["location"]["closest_face"];
+                d["hausdorff"]["location"]["closest_face"] = nullptr;
+            }
+        } else if (kind == DistanceKind::SurfaceToPoint) {
+            d["hausdorff_unavailable"] =
+                "the target is a point cloud: the maximum over the mesh samples is sampled, not certified";
+        }
+    }
+    if (dist.forward_kind != DistanceKind::SurfaceToSurface) {
+        sd["distance_kinds"] =
+            "point-to-surface: every point of a cloud, exact distance to the mesh; surface-to-point: samples of a "
+            "mesh, distance to the nearest point of the cloud; point-to-point: every point of a cloud, distance to "
+            "the nearest point of the other cloud; a cloud's Hausdorff value is exact over its points";
+        sd["diagonal_of"] = from_cloud(dist.forward_kind) ? "bounding box of the original point cloud"
+                                                          : "bounding box of the original mesh";
+    }
+}
+
+}  // namespace
+
 nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOptions& so)
 {
     nlohmann::json forward = distance_stats_json(d.forward, d.diagonal);
@@ -410,7 +450,7 @@ nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOpt
                 {"forward_hausdorff_db", number_or_null(p.forward_hausdorff_db)},
                 {"backward_hausdorff_db", number_or_null(p.backward_hausdorff_db)}};
     }
-    return {{"forward", forward},
+    nlohmann::json j = {{"forward", forward},
             {"backward", backward},
             {"chamfer", chamfer},
             {"fscore", fscore},
@@ -437,48 +477,9 @@ nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOpt
               {"seed", so.seed}}},
             {"forward_is", "samples on the original, distances to the processed surface"},
             {"cutoff", nullptr}};
+    cloud_notes_json(j, d);
+    return j;
 }
-
-namespace {
-
-// The distance kind of each direction and, for a point cloud side, what its
-// weights and its Hausdorff value are (cloud_distance.h).
-void cloud_notes_json(nlohmann::json& sd, const Comparison& c)
-{
-    const bool cloud_a = c.original.input.point_cloud, cloud_b = c.processed.input.point_cloud;
-    for (const auto& [key, kind, from_cloud, to_cloud] :
-         {std::tuple{"forward", c.forward_kind, cloud_a, cloud_b}, {"backward", c.backward_kind, cloud_b, cloud_a}}) {
-        nlohmann::json& d = sd[key];
-        d["distance_kind"] = to_string(kind);
-        if (from_cloud && d["area_weighted"].is_object()) {
-            d["area_weighted"]["area"] = nullptr;
-            d["area_weighted"]["area_fraction"] = nullptr;
-            d["area_weighted"]["points"] = d["samples"];
-            d["area_weighted"]["weights"] = "uniform: every point of the cloud weight 1 (a point cloud has no areas)";
-        }
-        if (from_cloud && d["hausdorff"].is_object()) {
-            d["hausdorff"]["exact_over_points"] = true;
-            d["hausdorff"]["location"]["point_index"] = d["hausdorff"]["location"]["face"];
-            d["hausdorff"]["location"]["face"] = nullptr;
-            if (to_cloud) {
-                d["hausdorff"]["location"]["closest_point_index"] = d["hausdorff"]["location"]["closest_face"];
-                d["hausdorff"]["location"]["closest_face"] = nullptr;
-            }
-        } else if (!from_cloud && to_cloud && c.options.hausdorff) {
-            d["hausdorff_unavailable"] =
-                "the target is a point cloud: the maximum over the mesh samples is sampled, not certified";
-        }
-    }
-    if (cloud_a || cloud_b) {
-        sd["distance_kinds"] =
-            "point-to-surface: every point of a cloud, exact distance to the mesh; surface-to-point: samples of a "
-            "mesh, distance to the nearest point of the cloud; point-to-point: every point of a cloud, distance to "
-            "the nearest point of the other cloud; a cloud's Hausdorff value is exact over its points";
-        sd["diagonal_of"] = cloud_a ? "bounding box of the original point cloud" : "bounding box of the original mesh";
-    }
-}
-
-}  // namespace
 
 nlohmann::json comparison_json(const Comparison& c)
 {
@@ -506,7 +507,6 @@ nlohmann::json comparison_json(const Comparison& c)
         c.roughness_unavailable.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.roughness_unavailable);
     if (c.distance) {
         j["surface_distance"] = surface_distance_json(*c.distance, c.options.sampling);
-        cloud_notes_json(j["surface_distance"], c);
     } else {
         j["surface_distance"] = nullptr;
     }
