@@ -57,8 +57,7 @@ struct PointCloudIndex::Impl
     KdTree tree;
     explicit Impl(const std::vector<Vec3>& points)
         : data{points}, tree(3, data, nanoflann::KDTreeSingleIndexAdaptorParams(10))
-    {
-    }
+    {}
 };
 
 PointCloudIndex::PointCloudIndex(const std::vector<Vec3>& points)
@@ -144,8 +143,7 @@ SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const Sampl
 {
     const bool cloud_a = a.faces.empty(), cloud_b = b.faces.empty();
     if (!cloud_a && !cloud_b)
-        return surface_distance(a, b, options, vertex_distances, certify, summary, forward_samples,
-                                backward_samples);
+        return surface_distance(a, b, options, vertex_distances, certify, summary, forward_samples, backward_samples);
     validate(options);
     validate(summary);
     if (certify) validate(*certify);

@@ -33,10 +33,10 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
                               : cloud_a          ? "the original is a point cloud"
                                                  : "the processed input is a point cloud";
     if (!options.distance)
-        throw InvalidArgumentError(fmt::format(
-            "compare: {} (no faces), so there is no roughness, and --no-distance switches off the surface "
-            "distance: nothing is left to compare",
-            which));
+        throw InvalidArgumentError(
+            fmt::format("compare: {} (no faces), so there is no roughness, and --no-distance switches off the surface "
+                        "distance: nothing is left to compare",
+                        which));
     Comparison c;
     c.options = options;
     if (options.roughness) c.roughness_unavailable = which + " (no faces): roughness needs faces on both sides";

@@ -21,10 +21,11 @@ template <>
 struct EnumNames<DistanceKind>
 {
     static constexpr const char* what = "distance kind";
-    static constexpr std::array<EnumName<DistanceKind>, 4> names{{{DistanceKind::SurfaceToSurface, "surface-to-surface"},
-                                                                  {DistanceKind::PointToSurface, "point-to-surface"},
-                                                                  {DistanceKind::SurfaceToPoint, "surface-to-point"},
-                                                                  {DistanceKind::PointToPoint, "point-to-point"}}};
+    static constexpr std::array<EnumName<DistanceKind>, 4> names{
+        {{DistanceKind::SurfaceToSurface, "surface-to-surface"},
+         {DistanceKind::PointToSurface, "point-to-surface"},
+         {DistanceKind::SurfaceToPoint, "surface-to-point"},
+         {DistanceKind::PointToPoint, "point-to-point"}}};
 };
 
 //! True if the direction samples a point cloud (PointToSurface, PointToPoint).

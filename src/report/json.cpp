@@ -343,49 +343,8 @@ nlohmann::json certified_json(const std::optional<CertifiedHausdorff>& h, double
             {"rounds", h->rounds}};
 }
 
-}  // namespace
-
-namespace {
-
-// The distance kind of each direction and, for a point cloud side, what its
-// weights and its Hausdorff value are (cloud_distance.h).
-void cloud_notes_json(nlohmann::json& sd, const SurfaceDistance& dist)
-{
-    for (const auto& [key, kind] : {std::pair{"forward", dist.forward_kind}, {"backward", dist.backward_kind}}) {
-        nlohmann::json& d = sd[key];
-        d["distance_kind"] = to_string(kind);
-        if (from_cloud(kind) && d["area_weighted"].is_object()) {
-            d["area_weighted"]["area"] = nullptr;
-            d["area_weighted"]["area_fraction"] = nullptr;
-            d["area_weighted"]["points"] = d["samples"];
-            d["area_weighted"]["weights"] = "uniform: every point of the cloud weight 1 (a point cloud has no areas)";
-        }
-        if (from_cloud(kind) && d["hausdorff"].is_object()) {
-            d["hausdorff"]["exact_over_points"] = true;
-            d["hausdorff"]["location"]["point_index"] = d["hausdorff"]["location"]["face"];
-            d["hausdorff"]["location"]["face"] = nullptr;
-            if (to_cloud(kind)) {
-                d["hausdorff"]["location"]["closest_point_index"] = d["hausdorff"]["location"]["closest_face"];
-                d["hausdorff"]["location"]["closest_face"] = nullptr;
-            }
-        } else if (kind == DistanceKind::SurfaceToPoint) {
-            d["hausdorff_unavailable"] =
-                "the target is a point cloud: the maximum over the mesh samples is sampled, not certified";
-        }
-    }
-    if (dist.forward_kind != DistanceKind::SurfaceToSurface) {
-        sd["distance_kinds"] =
-            "point-to-surface: every point of a cloud, exact distance to the mesh; surface-to-point: samples of a "
-            "mesh, distance to the nearest point of the cloud; point-to-point: every point of a cloud, distance to "
-            "the nearest point of the other cloud; a cloud's Hausdorff value is exact over its points";
-        sd["diagonal_of"] = from_cloud(dist.forward_kind) ? "bounding box of the original point cloud"
-                                                          : "bounding box of the original mesh";
-    }
-}
-
-}  // namespace
-
-nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOptions& so)
+// surface_distance_json() without the notes of point clouds.
+nlohmann::json mesh_surface_distance_json(const SurfaceDistance& d, const SamplingOptions& so)
 {
     nlohmann::json forward = distance_stats_json(d.forward, d.diagonal);
     nlohmann::json backward = distance_stats_json(d.backward, d.diagonal);
@@ -450,7 +409,7 @@ nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOpt
                 {"forward_hausdorff_db", number_or_null(p.forward_hausdorff_db)},
                 {"backward_hausdorff_db", number_or_null(p.backward_hausdorff_db)}};
     }
-    nlohmann::json j = {{"forward", forward},
+    return {{"forward", forward},
             {"backward", backward},
             {"chamfer", chamfer},
             {"fscore", fscore},
@@ -477,6 +436,49 @@ nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOpt
               {"seed", so.seed}}},
             {"forward_is", "samples on the original, distances to the processed surface"},
             {"cutoff", nullptr}};
+}
+
+// The distance kind of each direction and, for a point cloud side, what its
+// weights and its Hausdorff value are (cloud_distance.h).
+void cloud_notes_json(nlohmann::json& sd, const SurfaceDistance& dist)
+{
+    for (const auto& [key, kind] : {std::pair{"forward", dist.forward_kind}, {"backward", dist.backward_kind}}) {
+        nlohmann::json& d = sd[key];
+        d["distance_kind"] = to_string(kind);
+        if (from_cloud(kind) && d["area_weighted"].is_object()) {
+            d["area_weighted"]["area"] = nullptr;
+            d["area_weighted"]["area_fraction"] = nullptr;
+            d["area_weighted"]["points"] = d["samples"];
+            d["area_weighted"]["weights"] = "uniform: every point of the cloud weight 1 (a point cloud has no areas)";
+        }
+        if (from_cloud(kind) && d["hausdorff"].is_object()) {
+            d["hausdorff"]["exact_over_points"] = true;
+            d["hausdorff"]["location"]["point_index"] = d["hausdorff"]["location"]["face"];
+            d["hausdorff"]["location"]["face"] = nullptr;
+            if (to_cloud(kind)) {
+                d["hausdorff"]["location"]["closest_point_index"] = d["hausdorff"]["location"]["closest_face"];
+                d["hausdorff"]["location"]["closest_face"] = nullptr;
+            }
+        } else if (kind == DistanceKind::SurfaceToPoint) {
+            d["hausdorff_unavailable"] =
+                "the target is a point cloud: the maximum over the mesh samples is sampled, not certified";
+        }
+    }
+    if (dist.forward_kind != DistanceKind::SurfaceToSurface) {
+        sd["distance_kinds"] =
+            "point-to-surface: every point of a cloud, exact distance to the mesh; surface-to-point: samples of a "
+            "mesh, distance to the nearest point of the cloud; point-to-point: every point of a cloud, distance to "
+            "the nearest point of the other cloud; a cloud's Hausdorff value is exact over its points";
+        sd["diagonal_of"] = from_cloud(dist.forward_kind) ? "bounding box of the original point cloud"
+                                                          : "bounding box of the original mesh";
+    }
+}
+
+}  // namespace
+
+nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOptions& so)
+{
+    nlohmann::json j = mesh_surface_distance_json(d, so);
     cloud_notes_json(j, d);
     return j;
 }

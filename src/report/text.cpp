@@ -113,8 +113,8 @@ std::string facts_text(const std::string& title, const MeshFacts& f)
     const auto& t = f.topology;
     std::string s = fmt::format("{}: {}\n", title, f.input.path);
     if (f.input.point_cloud)
-        return s + fmt::format("  point cloud: {} points, no faces, bbox diagonal {:.6g}\n", t.vertices,
-                               f.box.diagonal());
+        return s +
+               fmt::format("  point cloud: {} points, no faces, bbox diagonal {:.6g}\n", t.vertices, f.box.diagonal());
     s += fmt::format("  {} vertices, {} faces, {} component{}, {}, area {:.6g}, bbox diagonal {:.6g}\n", t.vertices,
                      t.faces, t.components, t.components == 1 ? "" : "s",
                      t.closed() ? "closed" : fmt::format("open ({} boundary loops)", t.boundary_loops), f.area,
@@ -129,8 +129,8 @@ std::string stats_text(const std::string& title, const DistanceStats& s, double 
     if (s.n_point > 0)
         out += fmt::format("  samples: {} (every point of the cloud)\n", s.n_samples());
     else
-        out += fmt::format("  samples: {} ({} vertex, {} edge, {} face)\n", s.n_samples(), s.n_vertex, s.n_edge,
-                           s.n_face);
+        out +=
+            fmt::format("  samples: {} ({} vertex, {} edge, {} face)\n", s.n_samples(), s.n_vertex, s.n_edge, s.n_face);
     out += fmt::format("  {:>5} {:>14} {:>14}\n", "", "absolute", "wrt diagonal");
     const std::pair<const char*, double> rows[] = {{"min", s.min},    {"max", s.max}, {"mean", s.mean}, {"RMS", s.rms},
                                                    {"std", s.stddev}, {"p50", s.p50}, {"p95", s.p95},   {"p99", s.p99}};
