@@ -469,6 +469,7 @@ void cloud_notes_json(nlohmann::json& sd, const SurfaceDistance& dist)
             "point-to-surface: every point of a cloud, exact distance to the mesh; surface-to-point: samples of a "
             "mesh, distance to the nearest point of the cloud; point-to-point: every point of a cloud, distance to "
             "the nearest point of the other cloud; a cloud's Hausdorff value is exact over its points";
+        sd["forward_is"] = "samples (a cloud: its points) of the original, distances to the processed input";
         sd["diagonal_of"] = from_cloud(dist.forward_kind) ? "bounding box of the original point cloud"
                                                           : "bounding box of the original mesh";
     }
