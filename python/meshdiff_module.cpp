@@ -234,6 +234,24 @@ LoadedMesh mesh_from(const ArrayLike& V, const ArrayLike& F, const char* vname, 
     return m;
 }
 
+// For compare: F None or an empty (0, 3) array makes V a point cloud
+// (cloud_distance.h); else mesh_from().
+LoadedMesh mesh_or_cloud_from(const ArrayLike& V, const ArrayLike& F, const char* vname, const char* fname)
+{
+    bool cloud = F.object.is_none();
+    if (!cloud) {
+        const py::array f = as_array(F.object, fname);
+        cloud = f.ndim() == 2 && f.shape(0) == 0 && f.shape(1) == 3;
+    }
+    if (!cloud) return mesh_from(V, F, vname, fname);
+    LoadedMesh m;
+    m.mesh.points = points_from(V.object, vname);
+    m.input.path = std::string("<array ") + vname + ">";
+    m.input.file_vertices = m.mesh.n_vertices();
+    m.input.point_cloud = true;
+    return m;
+}
+
 std::string path_from(const py::handle& obj, const char* name)
 {
     try {
@@ -243,11 +261,12 @@ std::string path_from(const py::handle& obj, const char* name)
     }
 }
 
-// read_mesh() with a missing file as FileMissing (FileNotFoundError).
-LoadedMesh read_file(const std::string& path)
+// read_mesh() (read_mesh_or_cloud() with \p cloud) with a missing file as
+// FileMissing (FileNotFoundError).
+LoadedMesh read_file(const std::string& path, bool cloud = false)
 {
     try {
-        return read_mesh(path);
+        return cloud ? read_mesh_or_cloud(path) : read_mesh(path);
     } catch (const IoError& e) {
         std::error_code ec;
         if (!std::filesystem::exists(path, ec)) throw FileMissing{"no such file", path};
@@ -514,8 +533,8 @@ py::dict py_compare(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V
         compare_options(levels, radii, global_level, curvature, weighting, k, roughness, distance, samples, density,
                         face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance,
                         hausdorff_abs_tolerance, fscore, histogram);
-    const LoadedMesh a = mesh_from(V1, F1, "V1", "F1");
-    const LoadedMesh b = mesh_from(V2, F2, "V2", "F2");
+    const LoadedMesh a = mesh_or_cloud_from(V1, F1, "V1", "F1");
+    const LoadedMesh b = mesh_or_cloud_from(V2, F2, "V2", "F2");
     return run_compare(a, b, options, threads);
 }
 
@@ -536,8 +555,8 @@ py::dict py_compare_files(const py::object& original, const py::object& processe
     LoadedMesh a, b;
     {
         py::gil_scoped_release release;
-        a = read_file(pa);
-        b = read_file(pb);
+        a = read_file(pa, true);
+        b = read_file(pb, true);
     }
     return run_compare(a, b, options, threads);
 }
@@ -805,13 +824,17 @@ same_connectivity_unavailable when the meshes' connectivity differs). Surface di
 meshes' unit; "forward" samples the original (V1, F1); "relative" values divide
 by the original's bounding-box diagonal. The arrays' "path" is "<array V1>" and
 "<array V2>"; arrays get no input hygiene (isolated vertices are reported as
-warnings).
+warnings). F1 or F2 None (or an empty (0, 3) array) makes that side a point
+cloud: its points are its samples (point-to-surface or point-to-point
+distances; "distance_kind" per direction), roughness is skipped
+(roughness_unavailable says why); see METHOD.md section 6.
 
 Example: meshdiff.compare(V, F, V2, F2, levels=[1, 5, 20])["surface_distance"]["hausdorff"]["upper"]
 )doc";
 
 constexpr const char* kCompareFilesDoc =
-    R"doc(As compare() on two files read as read_mesh() reads them: the same dict as
+    R"doc(As compare() on two files read as read_mesh() reads them (a file with
+vertices and no faces is a point cloud, as in `meshdiff compare`): the same dict as
 `meshdiff ORIGINAL PROCESSED --json` with the same options, bit for bit (the
 "path" fields are the paths as given here).
 
@@ -908,7 +931,7 @@ PYBIND11_MODULE(meshdiff, m)
 {
     m.doc() = kModuleDoc;
     m.attr("__version__") = MESHDIFF_VERSION;
-    m.attr("SAMPLE_KINDS") = py::make_tuple("vertex", "edge", "face");
+    m.attr("SAMPLE_KINDS") = py::make_tuple("vertex", "edge", "face", "point");
     py::register_exception_translator(translate_exceptions);
 
     const py::object default_levels = py::module_::import("builtins").attr("range")(1, 21);

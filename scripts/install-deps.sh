@@ -5,7 +5,7 @@
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config
       libopenmesh-dev libeigen3-dev libfmt-dev
-      libgtest-dev nlohmann-json3-dev libcli11-dev
+      libgtest-dev nlohmann-json3-dev libcli11-dev libnanoflann-dev
       clang-format python3
       # GNU parallel: the cluster recipe of docs/cli.md (batch shards), tested by tests/cli_batch_cluster_test.sh.
       parallel

@@ -10,6 +10,51 @@
 
 namespace meshdiff {
 
+namespace {
+
+// The facts of a point cloud: its points and box; no faces, no topology.
+MeshFacts cloud_facts(const LoadedMesh& loaded)
+{
+    MeshFacts f;
+    f.input = loaded.input;
+    f.input.point_cloud = true;  // also for a faceless Mesh built in code
+    f.topology.vertices = loaded.mesh.n_vertices();
+    f.topology.components = 0;
+    f.box = bounding_box(loaded.mesh);
+    f.area = 0.0;
+    return f;
+}
+
+// compare_meshes() when \p a or \p b is a point cloud (options checked).
+Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const CompareOptions& options)
+{
+    const bool cloud_a = is_point_cloud(a), cloud_b = is_point_cloud(b);
+    const std::string which = cloud_a && cloud_b ? "both inputs are point clouds"
+                              : cloud_a          ? "the original is a point cloud"
+                                                 : "the processed input is a point cloud";
+    if (!options.distance)
+        throw InvalidArgumentError(
+            fmt::format("compare: {} (no faces), so there is no roughness, and --no-distance switches off the surface "
+                        "distance: nothing is left to compare",
+                        which));
+    Comparison c;
+    c.options = options;
+    if (options.roughness) c.roughness_unavailable = which + " (no faces): roughness needs faces on both sides";
+    c.distance = cloud_surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff,
+                                        options.summary, options.keep_samples ? &c.forward_samples : nullptr,
+                                        options.keep_samples ? &c.backward_samples : nullptr);
+    c.processed_vertex_distance = std::move(c.distance->b_vertex_distance);
+    c.distance->b_vertex_distance.clear();
+    c.original_vertex_distance = std::move(c.distance->a_vertex_distance);
+    c.distance->a_vertex_distance.clear();
+    c.same_connectivity_unavailable = which + " (no faces)";
+    c.original = cloud_a ? cloud_facts(a) : mesh_facts(a);
+    c.processed = cloud_b ? cloud_facts(b) : mesh_facts(b);
+    return c;
+}
+
+}  // namespace
+
 Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const CompareOptions& options)
 {
     if (!options.roughness && !options.distance)
@@ -19,6 +64,7 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
     validate(options.sampling);
     if (options.hausdorff) validate(*options.hausdorff);
     validate(options.summary);
+    if (is_point_cloud(a) || is_point_cloud(b)) return compare_with_cloud(a, b, options);
     Comparison c;
     c.options = options;
     // The serial topology reports overlap the (partly serial) analyses.

@@ -73,7 +73,11 @@ const char* file_kind(std::filesystem::file_type t)
 
 }  // namespace
 
-LoadedMesh read_mesh(const std::filesystem::path& path)
+namespace {
+
+// read_mesh() and read_mesh_or_cloud(): with \p allow_cloud, a file with
+// vertices and no faces is a point cloud.
+LoadedMesh read_any(const std::filesystem::path& path, bool allow_cloud)
 {
     const std::string name = path.string();
     // The kind of file first, without opening it: opening a FIFO would block.
@@ -118,7 +122,10 @@ LoadedMesh read_mesh(const std::filesystem::path& path)
     out.input.file_vertices = soup.points.size();
     out.input.file_faces = soup.polygons.size();
     if (soup.points.empty()) throw InvalidMeshError(fmt::format("{}: mesh has no vertices", name));
-    if (soup.polygons.empty()) throw InvalidMeshError(fmt::format("{}: mesh has no faces", name));
+    if (soup.polygons.empty() && !allow_cloud)
+        throw InvalidMeshError(
+            fmt::format("{}: mesh has no faces: a point cloud ({} vertices); only compare accepts point clouds", name,
+                        soup.points.size()));
 
     const auto nv = std::int64_t(soup.points.size());
     for (std::size_t i = 0; i < soup.points.size(); ++i) {
@@ -131,6 +138,13 @@ LoadedMesh read_mesh(const std::filesystem::path& path)
                 throw InvalidMeshError(
                     fmt::format("{}: vertex {} has the coordinate {} beyond meshdiff's limit of +-{}", name, i, p[k],
                                 max_coordinate));
+    }
+
+    if (soup.polygons.empty()) {  // a point cloud: every point is kept
+        out.input.point_cloud = true;
+        out.mesh.points = std::move(soup.points);
+        out.vertex_scalars = std::move(scalars);
+        return out;
     }
 
     // Triangulate, drop faces with a repeated corner, mark used vertices.
@@ -175,6 +189,23 @@ LoadedMesh read_mesh(const std::filesystem::path& path)
         out.vertex_scalars.push_back(std::move(kept));
     }
     return out;
+}
+
+}  // namespace
+
+LoadedMesh read_mesh(const std::filesystem::path& path)
+{
+    return read_any(path, false);
+}
+
+LoadedMesh read_mesh_or_cloud(const std::filesystem::path& path)
+{
+    return read_any(path, true);
+}
+
+bool is_point_cloud(const LoadedMesh& loaded)
+{
+    return loaded.mesh.faces.empty();
 }
 
 const VertexScalar& vertex_scalar(const LoadedMesh& loaded, const std::string& name)

@@ -32,7 +32,8 @@ void check(const char* name, const Mesh& m, const SampledDirection& d)
                         "kinds and {} elements",
                         name, s.size(), d.distances.size(), s.kind.size(), s.element.size()));
     for (std::size_t i = 0; i < s.size(); ++i) {
-        const std::size_t n = s.kind[i] == SampleKind::OnVertex ? m.n_vertices() : m.n_faces();
+        const bool per_vertex = s.kind[i] == SampleKind::OnVertex || s.kind[i] == SampleKind::OnPoint;
+        const std::size_t n = per_vertex ? m.n_vertices() : m.n_faces();
         if (s.element[i] >= n)
             throw InvalidArgumentError(
                 fmt::format("write_sample_cloud: {} sample {} names element {} of {}", name, i, s.element[i], n));
@@ -54,6 +55,11 @@ void write_sample_cloud(const std::filesystem::path& path, const Mesh& a, const 
                "1 = backward (a sample of the processed mesh, distance to the original surface)\n";
         out << "comment kind 0 = vertex, 1 = edge, 2 = face; face = the face sampled (edge: the lowest-index face "
                "having the edge; vertex: the lowest-index face using the vertex) of the sampled mesh\n";
+        const auto has_points = [](const SampledDirection& d) {
+            return std::find(d.samples.kind.begin(), d.samples.kind.end(), SampleKind::OnPoint) != d.samples.kind.end();
+        };
+        if (has_points(forward) || has_points(backward))
+            out << "comment kind 3 = point of a point cloud (face -1; the points of a cloud are its samples)\n";
         for (std::string c : comments) {
             std::replace_if(
                 c.begin(), c.end(), [](char ch) { return ch == '\n' || ch == '\r'; }, ' ');
@@ -73,8 +79,9 @@ void write_sample_cloud(const std::filesystem::path& path, const Mesh& a, const 
                 std::memcpy(p, s.points[i].data(), 24);
                 std::memcpy(p + 24, &d->distances[i], 8);
                 const auto kind = std::uint8_t(s.kind[i]);
-                const std::int32_t face =
-                    s.kind[i] == SampleKind::OnVertex ? first[s.element[i]] : std::int32_t(s.element[i]);
+                const std::int32_t face = s.kind[i] == SampleKind::OnVertex  ? first[s.element[i]]
+                                          : s.kind[i] == SampleKind::OnPoint ? -1
+                                                                             : std::int32_t(s.element[i]);
                 std::memcpy(p + 32, &kind, 1);
                 std::memcpy(p + 33, &direction, 1);
                 std::memcpy(p + 34, &face, 4);

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "meshdiff/curvature.h"
+#include "meshdiff/distance_kind.h"
 #include "meshdiff/error.h"
 #include "meshdiff/facts.h"
 #include "meshdiff/noise.h"
@@ -42,6 +43,7 @@ MESHDIFF_SPELLINGS(StepControl, "fixed", "adaptive");
 MESHDIFF_SPELLINGS(WarningKind, "unreferenced-vertices", "repeated-corner-faces", "isolated-vertices", "non-manifold",
                    "orientation-conflicts", "degenerate-faces", "duplicate-faces", "open-surface", "components",
                    "undefined-curvature", "outliers-dominate", "no-defined-d", "capped-neighbourhoods");
+MESHDIFF_SPELLINGS(DistanceKind, "surface-to-surface", "point-to-surface", "surface-to-point", "point-to-point");
 #undef MESHDIFF_SPELLINGS
 
 template <class E>
@@ -64,8 +66,9 @@ std::string parse_error(const std::string& name)
 template <class E>
 class EnumNamesTest : public ::testing::Test
 {};
-using OptionEnums = ::testing::Types<CurvatureMethod, RowWeighting, FaceSampling, NoiseUnit, NoiseDirection,
-                                     NoiseDistribution, SmoothingMethod, SmoothingUpdate, StepControl, WarningKind>;
+using OptionEnums =
+    ::testing::Types<CurvatureMethod, RowWeighting, FaceSampling, NoiseUnit, NoiseDirection, NoiseDistribution,
+                     SmoothingMethod, SmoothingUpdate, StepControl, WarningKind, DistanceKind>;
 TYPED_TEST_SUITE(EnumNamesTest, OptionEnums);
 
 }  // namespace

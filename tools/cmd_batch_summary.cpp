@@ -126,7 +126,8 @@ std::string cell(const nlohmann::json& v)
 
 // The scalars under \p j, one column each, named by their path joined with
 // '_' (below \p prefix); strings only for the Hausdorff method and where it
-// is attained, and the reasons of *_unavailable fields. Lists of numbers
+// is attained, the distance kind of each direction (point clouds), and the
+// reasons of *_unavailable fields. Lists of numbers
 // (histograms, coordinates) and the sampling settings are left out; a list of objects with a "threshold" (the
 // F-scores) gives one group of columns per threshold.
 void flatten(Table& t, std::size_t row, const std::string& prefix, const nlohmann::json& j)
@@ -147,6 +148,7 @@ void flatten(Table& t, std::size_t row, const std::string& prefix, const nlohman
                 }
         } else if (!v.is_string() || name.find("hausdorff_method") != std::string::npos ||
                    name.find("hausdorff_attained") != std::string::npos ||
+                   name.find("distance_kind") != std::string::npos ||
                    (name.size() > 12 && name.compare(name.size() - 12, 12, "_unavailable") == 0)) {
             t.set(row, name, cell(v));
         }

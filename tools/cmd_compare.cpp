@@ -63,8 +63,9 @@ int run_compare(const CompareArgs& a)
             throw InvalidArgumentError("--color-range needs MIN MAX with MIN < MAX");
         range = std::pair{a.color_range[0], a.color_range[1]};
     }
-    const LoadedMesh original = read_mesh(a.original);
-    const LoadedMesh processed = read_mesh(a.processed);
+    // Either input may be a point cloud (vertices, no faces): cloud_distance.h.
+    const LoadedMesh original = read_mesh_or_cloud(a.original);
+    const LoadedMesh processed = read_mesh_or_cloud(a.processed);
     const Comparison c = compare_meshes(original, processed, options);
     // Both maps share one colour scale: the given range, else [0, the largest distance of both].
     if (!range && !map_processed.empty() && !map_original.empty()) range = distance_map_range(c);
@@ -94,8 +95,11 @@ void add_compare_command(CLI::App& app, Action& action)
     auto* sub = app.add_subcommand("compare",
                                    "compare an original and a processed mesh: roughness profiles, per-level "
                                    "roughness distance, Metro-style surface distance (the default command)");
-    sub->add_option("ORIGINAL", args->original, "original mesh (.ply .obj .off .stl)")->required();
-    sub->add_option("PROCESSED", args->processed, "processed mesh")->required();
+    sub->add_option("ORIGINAL", args->original,
+                    "original mesh (.ply .obj .off .stl), or a point cloud (a .ply .obj .off file with vertices and no "
+                    "faces)")
+        ->required();
+    sub->add_option("PROCESSED", args->processed, "processed mesh or point cloud")->required();
     add_compare_options(sub, args->compare);
     add_measure_options(sub, args->compare.profile);
     sub->add_option("--json", args->json, "write the JSON report to FILE, or '-' for stdout");

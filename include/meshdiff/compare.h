@@ -6,6 +6,7 @@
 //! JSON (schema "meshdiff.compare/2") and text forms are in meshdiff/report/.
 #pragma once
 
+#include "meshdiff/cloud_distance.h"
 #include "meshdiff/corsini.h"
 #include "meshdiff/facts.h"
 #include "meshdiff/hausdorff.h"
@@ -79,11 +80,21 @@ struct Comparison
     //! (forward) and of the processed mesh (backward) and their distances.
     SampledDirection forward_samples;
     SampledDirection backward_samples;
+    //! Why the roughness half asked for was skipped (an input is a point
+    //! cloud: roughness needs faces on both sides); empty otherwise.
+    std::string roughness_unavailable;
 };
 
 //! Runs the halves asked for in \p options.
+//! Either input may be a point cloud (a mesh without faces, as
+//! read_mesh_or_cloud() returns it): the surface distance is then
+//! cloud_surface_distance(); the roughness half, the same-connectivity metrics
+//! need faces on both sides and are skipped with the reason
+//! (Comparison::roughness_unavailable, same_connectivity_unavailable). The
+//! facts of a cloud are its point count and bounding box (area 0, no topology).
 //! \throw InvalidArgumentError for bad options (k <= 0, both halves off, bad
-//!        sampling, radii with the Corsini measure).
+//!        sampling, radii with the Corsini measure; a cloud with --no-distance:
+//!        nothing left to compare).
 Comparison compare_meshes(const LoadedMesh& original, const LoadedMesh& processed, const CompareOptions& options = {});
 
 }  // namespace meshdiff

@@ -32,6 +32,9 @@ struct InputReport
     std::size_t unreferenced_vertices = 0;  //!< dropped: in no face
     std::size_t polygons_triangulated = 0;  //!< faces with more than 3 corners (fan-triangulated)
     std::size_t repeated_index_faces = 0;   //!< dropped: a corner repeated (no area, no edges of its own)
+    //! Read by read_mesh_or_cloud() from a file with vertices and no faces:
+    //! LoadedMesh::mesh holds every point and no face.
+    bool point_cloud = false;
 };
 
 //! A named per-vertex scalar (read from or written as a PLY vertex property).
@@ -64,10 +67,24 @@ const VertexScalar& vertex_scalar(const LoadedMesh& loaded, const std::string& n
 //!        a directory), unreadable, of an unknown format, empty, truncated,
 //!        unparsable, or if its header counts do not match its body (too few
 //!        bytes for a count, or data after the declared elements).
-//! \throw InvalidMeshError if it has no vertices, no faces, a face with fewer
+//! \throw InvalidMeshError if it has no vertices, no faces (the message says
+//!        it is a point cloud, which only compare accepts), a face with fewer
 //!        than 3 corners, a face index out of range, a NaN/Inf coordinate or
 //!        one beyond max_coordinate.
 LoadedMesh read_mesh(const std::filesystem::path& path);
+
+//! read_mesh(), except that a file with vertices and no faces (no face element,
+//! or a face count of 0) is read as a point cloud: every point is kept, in file
+//! order, with its scalar properties; InputReport::point_cloud is set and
+//! LoadedMesh::mesh has no faces. Only compare reads its inputs this way (STL
+//! cannot hold a cloud; an OBJ with only `p` elements stays an error). The
+//! checks of the coordinates are those of read_mesh(); a file with no vertex
+//! is an error as there.
+//! \throw as read_mesh(), except for "no faces".
+LoadedMesh read_mesh_or_cloud(const std::filesystem::path& path);
+
+//! True if \p loaded is a point cloud (its mesh has no faces).
+bool is_point_cloud(const LoadedMesh& loaded);
 
 //! Writes a binary little-endian PLY with x y z (double), the given scalar
 //! properties, optional RGB colours (uchar red green blue) and the faces.

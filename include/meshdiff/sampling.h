@@ -69,6 +69,7 @@ enum class SampleKind : std::uint8_t
     OnVertex,  //!< a mesh vertex
     OnEdge,    //!< a point inside an edge
     OnFace,    //!< a point inside a face
+    OnPoint,   //!< a point of a point cloud (cloud_distance.h); element: the point's index
 };
 
 //! Options of the surface sampling. All fields have defaults.

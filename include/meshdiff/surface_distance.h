@@ -30,6 +30,7 @@
 #pragma once
 
 #include "meshdiff/closest_point.h"
+#include "meshdiff/distance_kind.h"
 #include "meshdiff/hausdorff.h"
 #include "meshdiff/mesh.h"
 #include "meshdiff/sampling.h"
@@ -85,12 +86,13 @@ struct DistanceStats
     std::size_t n_vertex = 0;  //!< vertex samples
     std::size_t n_edge = 0;    //!< edge samples
     std::size_t n_face = 0;    //!< face samples
+    std::size_t n_point = 0;   //!< points of a point cloud (cloud_distance.h)
     //! Where the maximum lies: the first sample (in sample order) at `max`,
     //! its kind and source element (SurfaceSamples::element).
     Vec3 max_point = Vec3::Zero();
     SampleKind max_kind = SampleKind::OnVertex;
     std::uint32_t max_element = 0;
-    std::size_t n_samples() const { return n_vertex + n_edge + n_face; }
+    std::size_t n_samples() const { return n_vertex + n_edge + n_face + n_point; }
     //! Face samples only, area-weighted; std::nullopt when the direction has
     //! no face sample (faces off, or a budget the vertices and edges used up).
     std::optional<AreaWeightedStats> area_weighted;
@@ -193,6 +195,10 @@ struct SurfaceDistance
     //! One per SummaryOptions::fscore_thresholds, in the order asked (empty
     //! when none was asked or the summary is unavailable).
     std::vector<FScore> fscore;
+    //! Which distance each direction measures: surface-to-surface here; with
+    //! a point cloud, as cloud_surface_distance() sets them (cloud_distance.h).
+    DistanceKind forward_kind = DistanceKind::SurfaceToSurface;
+    DistanceKind backward_kind = DistanceKind::SurfaceToSurface;
 };
 
 //! The area-weighted statistics of \p distances, the distances of \p samples

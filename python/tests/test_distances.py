@@ -100,7 +100,7 @@ def test_surface_distance_samples_are_those_of_the_statistics(bunny, data):
         ordered = np.sort(s["distances"])
         assert ordered[int(np.ceil(0.95 * n)) - 1] == s["p95"]
         np.testing.assert_allclose(np.sqrt(np.mean(s["distances"] ** 2)), s["rms"], rtol=1e-12)
-        counts = np.bincount(s["kinds"], minlength=3)
+        counts = np.bincount(s["kinds"], minlength=len(meshdiff.SAMPLE_KINDS))
         by_kind = s["samples_by_kind"]
         assert list(counts) == [by_kind[k] for k in meshdiff.SAMPLE_KINDS]
         # Samples lie on the first surface of the direction; distances are to the other.

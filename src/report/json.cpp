@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 namespace meshdiff {
 
@@ -43,6 +44,8 @@ nlohmann::json mesh_json(const MeshFacts& f)
     j["polygons_triangulated"] = f.input.polygons_triangulated;
     j["repeated_index_faces_removed"] = f.input.repeated_index_faces;
     j["area"] = f.area;
+    j["point_cloud"] = f.input.point_cloud;
+    if (f.input.point_cloud) j["closed"] = nullptr;  // no surface
     j["bbox"] = {{"min", {f.box.min.x(), f.box.min.y(), f.box.min.z()}},
                  {"max", {f.box.max.x(), f.box.max.y(), f.box.max.z()}},
                  {"diagonal", f.box.diagonal()}};
@@ -278,7 +281,7 @@ nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal)
     };
     nlohmann::json j = block(s);
     j["samples"] = s.n_samples();
-    j["samples_by_kind"] = {{"vertex", s.n_vertex}, {"edge", s.n_edge}, {"face", s.n_face}};
+    j["samples_by_kind"] = {{"vertex", s.n_vertex}, {"edge", s.n_edge}, {"face", s.n_face}, {"point", s.n_point}};
     j["relative"] = block(relative_to(s, diagonal));
     if (s.area_weighted) {
         const AreaWeightedStats& a = *s.area_weighted;
@@ -340,9 +343,8 @@ nlohmann::json certified_json(const std::optional<CertifiedHausdorff>& h, double
             {"rounds", h->rounds}};
 }
 
-}  // namespace
-
-nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOptions& so)
+// surface_distance_json() without the notes of point clouds.
+nlohmann::json mesh_surface_distance_json(const SurfaceDistance& d, const SamplingOptions& so)
 {
     nlohmann::json forward = distance_stats_json(d.forward, d.diagonal);
     nlohmann::json backward = distance_stats_json(d.backward, d.diagonal);
@@ -436,6 +438,52 @@ nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOpt
             {"cutoff", nullptr}};
 }
 
+// The distance kind of each direction and, for a point cloud side, what its
+// weights and its Hausdorff value are (cloud_distance.h).
+void cloud_notes_json(nlohmann::json& sd, const SurfaceDistance& dist)
+{
+    for (const auto& [key, kind] : {std::pair{"forward", dist.forward_kind}, {"backward", dist.backward_kind}}) {
+        nlohmann::json& d = sd[key];
+        d["distance_kind"] = to_string(kind);
+        if (from_cloud(kind) && d["area_weighted"].is_object()) {
+            d["area_weighted"]["area"] = nullptr;
+            d["area_weighted"]["area_fraction"] = nullptr;
+            d["area_weighted"]["points"] = d["samples"];
+            d["area_weighted"]["weights"] = "uniform: every point of the cloud weight 1 (a point cloud has no areas)";
+        }
+        if (from_cloud(kind) && d["hausdorff"].is_object()) {
+            d["hausdorff"]["exact_over_points"] = true;
+            d["hausdorff"]["location"]["point_index"] = d["hausdorff"]["location"]["face"];
+            d["hausdorff"]["location"]["face"] = nullptr;
+            if (to_cloud(kind)) {
+                d["hausdorff"]["location"]["closest_point_index"] = d["hausdorff"]["location"]["closest_face"];
+                d["hausdorff"]["location"]["closest_face"] = nullptr;
+            }
+        } else if (kind == DistanceKind::SurfaceToPoint) {
+            d["hausdorff_unavailable"] =
+                "the target is a point cloud: the maximum over the mesh samples is sampled, not certified";
+        }
+    }
+    if (dist.forward_kind != DistanceKind::SurfaceToSurface) {
+        sd["distance_kinds"] =
+            "point-to-surface: every point of a cloud, exact distance to the mesh; surface-to-point: samples of a "
+            "mesh, distance to the nearest point of the cloud; point-to-point: every point of a cloud, distance to "
+            "the nearest point of the other cloud; a cloud's Hausdorff value is exact over its points";
+        sd["forward_is"] = "samples (a cloud: its points) of the original, distances to the processed input";
+        sd["diagonal_of"] = from_cloud(dist.forward_kind) ? "bounding box of the original point cloud"
+                                                          : "bounding box of the original mesh";
+    }
+}
+
+}  // namespace
+
+nlohmann::json surface_distance_json(const SurfaceDistance& d, const SamplingOptions& so)
+{
+    nlohmann::json j = mesh_surface_distance_json(d, so);
+    cloud_notes_json(j, d);
+    return j;
+}
+
 nlohmann::json comparison_json(const Comparison& c)
 {
     nlohmann::json j;
@@ -458,6 +506,8 @@ nlohmann::json comparison_json(const Comparison& c)
         j["processed"]["corsini"] = corsini_json(*c.processed_corsini);
         j["corsini_distance"] = corsini_distance_json(*c.corsini);
     }
+    j["roughness_unavailable"] =
+        c.roughness_unavailable.empty() ? nlohmann::json(nullptr) : nlohmann::json(c.roughness_unavailable);
     if (c.distance) {
         j["surface_distance"] = surface_distance_json(*c.distance, c.options.sampling);
     } else {

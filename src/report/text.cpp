@@ -112,6 +112,9 @@ std::string facts_text(const std::string& title, const MeshFacts& f)
 {
     const auto& t = f.topology;
     std::string s = fmt::format("{}: {}\n", title, f.input.path);
+    if (f.input.point_cloud)
+        return s +
+               fmt::format("  point cloud: {} points, no faces, bbox diagonal {:.6g}\n", t.vertices, f.box.diagonal());
     s += fmt::format("  {} vertices, {} faces, {} component{}, {}, area {:.6g}, bbox diagonal {:.6g}\n", t.vertices,
                      t.faces, t.components, t.components == 1 ? "" : "s",
                      t.closed() ? "closed" : fmt::format("open ({} boundary loops)", t.boundary_loops), f.area,
@@ -123,7 +126,11 @@ std::string facts_text(const std::string& title, const MeshFacts& f)
 std::string stats_text(const std::string& title, const DistanceStats& s, double diag)
 {
     std::string out = fmt::format("{}\n", title);
-    out += fmt::format("  samples: {} ({} vertex, {} edge, {} face)\n", s.n_samples(), s.n_vertex, s.n_edge, s.n_face);
+    if (s.n_point > 0)
+        out += fmt::format("  samples: {} (every point of the cloud)\n", s.n_samples());
+    else
+        out +=
+            fmt::format("  samples: {} ({} vertex, {} edge, {} face)\n", s.n_samples(), s.n_vertex, s.n_edge, s.n_face);
     out += fmt::format("  {:>5} {:>14} {:>14}\n", "", "absolute", "wrt diagonal");
     const std::pair<const char*, double> rows[] = {{"min", s.min},    {"max", s.max}, {"mean", s.mean}, {"RMS", s.rms},
                                                    {"std", s.stddev}, {"p50", s.p50}, {"p95", s.p95},   {"p99", s.p99}};
@@ -132,18 +139,24 @@ std::string stats_text(const std::string& title, const DistanceStats& s, double 
 }
 
 // The summary metrics of a surface distance (METHOD.md section 6).
-std::string summary_text(const SurfaceDistance& d)
+// With a point cloud on the forward (\p cloud_a) or backward (\p cloud_b)
+// sampled side, that direction weights its points equally (cloud_distance.h).
+std::string summary_text(const SurfaceDistance& d, bool cloud_a = false, bool cloud_b = false)
 {
     if (!d.summary) return fmt::format("Summary metrics unavailable: {}\n", d.summary_unavailable);
     const SummaryMetrics& m = *d.summary;
     const AreaWeightedStats& f = *d.forward.area_weighted;
     const AreaWeightedStats& b = *d.backward.area_weighted;
-    std::string s = "Summary metrics (face samples, each weighted by the area it stands for):\n";
+    std::string s = cloud_a || cloud_b ? fmt::format("Summary metrics ({}):\n",
+                                                     cloud_a && cloud_b ? "every point of each cloud weighted equally"
+                                                                        : "a mesh's face samples weighted by the area "
+                                                                          "each stands for, a cloud's points equally")
+                                       : "Summary metrics (face samples, each weighted by the area it stands for):\n";
     s += fmt::format("  area-weighted mean   forward {:.6g} ({:.6g} wrt diagonal), backward {:.6g} ({:.6g})\n", f.mean,
                      f.mean / d.diagonal, b.mean, b.mean / d.diagonal);
     s += fmt::format("  area-weighted RMS    forward {:.6g} ({:.6g} wrt diagonal), backward {:.6g} ({:.6g})\n", f.rms,
                      f.rms / d.diagonal, b.rms, b.rms / d.diagonal);
-    if (f.area_fraction < 1.0 || b.area_fraction < 1.0)
+    if (!(cloud_a || cloud_b) && (f.area_fraction < 1.0 || b.area_fraction < 1.0))
         s += fmt::format("  area with face samples: {:.4g}% and {:.4g}% of the surfaces\n", 100.0 * f.area_fraction,
                          100.0 * b.area_fraction);
     s += fmt::format("  Chamfer L1 (mean forward + mean backward)        {:.6g} ({:.6g} wrt diagonal)\n", m.chamfer_l1,
@@ -174,6 +187,50 @@ std::string same_connectivity_text(const Comparison& c)
                      m.max_vertex);
     s += fmt::format("  face normal angle    RMS {:.6g} deg, max {:.6g} deg at face {}\n", m.normal_rms_deg,
                      m.normal_max_deg, m.max_face);
+    return s;
+}
+
+// The surface distance when an input is a point cloud (cloud_distance.h).
+std::string cloud_distance_text(const Comparison& c)
+{
+    const auto& d = *c.distance;
+    const auto& so = c.options.sampling;
+    const bool cloud_a = c.original.input.point_cloud, cloud_b = c.processed.input.point_cloud;
+    std::string s = fmt::format("\nSurface distance with a point cloud ({}; {} face sampling of a mesh side{})\n",
+                                cloud_a && cloud_b ? "both inputs are point clouds"
+                                : cloud_a          ? "M1 is a point cloud"
+                                                   : "M2 is a point cloud",
+                                to_string(so.face_scheme),
+                                so.face_scheme == FaceSampling::MonteCarlo ? fmt::format(", seed {}", so.seed) : "");
+    s += "  point-to-surface: every point of a cloud, exact distance to the mesh; surface-to-point: samples of a "
+         "mesh,\n  distance to the nearest point of the cloud; point-to-point: nearest point of the other cloud\n";
+    s += fmt::format("  diagonal = bounding-box diagonal of the original = {:.6g}\n", d.diagonal);
+    s += stats_text(fmt::format("Forward distance (M1 -> M2, {}):", to_string(d.forward_kind)), d.forward, d.diagonal);
+    s += stats_text(fmt::format("Backward distance (M2 -> M1, {}):", to_string(d.backward_kind)), d.backward,
+                    d.diagonal);
+    auto side = [&](const char* name, bool from_cloud, bool to_cloud, const std::optional<CertifiedHausdorff>& h,
+                    const DistanceStats& st) {
+        if (from_cloud && h)
+            return fmt::format("  {} {:.8g}, exact over the points (at point {} ({:.9g}, {:.9g}, {:.9g}))\n", name,
+                               h->lower, h->location.face, h->location.point.x(), h->location.point.y(),
+                               h->location.point.z());
+        if (!from_cloud && to_cloud && c.options.hausdorff)
+            return fmt::format("  {} {:.8g}, sampled (not certified: the target is a point cloud)\n", name, st.max);
+        return fmt::format("  {} {:.8g}, sampled\n", name, st.max);
+    };
+    s += fmt::format(
+        "Hausdorff distance: {:.8g} ({:.6g} wrt bounding box diagonal; {:.6g} wrt Metro's widened union box, "
+        "diagonal {:.6g}), {}\n",
+        d.hausdorff, d.hausdorff / d.diagonal, d.hausdorff / d.metro_diagonal, d.metro_diagonal,
+        d.forward_hausdorff && d.backward_hausdorff ? "exact" : "a sampled lower bound");
+    s += side("forward  (M1 -> M2):", cloud_a, cloud_b, d.forward_hausdorff, d.forward);
+    s += side("backward (M2 -> M1):", cloud_b, cloud_a, d.backward_hausdorff, d.backward);
+    s += summary_text(d, cloud_a, cloud_b);
+    if (d.summary && !(cloud_a && cloud_b)) {
+        const AreaWeightedStats& m = cloud_a ? *d.backward.area_weighted : *d.forward.area_weighted;
+        if (m.area_fraction < 1.0)
+            s += fmt::format("  area with face samples: {:.4g}% of the mesh\n", 100.0 * m.area_fraction);
+    }
     return s;
 }
 
@@ -248,7 +305,10 @@ std::string comparison_text(const Comparison& c)
         if (c.corsini->has_global) row("global", pa.global.roughness, pb.global.roughness, c.corsini->global);
         if (c.corsini->has_multiscale) row("multi", pa.multiscale, pb.multiscale, c.corsini->multiscale);
     }
-    if (c.distance) {
+    if (!c.roughness_unavailable.empty()) s += fmt::format("\nRoughness: skipped: {}\n", c.roughness_unavailable);
+    if (c.distance && (c.original.input.point_cloud || c.processed.input.point_cloud)) {
+        s += cloud_distance_text(c);
+    } else if (c.distance) {
         const auto& d = *c.distance;
         const auto& so = c.options.sampling;
         s += fmt::format("\nSurface distance (Metro-style: exact point-to-triangle distances, {} face sampling{})\n",
