@@ -423,6 +423,8 @@ py::dict direction_dict(const nlohmann::json& stats, const SampledDirection& d)
     const SurfaceSamples& s = d.samples;
     out["points"] = points_array(s.points);
     out["distances"] = vector_array(d.distances);
+    // Positive outside the other surface; None when it cannot be signed against.
+    out["signed_distances"] = d.signed_distances.empty() ? py::object(py::none()) : vector_array(d.signed_distances);
     py::array_t<std::uint8_t> kinds(py::ssize_t(s.size()));
     py::array_t<std::int64_t> elements(py::ssize_t(s.size()));
     for (std::size_t i = 0; i < s.size(); ++i) {

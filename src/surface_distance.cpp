@@ -1,6 +1,7 @@
 #include "meshdiff/surface_distance.h"
 
 #include "meshdiff/error.h"
+#include "meshdiff/signed_distance.h"
 
 #include "detail/compensated_sum.h"
 #include "detail/hausdorff.h"
@@ -240,27 +241,63 @@ DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<do
     return s;
 }
 
+SignedDistanceStats signed_distance_stats(const std::vector<double>& s)
+{
+    if (s.empty()) throw InvalidArgumentError("signed_distance_stats: no samples");
+    SignedDistanceStats r;
+    r.min = s[0];
+    r.max = s[0];
+    Sum sum, sum2;
+    for (double x : s) {
+        r.min = std::min(r.min, x);
+        r.max = std::max(r.max, x);
+        sum.add(x);
+        sum2.add(x * x);
+    }
+    r.mean = sum.value() / double(s.size());
+    r.rms = std::sqrt(sum2.value() / double(s.size()));
+    return r;
+}
+
 namespace {
 
-// The samples of \p from and their distances to \p to.
+// The surface a direction measures to, with its pseudo-normals when it can be
+// signed against.
+struct Target
+{
+    const Mesh& mesh;
+    const ClosestPointIndex& index;
+    const PseudoNormals* normals;  // null: no sign
+};
+
+// The samples of \p from and their distances to \p to (and their signed
+// distances when to.normals is set).
 // With \p vertex_closest (the closest points of all vertices of \p from), the
 // vertex samples take their distances from it instead of new queries (the
 // same values: the queries are exact).
-SampledDirection sampled_direction(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options,
+SampledDirection sampled_direction(const Mesh& from, const Target& to, const SamplingOptions& options,
                                    const std::vector<ClosestPoint>* vertex_closest = nullptr)
 {
     SampledDirection d;
     d.samples = sample_surface(from, options);
     if (d.samples.size() == 0)
         throw InvalidArgumentError("SamplingOptions: the enabled sample kinds give no sample on this mesh");
-    if (!vertex_closest) {
-        d.distances = to.distances(d.samples.points);
-        return d;
+    const std::size_t n = d.samples.size();
+    const std::size_t nv = vertex_closest ? d.samples.n_vertex : 0;  // the vertex samples come first
+    d.distances.resize(n);
+    std::vector<std::uint32_t> faces(to.normals ? n : 0);
+    for (std::size_t i = 0; i < nv; ++i) {
+        const ClosestPoint& c = (*vertex_closest)[d.samples.element[i]];
+        d.distances[i] = c.distance;
+        if (to.normals) faces[i] = c.face;
     }
-    const std::size_t nv = d.samples.n_vertex;  // the vertex samples come first
-    d.distances.resize(d.samples.size());
-    for (std::size_t i = 0; i < nv; ++i) d.distances[i] = (*vertex_closest)[d.samples.element[i]].distance;
-    to.distances(d.samples.points.data() + nv, d.samples.size() - nv, d.distances.data() + nv);
+    if (to.normals) {
+        to.index.distances(d.samples.points.data() + nv, n - nv, d.distances.data() + nv, faces.data() + nv);
+        d.signed_distances =
+            signed_distances(to.mesh, *to.normals, d.samples.points.data(), d.distances.data(), faces.data(), n);
+    } else {
+        to.index.distances(d.samples.points.data() + nv, n - nv, d.distances.data() + nv);
+    }
     return d;
 }
 
@@ -306,21 +343,44 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
     };
 
     // One direction: samples on `from`, exact distances to `to`.
-    auto direction = [&](const Mesh& from, const Mesh& to, DistanceStats& stats, std::vector<double>& within,
-                         SampledDirection* keep, std::vector<double>* vertex_distance,
-                         std::optional<CertifiedHausdorff>& certified) {
+    auto direction = [&](const Mesh& from, const Mesh& to, const char* to_name, DistanceStats& stats,
+                         std::vector<double>& within, SampledDirection* keep, std::vector<double>* vertex_distance,
+                         std::vector<double>* vertex_signed, std::optional<CertifiedHausdorff>& certified) {
         const ClosestPointIndex index(to);
+        // The sign (signed_distance.h): from the closest faces of the same queries.
+        std::string unavailable;
+        const std::optional<PseudoNormals> normals = pseudo_normals(to, to_name, &unavailable);
+        const Target target{to, index, normals ? &*normals : nullptr};
         std::vector<ClosestPoint> vq;  // from's vertices: samples and certification
         if (certify) vq = index.closest_points(from.points);
-        SampledDirection d = sampled_direction(from, index, opt, certify ? &vq : nullptr);
+        SampledDirection d = sampled_direction(from, target, opt, certify ? &vq : nullptr);
         stats = distance_stats(d.samples, d.distances);
+        if (normals) {
+            stats.signed_distance = signed_distance_stats(d.signed_distances);
+            stats.signed_distance->flipped = normals->flipped;
+        } else {
+            stats.signed_unavailable = unavailable;
+        }
         summarize(stats, from, d, within);
         if (keep) *keep = std::move(d);
         d = SampledDirection{};  // free the samples before the certification
         if (vertex_distance) {
             if (certify) {
                 vertex_distance->resize(vq.size());
-                for (std::size_t v = 0; v < vq.size(); ++v) (*vertex_distance)[v] = vq[v].distance;
+                std::vector<std::uint32_t> faces(vq.size());
+                for (std::size_t v = 0; v < vq.size(); ++v) {
+                    (*vertex_distance)[v] = vq[v].distance;
+                    faces[v] = vq[v].face;
+                }
+                if (normals)
+                    *vertex_signed = signed_distances(to, *normals, from.points.data(), vertex_distance->data(),
+                                                      faces.data(), vq.size());
+            } else if (normals) {
+                vertex_distance->resize(from.points.size());
+                std::vector<std::uint32_t> faces(from.points.size());
+                index.distances(from.points.data(), from.points.size(), vertex_distance->data(), faces.data());
+                *vertex_signed = signed_distances(to, *normals, from.points.data(), vertex_distance->data(),
+                                                  faces.data(), faces.size());
             } else {
                 *vertex_distance = vertex_distances(from, index);
             }
@@ -328,10 +388,10 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         if (certify) certified = detail::certified_hausdorff(from, to, index, *certify, seed_of(from, stats), vq);
     };
     SurfaceDistance r;
-    direction(a, b, r.forward, recall, forward, b_vertex_distances ? &r.a_vertex_distance : nullptr,
-              r.forward_hausdorff);
-    direction(b, a, r.backward, precision, backward, b_vertex_distances ? &r.b_vertex_distance : nullptr,
-              r.backward_hausdorff);
+    direction(a, b, "the processed mesh", r.forward, recall, forward,
+              b_vertex_distances ? &r.a_vertex_distance : nullptr, &r.a_vertex_signed_distance, r.forward_hausdorff);
+    direction(b, a, "the original mesh", r.backward, precision, backward,
+              b_vertex_distances ? &r.b_vertex_distance : nullptr, &r.b_vertex_signed_distance, r.backward_hausdorff);
     r.hausdorff = std::max(r.forward.max, r.backward.max);
     r.diagonal = diagonal;
     r.metro_diagonal = metro_diagonal(a, b);
@@ -344,7 +404,8 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
 
 DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options)
 {
-    const SampledDirection d = sampled_direction(from, to, options);
+    const Mesh none;
+    const SampledDirection d = sampled_direction(from, Target{none, to, nullptr}, options);
     return distance_stats(d.samples, d.distances);
 }
 
@@ -366,6 +427,19 @@ SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, co
 std::vector<double> vertex_distances(const Mesh& from, const ClosestPointIndex& to)
 {
     return to.distances(from.points);
+}
+
+std::vector<double> vertex_distances(const Mesh& from, const Mesh& to, const ClosestPointIndex& index,
+                                     std::vector<double>& signed_out, const std::string& to_name)
+{
+    signed_out.clear();
+    const std::optional<PseudoNormals> normals = pseudo_normals(to, to_name);
+    if (!normals) return index.distances(from.points);
+    std::vector<double> d(from.points.size());
+    std::vector<std::uint32_t> faces(d.size());
+    index.distances(from.points.data(), d.size(), d.data(), faces.data());
+    signed_out = signed_distances(to, *normals, from.points.data(), d.data(), faces.data(), d.size());
+    return d;
 }
 
 double metro_diagonal(const Mesh& a, const Mesh& b)

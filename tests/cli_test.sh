@@ -278,12 +278,14 @@ header = data[:end].decode().splitlines()
 j = json.load(open(sys.argv[2]))["surface_distance"]
 n = j["forward"]["samples"] + j["backward"]["samples"]
 assert header[1] == "format binary_little_endian 1.0" and "element vertex %d" % n in header
-assert len(data) - end == 38 * n
-recs = [struct.unpack_from("<4dBBi", data, end + 38 * i) for i in range(n)]
+assert len(data) - end == 46 * n
+recs = [struct.unpack_from("<5dBBi", data, end + 46 * i) for i in range(n)]
 for direction, side in ((0, "forward"), (1, "backward")):
-    d = [r for r in recs if r[5] == direction]
+    d = [r for r in recs if r[6] == direction]
     assert len(d) == j[side]["samples"] and max(r[3] for r in d) == j[side]["max"]
-    assert [sum(r[4] == k for r in d) for k in range(3)] == [j[side]["samples_by_kind"][k] for k in ("vertex", "edge", "face")]
+    assert [sum(r[5] == k for r in d) for k in range(3)] == [j[side]["samples_by_kind"][k] for k in ("vertex", "edge", "face")]
+    # Both meshes are open: no sign, NaN in the signed column.
+    assert j[side]["signed"] is None and all(r[4] != r[4] for r in d)
 PY
 expect 2 "$tmp/fan.ply" "$tmp/pyr.ply" --no-distance --samples-out "$tmp/x.ply" &&
     grep -q -- "--samples-out" "$tmp/stderr" && [ ! -e "$tmp/x.ply" ] && pass || fail "--samples-out with --no-distance"

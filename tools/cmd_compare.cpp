@@ -108,7 +108,7 @@ void add_compare_command(CLI::App& app, Action& action)
                     "write both maps, PREFIX_original.ply and PREFIX_processed.ply, on one colour scale");
     sub->add_option("--samples-out", args->samples_out,
                     "write the samples of both directions with their distances as a binary PLY point cloud "
-                    "(x y z distance kind direction face)");
+                    "(x y z distance signed_distance kind direction face)");
     sub->add_option("--color-range", args->color_range, "fix the distance colour range: MIN MAX")
         ->expected(2)
         ->check(in_range(-1e300, 1e300));

@@ -69,6 +69,10 @@ public:
     //! The same for the \p n queries at \p queries, written to \p out[0, n).
     void distances(const Vec3* queries, std::size_t n, double* out) const;
 
+    //! The same, and the face of each closest point in \p faces[0, n) (for
+    //! signed_distance.h: the sign needs only the face).
+    void distances(const Vec3* queries, std::size_t n, double* out, std::uint32_t* faces) const;
+
     //! An upper bound of the distance to the mesh of every point of the
     //! triangle (or segment, or point) spanned by \p corners: the smallest,
     //! over the indexed triangles t, of the largest distance from a corner to

@@ -26,6 +26,7 @@
 #include "meshdiff/roughness_distance.h"
 #include "meshdiff/same_connectivity.h"
 #include "meshdiff/sample_cloud.h"
+#include "meshdiff/signed_distance.h"
 #include "meshdiff/sampling.h"
 #include "meshdiff/shapes.h"
 #include "meshdiff/smoothing.h"
