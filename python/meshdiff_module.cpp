@@ -880,8 +880,9 @@ of both maxima), diagonal, metro_diagonal, sampling.
 With return_samples=True, forward and backward also hold the samples behind the
 statistics: points (k, 3) float64, distances (k,) float64 (exact distance to
 the other surface), kinds (k,) uint8 (0 vertex, 1 edge, 2 face: see
-SAMPLE_KINDS) and elements (k,) int64 (the vertex, a face of the edge, or the
-face sampled). The statistics are the same bit for bit.
+SAMPLE_KINDS), elements (k,) int64 (the vertex, a face of the edge, or the
+face sampled) and signed_distances (k,) float64 (positive outside the other
+surface; None when "signed" is None). The statistics are the same bit for bit.
 )doc";
 
 constexpr const char* kVertexDistancesDoc =

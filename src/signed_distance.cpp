@@ -103,7 +103,12 @@ ClosestFeature closest_feature(const Vec3& p, const Vec3& a, const Vec3& b, cons
 std::string sign_unavailable_reason(const Mesh& mesh, const std::string& name)
 {
     const TopologyReport t = topology_report(mesh);
-    auto count = [](std::size_t n, const char* what) { return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s"); };
+    auto count = [](std::size_t n, const std::string& what) {
+        if (n == 1) return fmt::format("1 {}", what);
+        return what.size() > 6 && what.compare(what.size() - 6, 6, "vertex") == 0
+                   ? fmt::format("{} {}ices", n, what.substr(0, what.size() - 2))
+                   : fmt::format("{} {}s", n, what);
+    };
     std::vector<std::string> why;
     if (t.boundary_edges) why.push_back(count(t.boundary_edges, "boundary edge"));
     if (t.non_manifold_edges) why.push_back(count(t.non_manifold_edges, "non-manifold edge"));

@@ -83,12 +83,14 @@ TEST(SignedDistance, ClosestFeatureMatchesClosestPointBitForBit)
             const Vec3 q = closest_point_on_triangle(p, a, b, *cc).point;
             EXPECT_EQ(f.point, q);
             ++kinds[int(f.kind)];
-            if (f.kind == FeatureKind::Vertex) EXPECT_EQ(f.point, (std::array<Vec3, 3>{a, b, *cc}[f.index]));
+            if (f.kind == FeatureKind::Vertex) {
+                EXPECT_EQ(f.point, (std::array<Vec3, 3>{a, b, *cc}[f.index]));
+            }
         }
     }
     EXPECT_GT(kinds[0], 100);
     EXPECT_GT(kinds[1], 100);
-    EXPECT_GT(kinds[2], 100);
+    EXPECT_GT(kinds[2], 20);
     // Regions of the regular triangle: the projection inside, beyond an edge, beyond a corner.
     EXPECT_EQ(closest_feature(Vec3(0.3, 0.3, 1), a, b, c).kind, FeatureKind::Interior);
     const ClosestFeature e = closest_feature(Vec3(0.5, -1, 0), a, b, c);
@@ -115,15 +117,18 @@ TEST(SignedDistance, CubeAgainstScaledCubeClosedForm)
         const Vec3& p = r.forward.samples.points[i];
         EXPECT_NEAR(r.forward.signed_distances[i], outside_box(p, 0.0, 1.0), 1e-14);
         EXPECT_GT(r.forward.signed_distances[i], 0.0);
-        if (r.forward.samples.kind[i] == SampleKind::OnVertex)  // a corner: to the small cube's corner
+        if (r.forward.samples.kind[i] == SampleKind::OnVertex) {  // a corner: to the small cube's corner
             EXPECT_NEAR(r.forward.signed_distances[i], std::sqrt(3.0) * 0.05, 1e-15);
+        }
     }
     // Backward: samples on the small cube, all inside the big one.
     for (std::size_t i = 0; i < r.backward.samples.size(); ++i) {
         const Vec3& p = r.backward.samples.points[i];
         EXPECT_NEAR(r.backward.signed_distances[i], -inside_box(p, -0.05, 1.05), 1e-14);
         EXPECT_LT(r.backward.signed_distances[i], 0.0);
-        if (r.backward.samples.kind[i] == SampleKind::OnVertex) EXPECT_NEAR(r.backward.signed_distances[i], -0.05, 1e-15);
+        if (r.backward.samples.kind[i] == SampleKind::OnVertex) {
+            EXPECT_NEAR(r.backward.signed_distances[i], -0.05, 1e-15);
+        }
     }
     const DistanceStats& f = r.distance.forward;
     const DistanceStats& b = r.distance.backward;
@@ -243,7 +248,7 @@ TEST(SignedDistance, SharpEdgeWherePseudoNormalIsRightAndFaceNormalWrong)
     // A tetrahedron with a knife edge A-B (dihedral angle about 5.7 degrees).
     Mesh m;
     m.points = {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0.05, 0.5), Vec3(1, -0.05, 0.5)};
-    m.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    m.faces = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
     std::string why;
     const auto n = pseudo_normals(m, "M", &why);
     ASSERT_TRUE(n) << why;

@@ -74,9 +74,11 @@ int run_compare(const CompareArgs& a)
         if (path.empty()) continue;
         const VertexMap map = distance_map(c, side, range);
         write_ply(path, *mesh, map);
-        legend += fmt::format("Distance map of the {}: {} (vertex property 'distance' to the {} surface; {})\n",
+        const bool has_signed = map.scalars.size() > 1;
+        legend += fmt::format("Distance map of the {}: {} (vertex property 'distance' to the {} surface{}; {})\n",
                               side == MapSide::Original ? "original" : "processed", path,
-                              side == MapSide::Original ? "processed" : "original", map.comments[1]);
+                              side == MapSide::Original ? "processed" : "original",
+                              has_signed ? ", and 'signed_distance', positive outside it" : "", map.comments[1]);
     }
     if (!a.samples_out.empty())
         write_sample_cloud(a.samples_out, original.mesh, c.forward_samples, processed.mesh, c.backward_samples,
