@@ -537,14 +537,15 @@ void ClosestPointIndex::distances(const Vec3* queries, std::size_t n, double* ou
     });
 }
 
-void ClosestPointIndex::distances(const Vec3* queries, std::size_t n, double* out, std::uint32_t* faces) const
+void ClosestPointIndex::distances(const Vec3* queries, std::size_t n, double* out,
+                                  const std::function<void(std::size_t, const ClosestPoint&)>& visit) const
 {
     const Impl& impl = *impl_;
     for_blocks(n, [&](std::size_t i, std::uint32_t hint) {
         std::uint32_t hit = kNoFace;
         const ClosestPoint c = impl.query(queries[i], hint, &hit);
         out[i] = c.distance;
-        faces[i] = c.face;
+        visit(i, c);
         return hit;
     });
 }

@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-#include <tuple>
 #include <utility>
 
 namespace meshdiff {
@@ -100,31 +99,119 @@ ClosestFeature closest_feature(const Vec3& p, const Vec3& a, const Vec3& b, cons
     return detail::is_thin_triangle(a, b, c) ? thin_feature(p, a, b, c) : face_feature(p, a, b, c);
 }
 
-std::string sign_unavailable_reason(const Mesh& mesh, const std::string& name)
+namespace {
+
+// The facts that decide whether a mesh can be signed against, counted as
+// topology_report() counts them (the non-manifold vertices only when the edges
+// are fine), and the opposite half-edge of each half-edge of a closed,
+// edge-manifold, consistently oriented mesh. One pass over the half-edges and
+// the faces around their first vertex (no sort).
+struct SignFacts
 {
-    const TopologyReport t = topology_report(mesh);
-    auto count = [](std::size_t n, const std::string& what) {
-        if (n == 1) return fmt::format("1 {}", what);
-        return what.size() > 6 && what.compare(what.size() - 6, 6, "vertex") == 0
-                   ? fmt::format("{} {}ices", n, what.substr(0, what.size() - 2))
-                   : fmt::format("{} {}s", n, what);
+    std::size_t boundary_edges = 0, non_manifold_edges = 0, orientation_conflicts = 0, degenerate_faces = 0,
+                non_manifold_vertices = 0;
+    std::vector<std::uint32_t> opposite;  // per half-edge 3 f + k: the opposite half-edge 3 g + j
+    bool ok() const
+    {
+        return !boundary_edges && !non_manifold_edges && !orientation_conflicts && !degenerate_faces &&
+               !non_manifold_vertices;
+    }
+};
+
+SignFacts sign_facts(const Mesh& mesh)
+{
+    SignFacts r;
+    const std::size_t nf = mesh.n_faces();
+    const std::vector<char> degenerate = degenerate_face_mask(mesh);
+    r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
+    const Adjacency vf = vertex_faces(mesh);
+    constexpr std::uint32_t kNone = ~0u;
+    r.opposite.assign(3 * nf, kNone);
+    for (std::size_t f = 0; f < nf; ++f) {
+        const Face& t = mesh.faces[f];
+        for (std::size_t k = 0; k < 3; ++k) {
+            const auto u = std::uint32_t(t[k]), v = std::uint32_t(t[(k + 1) % 3]);
+            if (u == v) continue;  // a repeated corner: no edge (topology.h)
+            const std::size_t self = 3 * f + k;
+            std::size_t same = 0, opp = 0, first = self, opposite = kNone;
+            for (auto g = vf.begin(u); g != vf.end(u); ++g) {
+                const Face& s = mesh.faces[*g];
+                for (std::size_t j = 0; j < 3; ++j) {
+                    if (std::uint32_t(s[j]) != u || 3 * std::size_t(*g) + j == self) continue;
+                    if (std::uint32_t(s[(j + 1) % 3]) == v) {  // u -> v again
+                        ++same;
+                        first = std::min(first, 3 * std::size_t(*g) + j);
+                    }
+                    if (std::uint32_t(s[(j + 2) % 3]) == v) {  // v -> u: half-edge (j + 2) mod 3 of g
+                        ++opp;
+                        opposite = 3 * std::size_t(*g) + (j + 2) % 3;
+                        first = std::min(first, opposite);
+                    }
+                }
+            }
+            if (opp == 1 && same == 0) r.opposite[self] = std::uint32_t(opposite);
+            if (first != self) continue;  // the edge is counted at its first half-edge
+            const std::size_t count = 1 + same + opp;
+            if (count == 1) ++r.boundary_edges;
+            if (count > 2) ++r.non_manifold_edges;
+            if (count == 2 && same == 1) ++r.orientation_conflicts;
+        }
+    }
+    if (r.boundary_edges || r.non_manifold_edges || r.orientation_conflicts || r.degenerate_faces) return r;
+    // Fans: around each vertex, the corners linked through the opposite
+    // half-edges form cycles; more than one cycle is a non-manifold vertex.
+    std::vector<char> visited(3 * nf, 0);
+    std::vector<std::uint8_t> fans(mesh.n_vertices(), 0);
+    for (std::size_t c0 = 0; c0 < 3 * nf; ++c0) {
+        if (visited[c0]) continue;
+        const auto u = std::size_t(mesh.faces[c0 / 3][c0 % 3]);
+        if (fans[u] < 2) ++fans[u];
+        std::size_t c = c0;
+        do {
+            visited[c] = 1;
+            const std::size_t h = r.opposite[c];  // the half-edge into u in the next face
+            c = 3 * (h / 3) + (h % 3 + 1) % 3;
+        } while (c != c0);
+    }
+    r.non_manifold_vertices = std::size_t(std::count(fans.begin(), fans.end(), 2));
+    return r;
+}
+
+std::string reason_of(const SignFacts& f, const std::string& name)
+{
+    if (f.ok()) return {};
+    auto count = [](std::size_t n, const char* one, const char* many) {
+        return fmt::format("{} {}", n, n == 1 ? one : many);
     };
     std::vector<std::string> why;
-    if (t.boundary_edges) why.push_back(count(t.boundary_edges, "boundary edge"));
-    if (t.non_manifold_edges) why.push_back(count(t.non_manifold_edges, "non-manifold edge"));
-    if (t.non_manifold_vertices) why.push_back(count(t.non_manifold_vertices, "non-manifold vertex"));
-    if (t.orientation_conflicts)
-        why.push_back(count(t.orientation_conflicts, "edge") + " with inconsistent orientation");
-    if (t.degenerate_faces) why.push_back(count(t.degenerate_faces, "degenerate face"));
-    if (why.empty()) return {};
+    if (f.boundary_edges) why.push_back(count(f.boundary_edges, "boundary edge", "boundary edges"));
+    if (f.non_manifold_edges) why.push_back(count(f.non_manifold_edges, "non-manifold edge", "non-manifold edges"));
+    if (f.orientation_conflicts)
+        why.push_back(count(f.orientation_conflicts, "edge with inconsistent orientation",
+                            "edges with inconsistent orientation"));
+    if (f.degenerate_faces) why.push_back(count(f.degenerate_faces, "degenerate face", "degenerate faces"));
+    if (f.non_manifold_vertices)
+        why.push_back(count(f.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices"));
     std::string s = name + " has ";
     for (std::size_t i = 0; i < why.size(); ++i) s += (i == 0 ? "" : (i + 1 == why.size() ? " and " : ", ")) + why[i];
     return s + " (the sign needs a closed, manifold, consistently oriented mesh without degenerate faces)";
 }
 
+}  // namespace
+
+std::string sign_unavailable_reason(const Mesh& mesh, const std::string& name)
+{
+    return reason_of(sign_facts(mesh), name);
+}
+
 std::optional<PseudoNormals> pseudo_normals(const Mesh& mesh, const std::string& name, std::string* reason)
 {
-    std::string why = sign_unavailable_reason(mesh, name);
+    if (3 * std::uint64_t(mesh.n_faces()) >= std::uint64_t(~0u)) {
+        if (reason) *reason = fmt::format("{} has too many faces to be signed against ({})", name, mesh.n_faces());
+        return std::nullopt;
+    }
+    SignFacts facts = sign_facts(mesh);
+    std::string why = reason_of(facts, name);
     const std::size_t nf = mesh.n_faces();
     PseudoNormals n;
     if (why.empty()) {
@@ -149,38 +236,16 @@ std::optional<PseudoNormals> pseudo_normals(const Mesh& mesh, const std::string&
     n.face.resize(nf);
     for (std::size_t f = 0; f < nf; ++f) n.face[f] = s * face_cross(mesh, f).normalized();
     n.vertex.assign(mesh.n_vertices(), Vec3::Zero());
-    // Edges: the directed half-edges (a, b) of each face, sorted by their
-    // undirected key; a closed manifold mesh has each key exactly twice.
-    struct HalfEdge
-    {
-        std::uint32_t lo, hi, face;
-        std::uint8_t slot;
-    };
-    std::vector<HalfEdge> half(3 * nf);
     for (std::size_t f = 0; f < nf; ++f) {
         const Face& t = mesh.faces[f];
-        for (int k = 0; k < 3; ++k) {
-            const auto u = std::uint32_t(t[std::size_t(k)]), v = std::uint32_t(t[std::size_t((k + 1) % 3)]);
-            half[3 * f + std::size_t(k)] = {std::min(u, v), std::max(u, v), std::uint32_t(f), std::uint8_t(k)};
-            const Vec3& p = mesh.points[u];
-            const Vec3& q = mesh.points[v];
-            const Vec3& r = mesh.points[std::size_t(t[std::size_t((k + 2) % 3)])];
-            n.vertex[u] += angle(q - p, r - p) * n.face[f];
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Vec3& p = mesh.points[std::size_t(t[k])];
+            const Vec3& q = mesh.points[std::size_t(t[(k + 1) % 3])];
+            const Vec3& r = mesh.points[std::size_t(t[(k + 2) % 3])];
+            n.vertex[std::size_t(t[k])] += angle(q - p, r - p) * n.face[f];
         }
     }
-    std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
-        return std::tie(x.lo, x.hi, x.face, x.slot) < std::tie(y.lo, y.hi, y.face, y.slot);
-    });
-    n.edge.resize(nf);
-    for (std::size_t i = 0; i + 1 < half.size(); i += 2) {
-        const HalfEdge& x = half[i];
-        const HalfEdge& y = half[i + 1];
-        if (x.lo != y.lo || x.hi != y.hi)
-            throw std::logic_error(fmt::format("pseudo_normals: edge ({}, {}) has one face", x.lo, x.hi));
-        const Vec3 e = n.face[x.face] + n.face[y.face];
-        n.edge[x.face][x.slot] = e;
-        n.edge[y.face][y.slot] = e;
-    }
+    n.opposite = std::move(facts.opposite);
     return n;
 }
 
@@ -191,10 +256,11 @@ int distance_sign(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p,
                                              mesh.points[std::size_t(t[2])]);
     const Vec3 d = p - c.point;
     if (d.isZero(0.0)) return 0;
-    const Vec3& n = c.kind == FeatureKind::Interior   ? normals.face[face]
-                    : c.kind == FeatureKind::Edge ? normals.edge[face][c.index]
-                                                  : normals.vertex[std::size_t(t[c.index])];
-    const double s = d.dot(n);
+    const Vec3& nf = normals.face[face];
+    const double s = c.kind == FeatureKind::Interior ? d.dot(nf)
+                     : c.kind == FeatureKind::Edge
+                         ? d.dot(nf + normals.face[normals.opposite[3 * std::size_t(face) + c.index] / 3])
+                         : d.dot(normals.vertex[std::size_t(t[c.index])]);
     return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
 }
 
@@ -210,6 +276,14 @@ std::vector<double> signed_distances(const Mesh& mesh, const PseudoNormals& norm
         out[k] = s == 0 ? 0.0 : double(s) * distances[k];
     }
     return out;
+}
+
+void signed_query(const Mesh& mesh, const ClosestPointIndex& index, const PseudoNormals& normals, const Vec3* queries,
+                  std::size_t n, double* distances, std::int8_t* signs)
+{
+    index.distances(queries, n, distances, [&](std::size_t i, const ClosestPoint& c) {
+        signs[i] = std::int8_t(c.distance > 0.0 ? distance_sign(mesh, normals, queries[i], c.face) : 0);
+    });
 }
 
 double winding_number(const Mesh& mesh, const Vec3& p)

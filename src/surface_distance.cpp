@@ -241,22 +241,34 @@ DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<do
     return s;
 }
 
-SignedDistanceStats signed_distance_stats(const std::vector<double>& s)
+namespace {
+
+// The signed statistics of x_i = f(i), i < n (sequential sums in index order).
+template <class F>
+SignedDistanceStats signed_stats_of(std::size_t n, F&& f)
 {
-    if (s.empty()) throw InvalidArgumentError("signed_distance_stats: no samples");
+    if (n == 0) throw InvalidArgumentError("signed_distance_stats: no samples");
     SignedDistanceStats r;
-    r.min = s[0];
-    r.max = s[0];
+    r.min = f(0);
+    r.max = r.min;
     Sum sum, sum2;
-    for (double x : s) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = f(i);
         r.min = std::min(r.min, x);
         r.max = std::max(r.max, x);
         sum.add(x);
         sum2.add(x * x);
     }
-    r.mean = sum.value() / double(s.size());
-    r.rms = std::sqrt(sum2.value() / double(s.size()));
+    r.mean = sum.value() / double(n);
+    r.rms = std::sqrt(sum2.value() / double(n));
     return r;
+}
+
+}  // namespace
+
+SignedDistanceStats signed_distance_stats(const std::vector<double>& s)
+{
+    return signed_stats_of(s.size(), [&](std::size_t i) { return s[i]; });
 }
 
 namespace {
@@ -270,13 +282,13 @@ struct Target
     const PseudoNormals* normals;  // null: no sign
 };
 
-// The samples of \p from and their distances to \p to (and their signed
-// distances when to.normals is set).
+// The samples of \p from and their distances to \p to, and when to.normals is
+// set the signs of the distances in \p signs (-1, 0, +1; one byte a sample).
 // With \p vertex_closest (the closest points of all vertices of \p from), the
 // vertex samples take their distances from it instead of new queries (the
 // same values: the queries are exact).
 SampledDirection sampled_direction(const Mesh& from, const Target& to, const SamplingOptions& options,
-                                   const std::vector<ClosestPoint>* vertex_closest = nullptr)
+                                   const std::vector<ClosestPoint>* vertex_closest, std::vector<std::int8_t>& signs)
 {
     SampledDirection d;
     d.samples = sample_surface(from, options);
@@ -285,20 +297,27 @@ SampledDirection sampled_direction(const Mesh& from, const Target& to, const Sam
     const std::size_t n = d.samples.size();
     const std::size_t nv = vertex_closest ? d.samples.n_vertex : 0;  // the vertex samples come first
     d.distances.resize(n);
-    std::vector<std::uint32_t> faces(to.normals ? n : 0);
+    signs.assign(to.normals ? n : 0, 0);
     for (std::size_t i = 0; i < nv; ++i) {
         const ClosestPoint& c = (*vertex_closest)[d.samples.element[i]];
         d.distances[i] = c.distance;
-        if (to.normals) faces[i] = c.face;
+        if (to.normals && c.distance > 0.0)
+            signs[i] = std::int8_t(distance_sign(to.mesh, *to.normals, d.samples.points[i], c.face));
     }
-    if (to.normals) {
-        to.index.distances(d.samples.points.data() + nv, n - nv, d.distances.data() + nv, faces.data() + nv);
-        d.signed_distances =
-            signed_distances(to.mesh, *to.normals, d.samples.points.data(), d.distances.data(), faces.data(), n);
-    } else {
-        to.index.distances(d.samples.points.data() + nv, n - nv, d.distances.data() + nv);
-    }
+    const Vec3* rest = d.samples.points.data() + nv;
+    if (to.normals)
+        signed_query(to.mesh, to.index, *to.normals, rest, n - nv, d.distances.data() + nv, signs.data() + nv);
+    else
+        to.index.distances(rest, n - nv, d.distances.data() + nv);
     return d;
+}
+
+// The signed distances: sign x distance (0 where the sign is 0).
+std::vector<double> apply_signs(const std::vector<double>& distances, const std::vector<std::int8_t>& signs)
+{
+    std::vector<double> s(distances.size());
+    for (std::size_t i = 0; i < s.size(); ++i) s[i] = signs[i] == 0 ? 0.0 : double(signs[i]) * distances[i];
+    return s;
 }
 
 // The seed of a certified Hausdorff distance: the sampled maximum of \p s,
@@ -349,42 +368,46 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         const ClosestPointIndex index(to);
         // The sign (signed_distance.h): from the closest faces of the same queries.
         std::string unavailable;
-        const std::optional<PseudoNormals> normals = pseudo_normals(to, to_name, &unavailable);
+        std::optional<PseudoNormals> normals = pseudo_normals(to, to_name, &unavailable);
         const Target target{to, index, normals ? &*normals : nullptr};
         std::vector<ClosestPoint> vq;  // from's vertices: samples and certification
         if (certify) vq = index.closest_points(from.points);
-        SampledDirection d = sampled_direction(from, target, opt, certify ? &vq : nullptr);
+        std::vector<std::int8_t> signs;
+        SampledDirection d = sampled_direction(from, target, opt, certify ? &vq : nullptr, signs);
         stats = distance_stats(d.samples, d.distances);
         if (normals) {
-            stats.signed_distance = signed_distance_stats(d.signed_distances);
+            stats.signed_distance = signed_stats_of(
+                signs.size(), [&](std::size_t i) { return signs[i] == 0 ? 0.0 : double(signs[i]) * d.distances[i]; });
             stats.signed_distance->flipped = normals->flipped;
         } else {
             stats.signed_unavailable = unavailable;
         }
         summarize(stats, from, d, within);
-        if (keep) *keep = std::move(d);
+        if (keep) {
+            if (normals) d.signed_distances = apply_signs(d.distances, signs);
+            *keep = std::move(d);
+        }
         d = SampledDirection{};  // free the samples before the certification
+        signs = {};
         if (vertex_distance) {
+            const std::size_t nv = from.points.size();
+            std::vector<std::int8_t> vsigns(normals ? nv : 0, 0);
             if (certify) {
-                vertex_distance->resize(vq.size());
-                std::vector<std::uint32_t> faces(vq.size());
-                for (std::size_t v = 0; v < vq.size(); ++v) {
+                vertex_distance->resize(nv);
+                for (std::size_t v = 0; v < nv; ++v) {
                     (*vertex_distance)[v] = vq[v].distance;
-                    faces[v] = vq[v].face;
+                    if (normals && vq[v].distance > 0.0)
+                        vsigns[v] = std::int8_t(distance_sign(to, *normals, from.points[v], vq[v].face));
                 }
-                if (normals)
-                    *vertex_signed = signed_distances(to, *normals, from.points.data(), vertex_distance->data(),
-                                                      faces.data(), vq.size());
             } else if (normals) {
-                vertex_distance->resize(from.points.size());
-                std::vector<std::uint32_t> faces(from.points.size());
-                index.distances(from.points.data(), from.points.size(), vertex_distance->data(), faces.data());
-                *vertex_signed = signed_distances(to, *normals, from.points.data(), vertex_distance->data(),
-                                                  faces.data(), faces.size());
+                vertex_distance->resize(nv);
+                signed_query(to, index, *normals, from.points.data(), nv, vertex_distance->data(), vsigns.data());
             } else {
                 *vertex_distance = vertex_distances(from, index);
             }
+            if (normals) *vertex_signed = apply_signs(*vertex_distance, vsigns);
         }
+        normals.reset();  // free the pseudo-normals before the certification
         if (certify) certified = detail::certified_hausdorff(from, to, index, *certify, seed_of(from, stats), vq);
     };
     SurfaceDistance r;
@@ -405,7 +428,8 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
 DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options)
 {
     const Mesh none;
-    const SampledDirection d = sampled_direction(from, Target{none, to, nullptr}, options);
+    std::vector<std::int8_t> signs;
+    const SampledDirection d = sampled_direction(from, Target{none, to, nullptr}, options, nullptr, signs);
     return distance_stats(d.samples, d.distances);
 }
 
@@ -436,9 +460,9 @@ std::vector<double> vertex_distances(const Mesh& from, const Mesh& to, const Clo
     const std::optional<PseudoNormals> normals = pseudo_normals(to, to_name);
     if (!normals) return index.distances(from.points);
     std::vector<double> d(from.points.size());
-    std::vector<std::uint32_t> faces(d.size());
-    index.distances(from.points.data(), d.size(), d.data(), faces.data());
-    signed_out = signed_distances(to, *normals, from.points.data(), d.data(), faces.data(), d.size());
+    std::vector<std::int8_t> signs(d.size());
+    signed_query(to, index, *normals, from.points.data(), d.size(), d.data(), signs.data());
+    signed_out = apply_signs(d, signs);
     return d;
 }
 

@@ -64,8 +64,9 @@ VertexMap distance_map(const Comparison& c, MapSide side, std::optional<std::pai
                         b.closest_point.z(), b.closest_face));
     }
     if (sd.size() == d.size())
-        m.comments.push_back("signed_distance: positive outside the surface of the other mesh, negative inside "
-                             "(angle-weighted pseudo-normals)");
+        m.comments.push_back(
+            "signed_distance: positive outside the surface of the other mesh, negative inside "
+            "(angle-weighted pseudo-normals)");
     else
         m.comments.push_back("no signed_distance: the other mesh cannot be signed against (see the report)");
     return m;

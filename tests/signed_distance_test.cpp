@@ -260,8 +260,8 @@ TEST(SignedDistance, SharpEdgeWherePseudoNormalIsRightAndFaceNormalWrong)
     const ClosestPoint c = closest_point_brute_force(m, p);
     for (std::uint32_t f : {0u, 1u}) {
         const Face& t = m.faces[f];
-        const ClosestFeature cf = closest_feature(p, m.points[std::size_t(t[0])], m.points[std::size_t(t[1])],
-                                                  m.points[std::size_t(t[2])]);
+        const ClosestFeature cf =
+            closest_feature(p, m.points[std::size_t(t[0])], m.points[std::size_t(t[1])], m.points[std::size_t(t[2])]);
         EXPECT_EQ(cf.kind, FeatureKind::Edge);
         EXPECT_NEAR((p - cf.point).norm(), c.distance, 1e-15);  // both faces tie
         EXPECT_EQ(distance_sign(m, *n, p, f), 1);
@@ -337,9 +337,14 @@ TEST(SignedDistance, SignAgreesWithWindingNumber)
             if (index.closest_point(p).distance > 1e-3 * diag) q.push_back(p);
         }
         std::vector<double> d(q.size());
-        std::vector<std::uint32_t> faces(q.size());
-        index.distances(q.data(), q.size(), d.data(), faces.data());
+        std::vector<std::int8_t> signs(q.size());
+        signed_query(m, index, *n, q.data(), q.size(), d.data(), signs.data());
+        EXPECT_EQ(d, index.distances(q));  // bit for bit the unsigned query
+        // The same signs from the closest faces of closest_points().
+        std::vector<std::uint32_t> faces;
+        for (const ClosestPoint& c : index.closest_points(q)) faces.push_back(c.face);
         const std::vector<double> s = signed_distances(m, *n, q.data(), d.data(), faces.data(), q.size());
+        for (std::size_t i = 0; i < q.size(); ++i) EXPECT_EQ(s[i], signs[i] * d[i]);
         int inside = 0;
         for (std::size_t i = 0; i < q.size(); ++i) {
             double w = winding_number(m, q[i]);
@@ -413,9 +418,10 @@ TEST(SignedDistance, TextReportLine)
     const Comparison c = compare_meshes(sphere, hemi, o);
     const std::string t = comparison_text(c);
     EXPECT_NE(t.find("  signed: unavailable, the processed mesh has "), std::string::npos) << t;
-    EXPECT_NE(t.find(fmt::format("  signed (positive outside M1): min {:.6g}, max {:.6g}, mean {:.6g}, RMS {:.6g}\n",
-                                 c.distance->backward.signed_distance->min, c.distance->backward.signed_distance->max,
-                                 c.distance->backward.signed_distance->mean, c.distance->backward.signed_distance->rms)),
-              std::string::npos)
+    EXPECT_NE(
+        t.find(fmt::format("  signed (positive outside M1): min {:.6g}, max {:.6g}, mean {:.6g}, RMS {:.6g}\n",
+                           c.distance->backward.signed_distance->min, c.distance->backward.signed_distance->max,
+                           c.distance->backward.signed_distance->mean, c.distance->backward.signed_distance->rms)),
+        std::string::npos)
         << t;
 }

@@ -48,7 +48,7 @@ struct CompareOptions
     //! area-weighted means, Chamfer and PSNR are always computed).
     SummaryOptions summary{};
     //! Keep the samples of both directions and their distances
-    //! (Comparison::forward_samples, backward_samples; about 40 bytes per
+    //! (Comparison::forward_samples, backward_samples; about 50 bytes per
     //! sample and direction), e.g. for sample_cloud.h.
     bool keep_samples = false;
 };

@@ -27,6 +27,7 @@
 //! the nearest sheet.
 #pragma once
 
+#include "meshdiff/closest_point.h"
 #include "meshdiff/mesh.h"
 #include "meshdiff/point_triangle.h"
 
@@ -41,8 +42,8 @@ namespace meshdiff {
 //! The feature of a triangle (a, b, c) holding a closest point.
 enum class FeatureKind : std::uint8_t
 {
-    Vertex,  //!< corner `index` (0: a, 1: b, 2: c)
-    Edge,    //!< edge `index` from corner index to corner (index + 1) mod 3
+    Vertex,    //!< corner `index` (0: a, 1: b, 2: c)
+    Edge,      //!< edge `index` from corner index to corner (index + 1) mod 3
     Interior,  //!< the interior of the face (index 0)
 };
 
@@ -61,19 +62,22 @@ struct ClosestFeature
 ClosestFeature closest_feature(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 //! The pseudo-normals of a closed, oriented mesh, outward (not normalised:
-//! only their directions matter).
+//! only their directions matter). The pseudo-normal of the edge from corner k
+//! to corner k + 1 of face f is face[f] + face[opposite[3 f + k] / 3].
 struct PseudoNormals
 {
-    std::vector<Vec3> face;                  //!< unit face normals, per face
-    std::vector<std::array<Vec3, 3>> edge;   //!< per face and edge slot k (corners k, k+1): sum of the two unit normals
-    std::vector<Vec3> vertex;                //!< per vertex: sum of angle x unit normal over its faces
-    bool flipped = false;                    //!< the mesh was oriented inwards and is used flipped
-    double volume = 0.0;                     //!< signed volume of the mesh as given
+    std::vector<Vec3> face;               //!< unit face normals, per face
+    std::vector<std::uint32_t> opposite;  //!< per half-edge 3 f + k: the opposite half-edge 3 g + j
+    std::vector<Vec3> vertex;             //!< per vertex: sum of angle x unit normal over its faces
+    bool flipped = false;                 //!< the mesh was oriented inwards and is used flipped
+    double volume = 0.0;                  //!< signed volume of the mesh as given
 };
 
-//! Why \p mesh cannot be signed against, naming the condition and its count
-//! ("12 boundary edges"), or the empty string if it can. \p name (e.g. "the
-//! original mesh") starts the sentence.
+//! Why \p mesh cannot be signed against, naming the conditions and their
+//! counts ("12 boundary edges"), or the empty string if it can (a zero volume
+//! is pseudo_normals()'s to find). \p name (e.g. "the original mesh") starts
+//! the sentence. The counts are topology_report()'s; non-manifold vertices
+//! are counted only when the edges are closed, manifold and consistent.
 std::string sign_unavailable_reason(const Mesh& mesh, const std::string& name);
 
 //! The pseudo-normals of \p mesh, or std::nullopt with \p reason set
@@ -91,6 +95,12 @@ int distance_sign(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p,
 //! in parallel, the same for any number of threads.
 std::vector<double> signed_distances(const Mesh& mesh, const PseudoNormals& normals, const Vec3* queries,
                                      const double* distances, const std::uint32_t* faces, std::size_t n);
+
+//! The distances of \p queries[0, n) to \p mesh (indexed by \p index) into
+//! \p distances, bit for bit ClosestPointIndex::distances(), and their signs
+//! (-1, 0, +1; distance_sign()) into \p signs, from the same queries.
+void signed_query(const Mesh& mesh, const ClosestPointIndex& index, const PseudoNormals& normals, const Vec3* queries,
+                  std::size_t n, double* distances, std::int8_t* signs);
 
 //! Inside test by the generalised winding number (sum of the solid angles of
 //! the faces, Van Oosterom and Strackee's formula, / 4 pi): about 1 inside a

@@ -299,7 +299,7 @@ struct SampledSurfaceDistance
     SampledDirection backward;  //!< samples on B, distances to A
 };
 
-//! surface_distance() keeping every sample and its distance (about 40 bytes
+//! surface_distance() keeping every sample and its distance (about 50 bytes
 //! per sample and direction). Same arguments, conventions and exceptions.
 SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options = {},
                                                 const SummaryOptions& summary = {});

@@ -130,8 +130,9 @@ std::string stats_text(const std::string& title, const DistanceStats& s, double 
     for (const auto& [name, v] : rows) out += fmt::format("  {:>5} {:>14.6g} {:>14.6g}\n", name, v, v / diag);
     if (s.signed_distance) {
         const SignedDistanceStats& g = *s.signed_distance;
-        out += fmt::format("  signed (positive outside {}{}): min {:.6g}, max {:.6g}, mean {:.6g}, RMS {:.6g}\n", target,
-                           g.flipped ? ", its orientation flipped to outward" : "", g.min, g.max, g.mean, g.rms);
+        out +=
+            fmt::format("  signed (positive outside {}{}): min {:.6g}, max {:.6g}, mean {:.6g}, RMS {:.6g}\n", target,
+                        g.flipped ? ", its orientation flipped to outward" : "", g.min, g.max, g.mean, g.rms);
     } else {
         out += fmt::format("  signed: unavailable, {}\n", s.signed_unavailable);
     }
