@@ -134,19 +134,30 @@ SignFacts sign_facts(const Mesh& mesh)
             if (u == v) continue;  // a repeated corner: no edge (topology.h)
             const std::size_t self = 3 * f + k;
             std::size_t same = 0, opp = 0, first = self, opposite = kNone;
-            for (auto g = vf.begin(u); g != vf.end(u); ++g) {
+            // The other half-edges of {u, v}, from the faces around the end of
+            // lower degree (a hub of degree D then costs O(D), not O(D^2)).
+            auto found = [&](std::size_t h, bool same_direction) {
+                if (h == self) return;
+                if (same_direction) {
+                    ++same;
+                } else {
+                    ++opp;
+                    opposite = h;
+                }
+                first = std::min(first, h);
+            };
+            const bool at_u = vf.degree(u) <= vf.degree(v);
+            const std::uint32_t w = at_u ? u : v;
+            const std::uint32_t x = at_u ? v : u;
+            for (auto g = vf.begin(w); g != vf.end(w); ++g) {
                 const Face& s = mesh.faces[*g];
                 for (std::size_t j = 0; j < 3; ++j) {
-                    if (std::uint32_t(s[j]) != u || 3 * std::size_t(*g) + j == self) continue;
-                    if (std::uint32_t(s[(j + 1) % 3]) == v) {  // u -> v again
-                        ++same;
-                        first = std::min(first, 3 * std::size_t(*g) + j);
-                    }
-                    if (std::uint32_t(s[(j + 2) % 3]) == v) {  // v -> u: half-edge (j + 2) mod 3 of g
-                        ++opp;
-                        opposite = 3 * std::size_t(*g) + (j + 2) % 3;
-                        first = std::min(first, opposite);
-                    }
+                    if (std::uint32_t(s[j]) != w) continue;
+                    const std::size_t out = 3 * std::size_t(*g) + j;           // w -> s[j + 1]
+                    const std::size_t in = 3 * std::size_t(*g) + (j + 2) % 3;  // s[j + 2] -> w
+                    // At u: u -> v is the same direction, v -> u the opposite; at v the reverse.
+                    if (std::uint32_t(s[(j + 1) % 3]) == x) found(out, at_u);
+                    if (std::uint32_t(s[(j + 2) % 3]) == x) found(in, !at_u);
                 }
             }
             if (opp == 1 && same == 0) r.opposite[self] = std::uint32_t(opposite);

@@ -425,3 +425,49 @@ TEST(SignedDistance, TextReportLine)
         std::string::npos)
         << t;
 }
+
+// A closed double cone whose two apexes have valence 200,000: the checks and
+// the pseudo-normals cost O(valence) there, not O(valence^2) (this test would
+// not finish otherwise), and the signs are right.
+TEST(SignedDistance, HubVerticesOfAClosedDoubleCone)
+{
+    constexpr int n = 200000;
+    Mesh m;
+    m.points.emplace_back(0, 0, 1);
+    m.points.emplace_back(0, 0, -1);
+    for (int i = 0; i < n; ++i) {
+        const double a = 2 * 3.14159265358979323846 * i / n;
+        m.points.emplace_back(std::cos(a), std::sin(a), 0.0);
+    }
+    for (int i = 0; i < n; ++i) {
+        const int p = 2 + i, q = 2 + (i + 1) % n;
+        m.faces.push_back({0, p, q});
+        m.faces.push_back({1, q, p});
+    }
+    std::string why;
+    const auto normals = pseudo_normals(m, "the cone", &why);
+    ASSERT_TRUE(normals) << why;
+    EXPECT_FALSE(normals->flipped);
+    const ClosestPointIndex index(m);
+    for (const auto& [p, sign] : {std::pair{Vec3(0, 0, 1.5), 1},
+                                  {Vec3(0, 0, -1.2), 1},
+                                  {Vec3(0.1, 0.2, 0.3), -1},
+                                  {Vec3(2, 0, 0), 1},
+                                  {Vec3(0, 0, 0.9), -1}}) {
+        const ClosestPoint c = index.closest_point(p);
+        EXPECT_EQ(distance_sign(m, *normals, p, c.face), sign) << p.transpose();
+    }
+    // Glue a third cone sheet on the apex: a non-manifold vertex, named.
+    Mesh pinched = m;
+    const auto base = std::int32_t(pinched.points.size());
+    pinched.points.emplace_back(0, 0, 2);
+    pinched.points.emplace_back(1, 0, 2);
+    pinched.points.emplace_back(0, 1, 2);
+    pinched.points.emplace_back(0, 0, 3);
+    pinched.faces.push_back({0, base + 1, base + 2});
+    pinched.faces.push_back({0, base + 2, base + 3});
+    pinched.faces.push_back({0, base + 3, base + 1});
+    pinched.faces.push_back({base + 1, base + 3, base + 2});
+    EXPECT_NE(sign_unavailable_reason(pinched, "M").find("has 1 non-manifold vertex"), std::string::npos)
+        << sign_unavailable_reason(pinched, "M");
+}
