@@ -442,6 +442,8 @@ py::dict direction_dict(const nlohmann::json& stats, const SampledDirection& d)
     const SurfaceSamples& s = d.samples;
     out["points"] = points_array(s.points);
     out["distances"] = vector_array(d.distances);
+    // Positive outside the other surface; None when it cannot be signed against.
+    out["signed_distances"] = d.signed_distances.empty() ? py::object(py::none()) : vector_array(d.signed_distances);
     py::array_t<std::uint8_t> kinds(py::ssize_t(s.size()));
     py::array_t<std::int64_t> elements(py::ssize_t(s.size()));
     for (std::size_t i = 0; i < s.size(); ++i) {
@@ -901,8 +903,9 @@ of both maxima), diagonal, metro_diagonal, sampling.
 With return_samples=True, forward and backward also hold the samples behind the
 statistics: points (k, 3) float64, distances (k,) float64 (exact distance to
 the other surface), kinds (k,) uint8 (0 vertex, 1 edge, 2 face: see
-SAMPLE_KINDS) and elements (k,) int64 (the vertex, a face of the edge, or the
-face sampled). The statistics are the same bit for bit.
+SAMPLE_KINDS), elements (k,) int64 (the vertex, a face of the edge, or the
+face sampled) and signed_distances (k,) float64 (positive outside the other
+surface; None when "signed" is None). The statistics are the same bit for bit.
 )doc";
 
 constexpr const char* kVertexDistancesDoc =

@@ -537,6 +537,19 @@ void ClosestPointIndex::distances(const Vec3* queries, std::size_t n, double* ou
     });
 }
 
+void ClosestPointIndex::distances(const Vec3* queries, std::size_t n, double* out,
+                                  const std::function<void(std::size_t, const ClosestPoint&)>& visit) const
+{
+    const Impl& impl = *impl_;
+    for_blocks(n, [&](std::size_t i, std::uint32_t hint) {
+        std::uint32_t hit = kNoFace;
+        const ClosestPoint c = impl.query(queries[i], hint, &hit);
+        out[i] = c.distance;
+        visit(i, c);
+        return hit;
+    });
+}
+
 double ClosestPointIndex::hull_distance_bound(const std::array<Vec3, 3>& corners, double good_enough,
                                               std::uint32_t* face) const
 {

@@ -93,9 +93,15 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         c.distance->b_vertex_distance.clear();
         c.original_vertex_distance = std::move(c.distance->a_vertex_distance);
         c.distance->a_vertex_distance.clear();
+        c.processed_vertex_signed_distance = std::move(c.distance->b_vertex_signed_distance);
+        c.distance->b_vertex_signed_distance.clear();
+        c.original_vertex_signed_distance = std::move(c.distance->a_vertex_signed_distance);
+        c.distance->a_vertex_signed_distance.clear();
     } else if (options.vertex_distances) {
-        c.processed_vertex_distance = vertex_distances(b.mesh, ClosestPointIndex(a.mesh));
-        c.original_vertex_distance = vertex_distances(a.mesh, ClosestPointIndex(b.mesh));
+        c.processed_vertex_distance =
+            vertex_distances(b.mesh, a.mesh, ClosestPointIndex(a.mesh), c.processed_vertex_signed_distance);
+        c.original_vertex_distance =
+            vertex_distances(a.mesh, b.mesh, ClosestPointIndex(b.mesh), c.original_vertex_signed_distance);
     }
     c.same_connectivity = same_connectivity(a.mesh, b.mesh, &c.same_connectivity_unavailable);
     c.original = facts_a.get();

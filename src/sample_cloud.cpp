@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <limits>
 
 namespace meshdiff {
 
@@ -26,7 +27,8 @@ std::vector<std::int32_t> first_face_of_vertex(const Mesh& m)
 void check(const char* name, const Mesh& m, const SampledDirection& d)
 {
     const SurfaceSamples& s = d.samples;
-    if (d.distances.size() != s.size() || s.kind.size() != s.size() || s.element.size() != s.size())
+    if (d.distances.size() != s.size() || s.kind.size() != s.size() || s.element.size() != s.size() ||
+        (!d.signed_distances.empty() && d.signed_distances.size() != s.size()))
         throw InvalidArgumentError(
             fmt::format("write_sample_cloud: {} direction has {} samples, {} distances, {} "
                         "kinds and {} elements",
@@ -60,16 +62,24 @@ void write_sample_cloud(const std::filesystem::path& path, const Mesh& a, const 
         };
         if (has_points(forward) || has_points(backward))
             out << "comment kind 3 = point of a point cloud (face -1; the points of a cloud are its samples)\n";
+        out << "comment signed_distance: positive outside the other surface, negative inside, 0 on it "
+               "(angle-weighted pseudo-normals)\n";
+        for (const auto& [name, d] : {std::pair{"forward", &forward}, {"backward", &backward}})
+            if (d->signed_distances.empty())
+                out << "comment signed_distance is NaN in the " << name
+                    << " direction: its other surface cannot be signed against\n";
         for (std::string c : comments) {
             std::replace_if(
                 c.begin(), c.end(), [](char ch) { return ch == '\n' || ch == '\r'; }, ' ');
             out << "comment " << c << "\n";
         }
         out << "element vertex " << forward.samples.size() + backward.samples.size() << "\n";
-        out << "property double x\nproperty double y\nproperty double z\nproperty double distance\n";
+        out << "property double x\nproperty double y\nproperty double z\nproperty double distance\n"
+               "property double signed_distance\n";
         out << "property uchar kind\nproperty uchar direction\nproperty int face\nend_header\n";
         static_assert(sizeof(double) == 8 && sizeof(std::int32_t) == 4, "PLY types");
         std::uint8_t direction = 0;
+        const double nan = std::numeric_limits<double>::quiet_NaN();
         for (const auto& [mesh, d] : {std::pair{&a, &forward}, {&b, &backward}}) {
             const std::vector<std::int32_t> first = first_face_of_vertex(*mesh);
             const SurfaceSamples& s = d->samples;
@@ -78,13 +88,15 @@ void write_sample_cloud(const std::filesystem::path& path, const Mesh& a, const 
             for (std::size_t i = 0; i < s.size(); ++i) {
                 std::memcpy(p, s.points[i].data(), 24);
                 std::memcpy(p + 24, &d->distances[i], 8);
+                const double sd = d->signed_distances.empty() ? nan : d->signed_distances[i];
+                std::memcpy(p + 32, &sd, 8);
                 const auto kind = std::uint8_t(s.kind[i]);
                 const std::int32_t face = s.kind[i] == SampleKind::OnVertex  ? first[s.element[i]]
                                           : s.kind[i] == SampleKind::OnPoint ? -1
                                                                              : std::int32_t(s.element[i]);
-                std::memcpy(p + 32, &kind, 1);
-                std::memcpy(p + 33, &direction, 1);
-                std::memcpy(p + 34, &face, 4);
+                std::memcpy(p + 40, &kind, 1);
+                std::memcpy(p + 41, &direction, 1);
+                std::memcpy(p + 42, &face, 4);
                 p += kSampleCloudStride;
             }
             out.write(buf.data(), std::streamsize(buf.size()));

@@ -1,6 +1,7 @@
 #include "meshdiff/surface_distance.h"
 
 #include "meshdiff/error.h"
+#include "meshdiff/signed_distance.h"
 
 #include "detail/compensated_sum.h"
 #include "detail/hausdorff.h"
@@ -242,26 +243,81 @@ DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<do
 
 namespace {
 
-// The samples of \p from and their distances to \p to.
+// The signed statistics of x_i = f(i), i < n (sequential sums in index order).
+template <class F>
+SignedDistanceStats signed_stats_of(std::size_t n, F&& f)
+{
+    if (n == 0) throw InvalidArgumentError("signed_distance_stats: no samples");
+    SignedDistanceStats r;
+    r.min = f(0);
+    r.max = r.min;
+    Sum sum, sum2;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = f(i);
+        r.min = std::min(r.min, x);
+        r.max = std::max(r.max, x);
+        sum.add(x);
+        sum2.add(x * x);
+    }
+    r.mean = sum.value() / double(n);
+    r.rms = std::sqrt(sum2.value() / double(n));
+    return r;
+}
+
+}  // namespace
+
+SignedDistanceStats signed_distance_stats(const std::vector<double>& s)
+{
+    return signed_stats_of(s.size(), [&](std::size_t i) { return s[i]; });
+}
+
+namespace {
+
+// The surface a direction measures to, with its pseudo-normals when it can be
+// signed against.
+struct Target
+{
+    const Mesh& mesh;
+    const ClosestPointIndex& index;
+    const PseudoNormals* normals;  // null: no sign
+};
+
+// The samples of \p from and their distances to \p to, and when to.normals is
+// set the signs of the distances in \p signs (-1, 0, +1; one byte a sample).
 // With \p vertex_closest (the closest points of all vertices of \p from), the
 // vertex samples take their distances from it instead of new queries (the
 // same values: the queries are exact).
-SampledDirection sampled_direction(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options,
-                                   const std::vector<ClosestPoint>* vertex_closest = nullptr)
+SampledDirection sampled_direction(const Mesh& from, const Target& to, const SamplingOptions& options,
+                                   const std::vector<ClosestPoint>* vertex_closest, std::vector<std::int8_t>& signs)
 {
     SampledDirection d;
     d.samples = sample_surface(from, options);
     if (d.samples.size() == 0)
         throw InvalidArgumentError("SamplingOptions: the enabled sample kinds give no sample on this mesh");
-    if (!vertex_closest) {
-        d.distances = to.distances(d.samples.points);
-        return d;
+    const std::size_t n = d.samples.size();
+    const std::size_t nv = vertex_closest ? d.samples.n_vertex : 0;  // the vertex samples come first
+    d.distances.resize(n);
+    signs.assign(to.normals ? n : 0, 0);
+    for (std::size_t i = 0; i < nv; ++i) {
+        const ClosestPoint& c = (*vertex_closest)[d.samples.element[i]];
+        d.distances[i] = c.distance;
+        if (to.normals && c.distance > 0.0)
+            signs[i] = std::int8_t(distance_sign(to.mesh, *to.normals, d.samples.points[i], c.face));
     }
-    const std::size_t nv = d.samples.n_vertex;  // the vertex samples come first
-    d.distances.resize(d.samples.size());
-    for (std::size_t i = 0; i < nv; ++i) d.distances[i] = (*vertex_closest)[d.samples.element[i]].distance;
-    to.distances(d.samples.points.data() + nv, d.samples.size() - nv, d.distances.data() + nv);
+    const Vec3* rest = d.samples.points.data() + nv;
+    if (to.normals)
+        signed_query(to.mesh, to.index, *to.normals, rest, n - nv, d.distances.data() + nv, signs.data() + nv);
+    else
+        to.index.distances(rest, n - nv, d.distances.data() + nv);
     return d;
+}
+
+// The signed distances: sign x distance (0 where the sign is 0).
+std::vector<double> apply_signs(const std::vector<double>& distances, const std::vector<std::int8_t>& signs)
+{
+    std::vector<double> s(distances.size());
+    for (std::size_t i = 0; i < s.size(); ++i) s[i] = signs[i] == 0 ? 0.0 : double(signs[i]) * distances[i];
+    return s;
 }
 
 // The seed of a certified Hausdorff distance: the sampled maximum of \p s,
@@ -306,32 +362,59 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
     };
 
     // One direction: samples on `from`, exact distances to `to`.
-    auto direction = [&](const Mesh& from, const Mesh& to, DistanceStats& stats, std::vector<double>& within,
-                         SampledDirection* keep, std::vector<double>* vertex_distance,
-                         std::optional<CertifiedHausdorff>& certified) {
+    auto direction = [&](const Mesh& from, const Mesh& to, const char* to_name, DistanceStats& stats,
+                         std::vector<double>& within, SampledDirection* keep, std::vector<double>* vertex_distance,
+                         std::vector<double>* vertex_signed, std::optional<CertifiedHausdorff>& certified) {
         const ClosestPointIndex index(to);
+        // The sign (signed_distance.h): from the closest faces of the same queries.
+        std::string unavailable;
+        std::optional<PseudoNormals> normals = pseudo_normals(to, to_name, &unavailable);
+        const Target target{to, index, normals ? &*normals : nullptr};
         std::vector<ClosestPoint> vq;  // from's vertices: samples and certification
         if (certify) vq = index.closest_points(from.points);
-        SampledDirection d = sampled_direction(from, index, opt, certify ? &vq : nullptr);
+        std::vector<std::int8_t> signs;
+        SampledDirection d = sampled_direction(from, target, opt, certify ? &vq : nullptr, signs);
         stats = distance_stats(d.samples, d.distances);
+        if (normals) {
+            stats.signed_distance = signed_stats_of(
+                signs.size(), [&](std::size_t i) { return signs[i] == 0 ? 0.0 : double(signs[i]) * d.distances[i]; });
+            stats.signed_distance->flipped = normals->flipped;
+        } else {
+            stats.signed_unavailable = unavailable;
+        }
         summarize(stats, from, d, within);
-        if (keep) *keep = std::move(d);
+        if (keep) {
+            if (normals) d.signed_distances = apply_signs(d.distances, signs);
+            *keep = std::move(d);
+        }
         d = SampledDirection{};  // free the samples before the certification
+        signs = {};
         if (vertex_distance) {
+            const std::size_t nv = from.points.size();
+            std::vector<std::int8_t> vsigns(normals ? nv : 0, 0);
             if (certify) {
-                vertex_distance->resize(vq.size());
-                for (std::size_t v = 0; v < vq.size(); ++v) (*vertex_distance)[v] = vq[v].distance;
+                vertex_distance->resize(nv);
+                for (std::size_t v = 0; v < nv; ++v) {
+                    (*vertex_distance)[v] = vq[v].distance;
+                    if (normals && vq[v].distance > 0.0)
+                        vsigns[v] = std::int8_t(distance_sign(to, *normals, from.points[v], vq[v].face));
+                }
+            } else if (normals) {
+                vertex_distance->resize(nv);
+                signed_query(to, index, *normals, from.points.data(), nv, vertex_distance->data(), vsigns.data());
             } else {
                 *vertex_distance = vertex_distances(from, index);
             }
+            if (normals) *vertex_signed = apply_signs(*vertex_distance, vsigns);
         }
+        normals.reset();  // free the pseudo-normals before the certification
         if (certify) certified = detail::certified_hausdorff(from, to, index, *certify, seed_of(from, stats), vq);
     };
     SurfaceDistance r;
-    direction(a, b, r.forward, recall, forward, b_vertex_distances ? &r.a_vertex_distance : nullptr,
-              r.forward_hausdorff);
-    direction(b, a, r.backward, precision, backward, b_vertex_distances ? &r.b_vertex_distance : nullptr,
-              r.backward_hausdorff);
+    direction(a, b, "the processed mesh", r.forward, recall, forward,
+              b_vertex_distances ? &r.a_vertex_distance : nullptr, &r.a_vertex_signed_distance, r.forward_hausdorff);
+    direction(b, a, "the original mesh", r.backward, precision, backward,
+              b_vertex_distances ? &r.b_vertex_distance : nullptr, &r.b_vertex_signed_distance, r.backward_hausdorff);
     r.hausdorff = std::max(r.forward.max, r.backward.max);
     r.diagonal = diagonal;
     r.metro_diagonal = metro_diagonal(a, b);
@@ -344,7 +427,9 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
 
 DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options)
 {
-    const SampledDirection d = sampled_direction(from, to, options);
+    const Mesh none;
+    std::vector<std::int8_t> signs;
+    const SampledDirection d = sampled_direction(from, Target{none, to, nullptr}, options, nullptr, signs);
     return distance_stats(d.samples, d.distances);
 }
 
@@ -366,6 +451,19 @@ SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, co
 std::vector<double> vertex_distances(const Mesh& from, const ClosestPointIndex& to)
 {
     return to.distances(from.points);
+}
+
+std::vector<double> vertex_distances(const Mesh& from, const Mesh& to, const ClosestPointIndex& index,
+                                     std::vector<double>& signed_out, const std::string& to_name)
+{
+    signed_out.clear();
+    const std::optional<PseudoNormals> normals = pseudo_normals(to, to_name);
+    if (!normals) return index.distances(from.points);
+    std::vector<double> d(from.points.size());
+    std::vector<std::int8_t> signs(d.size());
+    signed_query(to, index, *normals, from.points.data(), d.size(), d.data(), signs.data());
+    signed_out = apply_signs(d, signs);
+    return d;
 }
 
 double metro_diagonal(const Mesh& a, const Mesh& b)

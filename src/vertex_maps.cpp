@@ -36,8 +36,10 @@ VertexMap distance_map(const Comparison& c, MapSide side, std::optional<std::pai
     } else {
         for (double x : d) hi = std::max(hi, x);
     }
+    const std::vector<double>& sd = processed ? c.processed_vertex_signed_distance : c.original_vertex_signed_distance;
     VertexMap m;
     m.scalars.push_back({"distance", d});
+    if (sd.size() == d.size()) m.scalars.push_back({"signed_distance", sd});
     m.colors = sequential_colors(d, lo, hi);
     m.comments = {fmt::format("per-vertex distance of {} to the surface of {}", self.input.path, other.input.path),
                   fmt::format("colour: blue (low) to red (high) over [{:.9g}, {:.9g}]", lo, hi)};
@@ -61,6 +63,12 @@ VertexMap distance_map(const Comparison& c, MapSide side, std::optional<std::pai
                         other_name, self_name, to_self.lower, to_self.upper, b.closest_point.x(), b.closest_point.y(),
                         b.closest_point.z(), b.closest_face));
     }
+    if (sd.size() == d.size())
+        m.comments.push_back(
+            "signed_distance: positive outside the surface of the other mesh, negative inside "
+            "(angle-weighted pseudo-normals)");
+    else
+        m.comments.push_back("no signed_distance: the other mesh cannot be signed against (see the report)");
     return m;
 }
 

@@ -115,7 +115,7 @@ PY
 scale_ply "$tmp/s.ply" "$tmp/big_a.ply" 0.999e30 && scale_ply "$tmp/ns.ply" "$tmp/big_b.ply" 0.999e30 &&
     scale_ply "$tmp/ns.ply" "$tmp/over.ply" 1.001e30 && pass || fail "scale_ply"
 expect_within 60 0 "$tmp/big_a.ply" "$tmp/big_b.ply" --levels 1,2 --json "$tmp/big.json"
-json_check "$tmp/big.json" 'finite(j) and [p for p in nulls(j) if p.split(".")[-1] not in ("cutoff", "density_requested", "samples_requested", "summary_unavailable", "same_connectivity_unavailable", "roughness_unavailable")] == [] and j["surface_distance"]["hausdorff"]["lower"] > 1e26 and j["surface_distance"]["psnr"]["mse_db"] > 0 and j["same_connectivity"]["displacement"]["max"] > 1e26 and j["surface_distance"]["hausdorff"]["certified"] and j["roughness_distance"]["global"]["distance"] > 0'
+json_check "$tmp/big.json" 'finite(j) and [p for p in nulls(j) if p.split(".")[-1] not in ("cutoff", "density_requested", "samples_requested", "summary_unavailable", "same_connectivity_unavailable", "roughness_unavailable", "signed_unavailable")] == [] and j["surface_distance"]["forward"]["signed"]["max"] > 1e26 and j["surface_distance"]["hausdorff"]["lower"] > 1e26 and j["surface_distance"]["psnr"]["mse_db"] > 0 and j["same_connectivity"]["displacement"]["max"] > 1e26 and j["surface_distance"]["hausdorff"]["certified"] and j["roughness_distance"]["global"]["distance"] > 0'
 expect_within 10 4 profile "$tmp/over.ply" && grep -q "over.ply: vertex [0-9]* has the coordinate .* beyond meshdiff's limit of +-1e+30" "$tmp/stderr" &&
     pass || fail "coordinate limit message"
 
@@ -278,12 +278,14 @@ header = data[:end].decode().splitlines()
 j = json.load(open(sys.argv[2]))["surface_distance"]
 n = j["forward"]["samples"] + j["backward"]["samples"]
 assert header[1] == "format binary_little_endian 1.0" and "element vertex %d" % n in header
-assert len(data) - end == 38 * n
-recs = [struct.unpack_from("<4dBBi", data, end + 38 * i) for i in range(n)]
+assert len(data) - end == 46 * n
+recs = [struct.unpack_from("<5dBBi", data, end + 46 * i) for i in range(n)]
 for direction, side in ((0, "forward"), (1, "backward")):
-    d = [r for r in recs if r[5] == direction]
+    d = [r for r in recs if r[6] == direction]
     assert len(d) == j[side]["samples"] and max(r[3] for r in d) == j[side]["max"]
-    assert [sum(r[4] == k for r in d) for k in range(3)] == [j[side]["samples_by_kind"][k] for k in ("vertex", "edge", "face")]
+    assert [sum(r[5] == k for r in d) for k in range(3)] == [j[side]["samples_by_kind"][k] for k in ("vertex", "edge", "face")]
+    # Both meshes are open: no sign, NaN in the signed column.
+    assert j[side]["signed"] is None and all(r[4] != r[4] for r in d)
 PY
 expect 2 "$tmp/fan.ply" "$tmp/pyr.ply" --no-distance --samples-out "$tmp/x.ply" &&
     grep -q -- "--samples-out" "$tmp/stderr" && [ ! -e "$tmp/x.ply" ] && pass || fail "--samples-out with --no-distance"

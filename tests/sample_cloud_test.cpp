@@ -3,10 +3,12 @@
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
 #include "meshdiff/point_triangle.h"
+#include "meshdiff/shapes.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -24,6 +26,7 @@ struct Record
 {
     Vec3 point;
     double distance;
+    double signed_distance;
     std::uint8_t kind, direction;
     std::int32_t face;
 };
@@ -46,9 +49,10 @@ std::vector<Record> read_back(const std::filesystem::path& path, std::vector<std
     for (Record& x : r) {
         std::memcpy(x.point.data(), p, 24);
         std::memcpy(&x.distance, p + 24, 8);
-        std::memcpy(&x.kind, p + 32, 1);
-        std::memcpy(&x.direction, p + 33, 1);
-        std::memcpy(&x.face, p + 34, 4);
+        std::memcpy(&x.signed_distance, p + 32, 8);
+        std::memcpy(&x.kind, p + 40, 1);
+        std::memcpy(&x.direction, p + 41, 1);
+        std::memcpy(&x.face, p + 42, 4);
         p += kSampleCloudStride;
     }
     return r;
@@ -104,6 +108,36 @@ TEST(SampleCloud, BothDirectionsReadBackWithExactDistances)
     // Forward records first, in sample order.
     EXPECT_EQ(rec[0].point, r.forward.samples.points[0]);
     EXPECT_EQ(rec[n_forward].point, r.backward.samples.points[0]);
+    // The hemisphere (the target of the forward direction) is open: no sign there, NaN, and a comment says so.
+    ASSERT_TRUE(r.forward.signed_distances.empty());
+    for (std::size_t i = 0; i < n_forward; ++i) EXPECT_TRUE(std::isnan(rec[i].signed_distance));
+    EXPECT_NE(std::find(header.begin(), header.end(),
+                        "comment signed_distance is NaN in the forward direction: its other surface cannot be "
+                        "signed against"),
+              header.end());
+    EXPECT_NE(std::find(header.begin(), header.end(), "property double signed_distance"), header.end());
+}
+
+TEST(SampleCloud, SignedDistanceColumn)
+{
+    // Two spheres, the processed one inside: forward samples outside the
+    // processed surface (+), backward ones inside the original (-).
+    const Mesh a = icosphere(2, 1.0).mesh;
+    const Mesh b = icosphere(2, 0.8).mesh;
+    SamplingOptions o;
+    o.samples = 3000;
+    const SampledSurfaceDistance r = surface_distance_samples(a, b, o);
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / "meshdiff_sample_cloud_signed.ply";
+    write_sample_cloud(path, a, r.forward, b, r.backward);
+    std::vector<std::string> header;
+    const std::vector<Record> rec = read_back(path, header);
+    std::filesystem::remove(path);
+    ASSERT_EQ(rec.size(), r.forward.samples.size() + r.backward.samples.size());
+    for (const Record& x : rec) {
+        ASSERT_GT(x.distance, 0.1);
+        EXPECT_EQ(x.signed_distance, x.direction == 0 ? x.distance : -x.distance);
+    }
+    for (const std::string& h : header) EXPECT_EQ(h.find("is NaN"), std::string::npos) << h;
 }
 
 TEST(SampleCloud, MismatchedSamplesThrow)

@@ -4,6 +4,7 @@
 
 #include "meshdiff/error.h"
 #include "meshdiff/point_triangle.h"
+#include "meshdiff/signed_distance.h"
 
 #include <unistd.h>
 
@@ -69,27 +70,48 @@ bool same_or_both_nan(double a, double b)
 TEST(DistanceMap, DistanceIsTheBruteForceDistanceOfEveryProcessedVertex)
 {
     const VertexMap m = distance_map(distance_comparison());
-    ASSERT_EQ(m.scalars.size(), 1u);
+    ASSERT_EQ(m.scalars.size(), 2u);
     EXPECT_EQ(m.scalars[0].name, "distance");
+    EXPECT_EQ(m.scalars[1].name, "signed_distance");
     const auto& d = m.scalars[0].values;
+    const auto& s = m.scalars[1].values;
     ASSERT_EQ(d.size(), ellipsoid().mesh.n_vertices());
+    ASSERT_EQ(s.size(), d.size());
+    int outside = 0;
     for (std::size_t i = 0; i < d.size(); ++i) {
-        const double want = closest_point_brute_force(sphere().mesh, ellipsoid().mesh.points[i]).distance;
+        const Vec3& p = ellipsoid().mesh.points[i];
+        const double want = closest_point_brute_force(sphere().mesh, p).distance;
         EXPECT_NEAR(d[i], want, 1e-15 * want) << i;
+        // The stretched sphere (x scaled by 1.5) is outside the unit sphere
+        // wherever it has moved (|x| > 0): the signed distance is +distance.
+        EXPECT_EQ(s[i], d[i]) << i;
+        outside += s[i] > 0.0;
     }
+    EXPECT_GT(outside, 2000);
+    EXPECT_EQ(m.comments.back().rfind("signed_distance: positive outside", 0), 0u) << m.comments.back();
 }
 
 TEST(DistanceMap, OriginalSideIsTheBruteForceDistanceOfEveryOriginalVertex)
 {
     const Comparison& c = distance_comparison();
     const VertexMap m = distance_map(c, MapSide::Original);
-    ASSERT_EQ(m.scalars.size(), 1u);
+    ASSERT_EQ(m.scalars.size(), 2u);
     const auto& d = m.scalars[0].values;
     ASSERT_EQ(d.size(), sphere().mesh.n_vertices());
+    int n_inside = 0;
     for (std::size_t i = 0; i < d.size(); ++i) {
         const double want = closest_point_brute_force(ellipsoid().mesh, sphere().mesh.points[i]).distance;
         EXPECT_NEAR(d[i], want, 1e-15 * want) << i;
+        // Signed: inside (-) or outside (+) the stretched sphere by the winding number (brute force).
+        if (d[i] > 1e-9) {
+            const bool inside = winding_number(ellipsoid().mesh, sphere().mesh.points[i]) > 0.5;
+            EXPECT_EQ(m.scalars[1].values[i], inside ? -d[i] : d[i]) << i;
+            n_inside += inside;
+        } else {
+            EXPECT_EQ(std::abs(m.scalars[1].values[i]), d[i]);
+        }
     }
+    EXPECT_GT(n_inside, 2000);
     // The comments name this side; the Hausdorff distance from the original
     // is attained at a point of it (the forward location).
     EXPECT_NE(m.comments[0].find("per-vertex distance of " + c.original.input.path), std::string::npos);
@@ -135,9 +157,9 @@ TEST(DistanceMap, DefaultRangeIsZeroToTheMaximumFromBlueToRed)
             EXPECT_EQ(m.colors[i], kBlue) << i;
         }
     EXPECT_EQ(m.colors, sequential_colors(d, 0.0, *hi));
-    // Two comments, and two more that mark where the certified Hausdorff
-    // distances are attained.
-    ASSERT_EQ(m.comments.size(), 4u);
+    // Two comments, two more that mark where the certified Hausdorff
+    // distances are attained, and the sign convention.
+    ASSERT_EQ(m.comments.size(), 5u);
     EXPECT_EQ(m.comments[2].rfind("hausdorff processed->original in [", 0), 0u) << m.comments[2];
     EXPECT_EQ(m.comments[3].rfind("hausdorff original->processed in [", 0), 0u) << m.comments[3];
     EXPECT_NE(m.comments[0].find(ellipsoid().input.path), std::string::npos) << m.comments[0];
@@ -178,6 +200,23 @@ TEST(DistanceMap, SameVertexDistancesWithoutTheSurfaceDistance)
     EXPECT_EQ(c.processed_vertex_distance, distance_comparison().processed_vertex_distance);
     EXPECT_EQ(c.original_vertex_distance, distance_comparison().original_vertex_distance);
     EXPECT_EQ(distance_map(c).scalars[0].values, distance_map(distance_comparison()).scalars[0].values);
+    EXPECT_EQ(c.processed_vertex_signed_distance, distance_comparison().processed_vertex_signed_distance);
+    EXPECT_EQ(c.original_vertex_signed_distance, distance_comparison().original_vertex_signed_distance);
+    EXPECT_EQ(distance_map(c).scalars[1].values, distance_map(distance_comparison()).scalars[1].values);
+}
+
+TEST(DistanceMap, NoSignedDistanceAgainstAnOpenMesh)
+{
+    CompareOptions o;
+    o.roughness = false;
+    o.sampling.samples = 5000;
+    o.vertex_distances = true;
+    const Comparison c = compare_meshes(sphere(), read_mesh(data("hemisphere.ply")), o);
+    const VertexMap processed = distance_map(c);  // distances to the closed sphere: signed
+    ASSERT_EQ(processed.scalars.size(), 2u);
+    const VertexMap original = distance_map(c, MapSide::Original);  // to the open hemisphere: none
+    ASSERT_EQ(original.scalars.size(), 1u);
+    EXPECT_EQ(original.comments.back().rfind("no signed_distance", 0), 0u) << original.comments.back();
 }
 
 TEST(ProfileMap, PropertiesAreHThenDPerLevelThenGlobalThenWorst)

@@ -75,9 +75,11 @@ int run_compare(const CompareArgs& a)
         if (path.empty()) continue;
         const VertexMap map = distance_map(c, side, range);
         write_ply(path, *mesh, map);
-        legend += fmt::format("Distance map of the {}: {} (vertex property 'distance' to the {} surface; {})\n",
+        const bool has_signed = map.scalars.size() > 1;
+        legend += fmt::format("Distance map of the {}: {} (vertex property 'distance' to the {} surface{}; {})\n",
                               side == MapSide::Original ? "original" : "processed", path,
-                              side == MapSide::Original ? "processed" : "original", map.comments[1]);
+                              side == MapSide::Original ? "processed" : "original",
+                              has_signed ? ", and 'signed_distance', positive outside it" : "", map.comments[1]);
     }
     if (!a.samples_out.empty())
         write_sample_cloud(a.samples_out, original.mesh, c.forward_samples, processed.mesh, c.backward_samples,
@@ -112,7 +114,7 @@ void add_compare_command(CLI::App& app, Action& action)
                     "write both maps, PREFIX_original.ply and PREFIX_processed.ply, on one colour scale");
     sub->add_option("--samples-out", args->samples_out,
                     "write the samples of both directions with their distances as a binary PLY point cloud "
-                    "(x y z distance kind direction face)");
+                    "(x y z distance signed_distance kind direction face)");
     sub->add_option("--color-range", args->color_range, "fix the distance colour range: MIN MAX")
         ->expected(2)
         ->check(in_range(-1e300, 1e300));

@@ -26,6 +26,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -68,6 +69,12 @@ public:
 
     //! The same for the \p n queries at \p queries, written to \p out[0, n).
     void distances(const Vec3* queries, std::size_t n, double* out) const;
+
+    //! The same, calling \p visit(i, closest point of query i) once per query,
+    //! concurrently from the worker threads (for signed_distance.h, which
+    //! needs only the face, without storing it).
+    void distances(const Vec3* queries, std::size_t n, double* out,
+                   const std::function<void(std::size_t, const ClosestPoint&)>& visit) const;
 
     //! An upper bound of the distance to the mesh of every point of the
     //! triangle (or segment, or point) spanned by \p corners: the smallest,

@@ -49,7 +49,7 @@ struct CompareOptions
     //! area-weighted means, Chamfer and PSNR are always computed).
     SummaryOptions summary{};
     //! Keep the samples of both directions and their distances
-    //! (Comparison::forward_samples, backward_samples; about 40 bytes per
+    //! (Comparison::forward_samples, backward_samples; about 50 bytes per
     //! sample and direction), e.g. for sample_cloud.h.
     bool keep_samples = false;
 };
@@ -72,6 +72,10 @@ struct Comparison
     std::vector<double> processed_vertex_distance;
     //! The same per vertex of the original mesh, to the processed surface.
     std::vector<double> original_vertex_distance;
+    //! With them, the signed distances (signed_distance.h: positive outside
+    //! the other surface) where the other mesh can be signed against; else empty.
+    std::vector<double> processed_vertex_signed_distance;
+    std::vector<double> original_vertex_signed_distance;
     //! Displacement and normal deviation when both meshes have the same
     //! connectivity (same_connectivity.h); else std::nullopt and the reason.
     std::optional<SameConnectivity> same_connectivity;

@@ -28,6 +28,7 @@
 #include "meshdiff/sample_cloud.h"
 #include "meshdiff/sampling.h"
 #include "meshdiff/shapes.h"
+#include "meshdiff/signed_distance.h"
 #include "meshdiff/smoothing.h"
 #include "meshdiff/smoothing_record.h"
 #include "meshdiff/surface_distance.h"

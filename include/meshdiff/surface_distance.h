@@ -72,6 +72,26 @@ struct AreaWeightedStats
     double area_fraction = 0.0;  //!< area / area of the faces
 };
 
+//! Signed statistics of one direction (signed_distance.h): each sample's
+//! distance with the sign of its side of the target surface, positive outside,
+//! negative inside, 0 on it; over the same samples as DistanceStats, each
+//! with weight 1 (mean = sum s / n, rms = sqrt(sum s^2 / n), which equals the
+//! unsigned rms).
+struct SignedDistanceStats
+{
+    double min = 0.0;
+    double max = 0.0;
+    double mean = 0.0;
+    double rms = 0.0;
+    //! The target surface was oriented inwards (negative volume) and was
+    //! signed against flipped, so that positive is still outside.
+    bool flipped = false;
+};
+
+//! The signed statistics of \p signed_distances (over all samples, weight 1).
+//! \throw InvalidArgumentError if there are none.
+SignedDistanceStats signed_distance_stats(const std::vector<double>& signed_distances);
+
 //! Statistics of one direction, in the meshes' length unit.
 struct DistanceStats
 {
@@ -98,6 +118,10 @@ struct DistanceStats
     std::optional<AreaWeightedStats> area_weighted;
     //! Only when SummaryOptions::histogram_bins > 0; else empty.
     Histogram histogram;
+    //! The signed statistics when the target surface can be signed against
+    //! (signed_distance.h); else std::nullopt and signed_unavailable says why.
+    std::optional<SignedDistanceStats> signed_distance;
+    std::string signed_unavailable;
 };
 
 //! Options of the summary metrics of a surface distance (METHOD.md section 6).
@@ -188,6 +212,10 @@ struct SurfaceDistance
     //! Asked for with b_vertex_distance: the same for every vertex of A to the
     //! surface of B, from the forward direction's index of B.
     std::vector<double> a_vertex_distance;
+    //! With them, the signed distances (signed_distance.h: positive outside)
+    //! where the other mesh can be signed against; else empty.
+    std::vector<double> b_vertex_signed_distance;
+    std::vector<double> a_vertex_signed_distance;
     //! Chamfer and PSNR; std::nullopt (with summary_unavailable saying why)
     //! when a direction has no area-weighted statistics.
     std::optional<SummaryMetrics> summary;
@@ -237,6 +265,9 @@ struct SampledDirection
 {
     SurfaceSamples samples;         //!< the samples (points, kinds, source elements), in sample order
     std::vector<double> distances;  //!< exact distance of each sample to the other surface, same order
+    //! Signed distance of each sample (positive outside the other surface),
+    //! same order; empty when the other surface cannot be signed against.
+    std::vector<double> signed_distances;
 };
 
 //! One direction: samples \p from with \p options (an unset target means
@@ -274,7 +305,7 @@ struct SampledSurfaceDistance
     SampledDirection backward;  //!< samples on B, distances to A
 };
 
-//! surface_distance() keeping every sample and its distance (about 40 bytes
+//! surface_distance() keeping every sample and its distance (about 50 bytes
 //! per sample and direction). Same arguments, conventions and exceptions.
 SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options = {},
                                                 const SummaryOptions& summary = {});
@@ -282,6 +313,12 @@ SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, co
 //! Exact distance of every vertex of \p from (unreferenced ones included) to
 //! the surface indexed by \p to, in vertex order; for per-vertex distance maps.
 std::vector<double> vertex_distances(const Mesh& from, const ClosestPointIndex& to);
+
+//! vertex_distances() of \p from to \p to (indexed by \p index), and in
+//! \p signed_out the signed ones when \p to can be signed against (else
+//! \p signed_out is emptied); \p to_name names \p to in the reason.
+std::vector<double> vertex_distances(const Mesh& from, const Mesh& to, const ClosestPointIndex& index,
+                                     std::vector<double>& signed_out, const std::string& to_name = "the mesh");
 
 //! Diagonal of the union of the boxes of \p a and \p b widened by 2% of its
 //! diagonal on every side (Metro's reference diagonal).

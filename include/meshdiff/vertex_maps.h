@@ -26,7 +26,8 @@ struct VertexMap
 
 //! The distance map of a comparison made with CompareOptions::vertex_distances:
 //! per vertex of the processed mesh its exact distance to the original surface
-//! (property "distance"), coloured by sequential_colors() over
+//! (property "distance"; and "signed_distance", positive outside, when the
+//! original can be signed against: signed_distance.h), coloured by sequential_colors() over
 //! \p color_range, by default [0, largest distance]. With certified Hausdorff
 //! distances, two comments mark where they are attained on the processed
 //! mesh (point and face).

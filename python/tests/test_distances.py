@@ -90,7 +90,8 @@ def test_surface_distance_samples_are_those_of_the_statistics(bunny, data):
     r = meshdiff.surface_distance(V1, F1, V2, F2, return_samples=True)
     for direction, (Va, Fa, Vb, Fb) in (("forward", (V1, F1, V2, F2)), ("backward", (V2, F2, V1, F1))):
         s = r[direction]
-        stats = {k: v for k, v in s.items() if k not in ("points", "distances", "kinds", "elements")}
+        stats = {k: v for k, v in s.items()
+                 if k not in ("points", "distances", "signed_distances", "kinds", "elements")}
         assert stats == plain[direction]
         n = s["samples"]
         assert s["points"].shape == (n, 3) and s["distances"].shape == (n,)
@@ -136,3 +137,35 @@ def test_compare_certifies_the_hausdorff_distance(data):
     for bad in ({"hausdorff": "exact"}, {"hausdorff_tolerance": 0.0}, {"hausdorff_abs_tolerance": -1.0}):
         with pytest.raises(ValueError):
             meshdiff.compare(V, F, W, F, roughness=False, **bad)
+
+
+def test_surface_distance_signed_samples_and_statistics():
+    """A small sphere inside a big one: signed = -distance forward, +distance backward; an open target gives None."""
+    def sphere(r, n=24):
+        t = np.linspace(0, np.pi, n // 2 + 1)[1:-1]
+        p = np.linspace(0, 2 * np.pi, n, endpoint=False)
+        V = [[0, 0, r]] + [[r * np.sin(a) * np.cos(b), r * np.sin(a) * np.sin(b), r * np.cos(a)] for a in t for b in p]
+        V.append([0, 0, -r])
+        F = [(0, 1 + i, 1 + (i + 1) % n) for i in range(n)]
+        for k in range(len(t) - 1):
+            for i in range(n):
+                a, b = 1 + k * n + i, 1 + k * n + (i + 1) % n
+                F += [(a, a + n, b), (b, a + n, b + n)]
+        last = len(V) - 1
+        F += [(last, last - n + (i + 1) % n, last - n + i) for i in range(n)]
+        return np.array(V, dtype=float), np.array(F, dtype=np.int32)
+    V1, F1 = sphere(0.5)
+    V2, F2 = sphere(1.0)
+    r = meshdiff.surface_distance(V1, F1, V2, F2, return_samples=True)
+    fw, bw = r["forward"], r["backward"]
+    assert r["sign"] == "positive outside"
+    np.testing.assert_array_equal(fw["signed_distances"], -fw["distances"])
+    np.testing.assert_array_equal(bw["signed_distances"], bw["distances"])
+    assert fw["signed"]["max"] == -fw["min"] and fw["signed"]["min"] == -fw["max"]
+    assert fw["signed"]["mean"] == -fw["mean"] and bw["signed"]["mean"] == bw["mean"]
+    assert fw["signed_unavailable"] is None
+    # Open target: the sphere without its first cap triangle.
+    r = meshdiff.surface_distance(V1, F1, V2, F2[1:], return_samples=True)
+    assert r["forward"]["signed"] is None and r["forward"]["signed_distances"] is None
+    assert r["forward"]["signed_unavailable"].startswith("the processed mesh has 3 boundary edges")
+    assert r["backward"]["signed"] is not None

@@ -5,8 +5,8 @@ import subprocess
 
 import numpy as np
 
-DTYPE = np.dtype([("x", "<f8"), ("y", "<f8"), ("z", "<f8"), ("distance", "<f8"), ("kind", "u1"),
-                  ("direction", "u1"), ("face", "<i4")])
+DTYPE = np.dtype([("x", "<f8"), ("y", "<f8"), ("z", "<f8"), ("distance", "<f8"), ("signed_distance", "<f8"),
+                  ("kind", "u1"), ("direction", "u1"), ("face", "<i4")])
 
 
 def read_ply_cloud(path):
@@ -16,8 +16,8 @@ def read_ply_cloud(path):
     assert header[1] == "format binary_little_endian 1.0"
     n = int(next(line for line in header if line.startswith("element vertex")).split()[2])
     props = [line.split()[1:] for line in header if line.startswith("property")]
-    assert props == [["double", "x"], ["double", "y"], ["double", "z"], ["double", "distance"], ["uchar", "kind"],
-                     ["uchar", "direction"], ["int", "face"]]
+    assert props == [["double", "x"], ["double", "y"], ["double", "z"], ["double", "distance"],
+                     ["double", "signed_distance"], ["uchar", "kind"], ["uchar", "direction"], ["int", "face"]]
     body = np.frombuffer(data, dtype=DTYPE, offset=end)
     assert len(body) == n
     return body
@@ -98,3 +98,61 @@ def test_samples_out_holds_both_directions_with_exact_distances(cli, tmp_path):
         on_face = np.array([point_triangle_distance(P[i:i + 1], *V[F[f]])[0] for i, f in enumerate(d["face"])])
         assert np.all(d["face"] >= 0) and np.all(on_face < 1e-12)
     assert len(s) == j["forward"]["samples"] + j["backward"]["samples"]
+
+
+def write_cube(path, lo, hi):
+    """The cube [lo, hi]^3 as 12 outward triangles."""
+    V = np.array([[hi if i & 1 else lo, hi if i & 2 else lo, hi if i & 4 else lo] for i in range(8)])
+    F = [(0, 2, 1), (1, 2, 3), (4, 5, 6), (5, 7, 6), (0, 1, 4), (1, 5, 4), (2, 6, 3), (3, 6, 7), (0, 4, 2),
+         (2, 4, 6), (1, 3, 5), (3, 7, 5)]
+    with open(path, "w") as f:
+        f.write("ply\nformat ascii 1.0\nelement vertex 8\nproperty double x\nproperty double y\nproperty double z\n"
+                "element face 12\nproperty list uchar int vertex_indices\nend_header\n")
+        f.writelines("%r %r %r\n" % tuple(v) for v in V)
+        f.writelines("3 %d %d %d\n" % t for t in F)
+
+
+def test_samples_out_signed_distance_of_nested_cubes(cli, tmp_path):
+    """The unit cube against the cube scaled by 1.1 about its centre: closed-form signed distances."""
+    write_cube(tmp_path / "big.ply", -0.05, 1.05)
+    write_cube(tmp_path / "small.ply", 0.0, 1.0)
+    out = tmp_path / "samples.ply"
+    subprocess.run([cli, str(tmp_path / "big.ply"), str(tmp_path / "small.ply"), "--no-roughness", "-n", "2000",
+                    "--samples-out", str(out), "--json", str(tmp_path / "c.json")], check=True,
+                   stdout=subprocess.DEVNULL)
+    j = json.load(open(tmp_path / "c.json"))["surface_distance"]
+    assert j["sign"] == "positive outside"
+    s = read_ply_cloud(out)
+    P = np.stack([s["x"], s["y"], s["z"]], axis=1)
+    fwd = s["direction"] == 0
+    # Forward: samples of the big cube, outside the small one: distance to the box [0, 1]^3.
+    outside = np.linalg.norm(np.maximum(0, np.maximum(-P, P - 1)), axis=1)
+    np.testing.assert_allclose(s["signed_distance"][fwd], outside[fwd], rtol=0, atol=1e-14)
+    corners = fwd & (s["kind"] == 0)
+    np.testing.assert_allclose(s["signed_distance"][corners], np.sqrt(3) * 0.05, rtol=0, atol=1e-15)
+    # Backward: samples of the small cube, inside the big one: minus the distance to its faces.
+    inside = np.minimum(P + 0.05, 1.05 - P).min(axis=1)
+    np.testing.assert_allclose(s["signed_distance"][~fwd], -inside[~fwd], rtol=0, atol=1e-14)
+    for side, m in (("forward", fwd), ("backward", ~fwd)):
+        assert j[side]["signed_unavailable"] is None
+        assert j[side]["signed"]["min"] == s["signed_distance"][m].min()
+        assert j[side]["signed"]["max"] == s["signed_distance"][m].max()
+        assert abs(j[side]["signed"]["mean"] - s["signed_distance"][m].mean()) < 1e-15
+
+
+def test_samples_out_signed_distance_nan_against_an_open_mesh(cli, tmp_path):
+    write_pyramid(tmp_path / "open.ply", 0.3, 3)
+    write_cube(tmp_path / "cube.ply", -2.0, 2.0)
+    out = tmp_path / "samples.ply"
+    subprocess.run([cli, str(tmp_path / "cube.ply"), str(tmp_path / "open.ply"), "--no-roughness", "-n", "500",
+                    "--samples-out", str(out), "--json", str(tmp_path / "c.json")], check=True,
+                   stdout=subprocess.DEVNULL)
+    j = json.load(open(tmp_path / "c.json"))["surface_distance"]
+    assert j["forward"]["signed"] is None
+    assert j["forward"]["signed_unavailable"].startswith("the processed mesh has 12 boundary edges")
+    s = read_ply_cloud(out)
+    assert np.all(np.isnan(s["signed_distance"][s["direction"] == 0]))
+    back = s[s["direction"] == 1]
+    # The open pyramid lies inside the cube: every backward sample has a negative signed distance.
+    np.testing.assert_array_equal(back["signed_distance"], -back["distance"])
+    assert b"comment signed_distance is NaN in the forward direction" in open(out, "rb").read()

@@ -297,6 +297,23 @@ nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal)
     }
     if (!s.histogram.counts.empty())  // only when asked for (--histogram)
         j["histogram"] = {{"edges", s.histogram.edges}, {"counts", s.histogram.counts}};
+    if (s.signed_distance) {
+        const SignedDistanceStats& g = *s.signed_distance;
+        j["signed"] = {{"min", g.min},
+                       {"max", g.max},
+                       {"mean", g.mean},
+                       {"rms", g.rms},
+                       {"relative",
+                        {{"min", g.min / diagonal},
+                         {"max", g.max / diagonal},
+                         {"mean", g.mean / diagonal},
+                         {"rms", g.rms / diagonal}}},
+                       {"orientation", g.flipped ? "flipped to outward" : "outward as given"}};
+        j["signed_unavailable"] = nullptr;
+    } else {
+        j["signed"] = nullptr;
+        j["signed_unavailable"] = s.signed_unavailable;
+    }
     return j;
 }
 
@@ -418,6 +435,11 @@ nlohmann::json mesh_surface_distance_json(const SurfaceDistance& d, const Sampli
              "recall: area share of the original's face samples closer than the threshold to the processed mesh"},
             {"psnr", psnr},
             {"summary_unavailable", d.summary ? nlohmann::json(nullptr) : nlohmann::json(d.summary_unavailable)},
+            {"sign", "positive outside"},
+            {"sign_is",
+             "signed distance: positive outside the other surface, negative inside, by the angle-weighted "
+             "pseudo-normal of the closest feature (Baerentzen and Aanaes 2005); only against a closed, manifold, "
+             "consistently oriented mesh without degenerate faces"},
             {"hausdorff", hausdorff},
             {"sampled_hausdorff", d.hausdorff},
             {"sampled_hausdorff_relative", d.hausdorff / d.diagonal},

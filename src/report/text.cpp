@@ -123,7 +123,7 @@ std::string facts_text(const std::string& title, const MeshFacts& f)
     return s;
 }
 
-std::string stats_text(const std::string& title, const DistanceStats& s, double diag)
+std::string stats_text(const std::string& title, const DistanceStats& s, double diag, const char* target)
 {
     std::string out = fmt::format("{}\n", title);
     if (s.n_point > 0)
@@ -135,6 +135,14 @@ std::string stats_text(const std::string& title, const DistanceStats& s, double 
     const std::pair<const char*, double> rows[] = {{"min", s.min},    {"max", s.max}, {"mean", s.mean}, {"RMS", s.rms},
                                                    {"std", s.stddev}, {"p50", s.p50}, {"p95", s.p95},   {"p99", s.p99}};
     for (const auto& [name, v] : rows) out += fmt::format("  {:>5} {:>14.6g} {:>14.6g}\n", name, v, v / diag);
+    if (s.signed_distance) {
+        const SignedDistanceStats& g = *s.signed_distance;
+        out +=
+            fmt::format("  signed (positive outside {}{}): min {:.6g}, max {:.6g}, mean {:.6g}, RMS {:.6g}\n", target,
+                        g.flipped ? ", its orientation flipped to outward" : "", g.min, g.max, g.mean, g.rms);
+    } else {
+        out += fmt::format("  signed: unavailable, {}\n", s.signed_unavailable);
+    }
     return out;
 }
 
@@ -315,8 +323,8 @@ std::string comparison_text(const Comparison& c)
                          to_string(so.face_scheme),
                          so.face_scheme == FaceSampling::MonteCarlo ? fmt::format(", seed {}", so.seed) : "");
         s += fmt::format("  diagonal = bounding-box diagonal of the original = {:.6g}\n", d.diagonal);
-        s += stats_text("Forward distance (M1 -> M2):", d.forward, d.diagonal);
-        s += stats_text("Backward distance (M2 -> M1):", d.backward, d.diagonal);
+        s += stats_text("Forward distance (M1 -> M2):", d.forward, d.diagonal, "M2");
+        s += stats_text("Backward distance (M2 -> M1):", d.backward, d.diagonal, "M1");
         if (d.forward_hausdorff && d.backward_hausdorff) {
             const CertifiedHausdorff& f = *d.forward_hausdorff;
             const CertifiedHausdorff& b = *d.backward_hausdorff;
