@@ -191,6 +191,11 @@ SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const Sampl
             d.distances = mesh_index->distances(d.samples.points);
         }
         stats = distance_stats(d.samples, d.distances);
+        // A cloud has no inside; a cloud's points against a mesh are left
+        // unsigned too (the sign needs the closest feature, not computed here).
+        stats.signed_unavailable =
+            to_cloud ? "the other input is a point cloud: it has no inside"
+                     : "the samples are the points of a cloud: signed distances are computed for mesh samples only";
         if (from_cloud) {
             stats.n_point = d.samples.size();
             stats.area_weighted = point_weighted_stats(d.distances, thresholds, within);

@@ -213,9 +213,10 @@ std::string cloud_distance_text(const Comparison& c)
     s += "  point-to-surface: every point of a cloud, exact distance to the mesh; surface-to-point: samples of a "
          "mesh,\n  distance to the nearest point of the cloud; point-to-point: nearest point of the other cloud\n";
     s += fmt::format("  diagonal = bounding-box diagonal of the original = {:.6g}\n", d.diagonal);
-    s += stats_text(fmt::format("Forward distance (M1 -> M2, {}):", to_string(d.forward_kind)), d.forward, d.diagonal);
+    s += stats_text(fmt::format("Forward distance (M1 -> M2, {}):", to_string(d.forward_kind)), d.forward, d.diagonal,
+                    "M2");
     s += stats_text(fmt::format("Backward distance (M2 -> M1, {}):", to_string(d.backward_kind)), d.backward,
-                    d.diagonal);
+                    d.diagonal, "M1");
     auto side = [&](const char* name, bool from_cloud, bool to_cloud, const std::optional<CertifiedHausdorff>& h,
                     const DistanceStats& st) {
         if (from_cloud && h)
