@@ -3,6 +3,7 @@
 #include "meshdiff/error.h"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <cmath>
 #include <future>
@@ -19,11 +20,16 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
     validate(options.sampling);
     if (options.hausdorff) validate(*options.hausdorff);
     validate(options.summary);
+    const ProgressScope scope(options.progress ? options.progress : current_progress());
+    check_cancelled(current_progress());
     Comparison c;
     c.options = options;
-    // The serial topology reports overlap the (partly serial) analyses.
-    auto facts_a = std::async(std::launch::async, [&a] { return mesh_facts(a); });
-    auto facts_b = std::async(std::launch::async, [&b] { return mesh_facts(b); });
+    c.options.progress = nullptr;
+    // The serial topology reports overlap the (partly serial) analyses, on
+    // threads of their own unless OpenMP is limited to one thread.
+    const auto policy = omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred;
+    auto facts_a = std::async(policy, [&a] { return mesh_facts(a); });
+    auto facts_b = std::async(policy, [&b] { return mesh_facts(b); });
     if (options.roughness && options.measure == RoughnessMeasure::Corsini) {
         if (!options.profile.radii.empty())
             throw InvalidArgumentError("compare: metric levels (radii) are not defined for the Corsini measure");

@@ -3,6 +3,7 @@
 #include "meshdiff/error.h"
 
 #include "detail/morton.h"
+#include "detail/progress.h"
 
 #ifndef MESHDIFF_BFS_WORDS
 #define MESHDIFF_BFS_WORDS 2
@@ -241,12 +242,14 @@ DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
     bool word_sums = false;
     for (std::size_t v = 0; v < n && !word_sums; ++v) word_sums = adj.degree(v) > kWordSumDegree;
 
+    detail::StageProgress stage("rings", n_batches);
 #pragma omp parallel
     {
         BatchBfs<kWords> bfs(adj, values, all_defined, word_sums, lmax);
         constexpr std::size_t kBatch = BatchBfs<kWords>::kBatch;
 #pragma omp for schedule(dynamic, 2)
         for (std::ptrdiff_t ib = 0; ib < std::ptrdiff_t(n_batches); ++ib) {
+            if (!stage.tick()) continue;
             const std::size_t first = std::size_t(ib) * kBatch;
             const std::size_t nb = std::min<std::size_t>(kBatch, centres.size() - first);
             bfs.run(centres.data() + first, nb);
@@ -261,6 +264,7 @@ DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
             }
         }
     }
+    stage.finish();
     return out;
 }
 
