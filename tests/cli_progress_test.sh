@@ -118,7 +118,7 @@ interrupt() {
     echo "interrupt $1 after '$2': exit $rc after $ms ms ($(grep -v '%\|^certification' "$tmp/run.err" | tail -1))"
     [ "$rc" -eq 130 ] && pass || fail "interrupt $1 after '$2': exit $rc, expected 130: $(tail -3 "$tmp/run.err")"
     [ "$ms" -lt $((limit * 1000)) ] && pass || fail "interrupt $1 after '$2': $ms ms to stop (limit $limit s)"
-    grep -q "^meshdiff: interrupted by $1: stopped, no output file written$" "$tmp/run.err" && pass ||
+    grep -q "^meshdiff: interrupted by SIG$1: stopped, no output file written$" "$tmp/run.err" && pass ||
         fail "interrupt $1: message: $(tail -2 "$tmp/run.err")"
     [ "$(grep -c '^meshdiff:' "$tmp/run.err")" -eq 1 ] && pass || fail "interrupt $1: not one message line"
     [ ! -s "$tmp/run.out" ] && pass || fail "interrupt $1: a report on stdout"
@@ -138,7 +138,7 @@ pid=$!
 if wait_for "ok    small1" "$tmp/batch.err" 300; then
     sleep 1  # well into the big pair
     t0=$(now_ms)
-    kill -INT -- -"$pid"
+    env kill -INT -- -"$pid"  # procps kill: the whole group
     wait "$pid"
     rc=$?
     ms=$(($(now_ms) - t0))
@@ -150,7 +150,7 @@ if wait_for "ok    small1" "$tmp/batch.err" 300; then
     [ "$(wc -l <"$tmp/res.jsonl")" -eq 1 ] && grep -q '"id":"small1"' "$tmp/res.jsonl" && pass ||
         fail "batch interrupt: $(wc -l <"$tmp/res.jsonl") lines"
 else
-    kill -KILL -- -"$pid" 2>/dev/null
+    env kill -KILL -- -"$pid" 2>/dev/null
     fail "batch: the first pair never finished: $(cat "$tmp/batch.err")"
 fi
 sleep 0.2
