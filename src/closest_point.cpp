@@ -227,7 +227,9 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
         std::uint32_t node, begin, end, depth;
     };
     std::vector<Task> stack{{0, 0, std::uint32_t(n), 0}};
+    stage.check();
     while (!stack.empty()) {
+        stage.check();  // a node costs O(its triangles), the root O(n)
         const Task task = stack.back();
         stack.pop_back();
         Box box, cbox;

@@ -114,13 +114,14 @@ SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions
             }
         s.n_vertex = s.points.size();
     }
+    check_cancelled(current_progress());  // the serial steps are checked in between
     if (s.n_vertex >= s.target) return s;
     double remaining = double(s.target - s.n_vertex);
 
     // Edges: density sqrt(face density) per unit length, with carry-over.
     if (options.edges) {
         const auto edges = unique_edges(mesh);
-        check_cancelled(current_progress());  // the serial steps are checked in between
+        check_cancelled(current_progress());
         std::vector<double> len(edges.size());
         double length = 0.0;
         for (std::size_t i = 0; i < edges.size(); ++i)
