@@ -6,6 +6,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <functional>
 #include <future>
 #include <utility>
 
@@ -28,8 +29,14 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
     // The serial topology reports overlap the (partly serial) analyses, on
     // threads of their own unless OpenMP is limited to one thread.
     const auto policy = omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred;
-    auto facts_a = std::async(policy, [&a] { return mesh_facts(a); });
-    auto facts_b = std::async(policy, [&b] { return mesh_facts(b); });
+    // They stop too when the Progress says so.
+    Progress* progress = current_progress();
+    auto facts_of = [progress](const LoadedMesh& m) {
+        const ProgressScope in_this_thread(progress);
+        return mesh_facts(m);
+    };
+    auto facts_a = std::async(policy, facts_of, std::cref(a));
+    auto facts_b = std::async(policy, facts_of, std::cref(b));
     if (options.roughness && options.measure == RoughnessMeasure::Corsini) {
         if (!options.profile.radii.empty())
             throw InvalidArgumentError("compare: metric levels (radii) are not defined for the Corsini measure");

@@ -383,6 +383,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
         if (vq[v].distance > best.d) best = {vq[v].distance, a.points[v], first_face[v], vq[v].point, vq[v].face};
     }
 
+    stage.check();  // the serial set-up is checked between its steps
     std::vector<Cell> cells(a.n_faces());
     for (std::size_t f = 0; f < a.n_faces(); ++f) {
         Cell& c = cells[f];
@@ -400,6 +401,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
     // within threshold of all its corners (|c_i - c_j| <= d(c_i, t) +
     // diam(t) + d(c_j, t)), so its bound cannot close it: it is split
     // without searching.
+    stage.check();
     std::vector<double> diameter_b(b.n_faces(), 0.0);  // longest edge per face of B
     for (std::size_t f = 0; f < b.n_faces(); ++f)
         for (std::size_t k = 0; k < 3; ++k)

@@ -51,7 +51,10 @@ int run_corsini(const ProfileArgs& a)
     progress.stage("reading", 1);
     const LoadedMesh loaded = read_mesh(a.mesh);
     progress.advance(1);
-    auto facts_future = std::async(facts_policy(), [&loaded] { return mesh_facts(loaded); });
+    auto facts_future = std::async(facts_policy(), [&loaded, &progress] {
+        const ProgressScope in_this_thread(&progress);  // it stops on Ctrl-C too
+        return mesh_facts(loaded);
+    });
     progress.stage("corsini", 1);
     const CorsiniProfile profile = corsini_profile(loaded.mesh, options);
     progress.advance(1);
@@ -81,7 +84,10 @@ int run_profile(const ProfileArgs& a)
     check_cancelled(&progress);
     // The topology report is serial; it overlaps the serial stages of the
     // profile (normalisation, adjacency, normals) on another thread.
-    auto facts_future = std::async(facts_policy(), [&loaded] { return mesh_facts(loaded); });
+    auto facts_future = std::async(facts_policy(), [&loaded, &progress] {
+        const ProgressScope in_this_thread(&progress);  // it stops on Ctrl-C too
+        return mesh_facts(loaded);
+    });
     const RoughnessProfile profile = roughness_profile(loaded.mesh, options);
     const MeshFacts facts = facts_future.get();
 

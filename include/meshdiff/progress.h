@@ -7,6 +7,8 @@
 //! 1/100 of the stage, and asks cancelled() at the same points. Once
 //! cancelled() is true, the running stage skips its remaining work and the
 //! call throws Cancelled (error.h) within a few hundredths of the stage.
+//! Serial steps are checked in between (so topology_report() and mesh_facts()
+//! can throw Cancelled too, under a cancelled Progress).
 //! Without a Progress (the default) none of this costs anything.
 #pragma once
 
