@@ -1,12 +1,12 @@
 #include "batch_list.h"
 #include "cli.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/version.h"
-#include "interrupt.h"
 #include "options.h"
 #include "subprocess.h"
 
@@ -19,9 +19,9 @@
 
 #include <cctype>
 #include <cerrno>
-#include <csignal>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>

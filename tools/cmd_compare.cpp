@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "interrupt.h"
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
@@ -6,7 +7,6 @@
 #include "meshdiff/report/text.h"
 #include "meshdiff/sample_cloud.h"
 #include "meshdiff/vertex_maps.h"
-#include "interrupt.h"
 #include "options.h"
 #include "progress_display.h"
 

@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "interrupt.h"
 #include "meshdiff/corsini.h"
 #include "meshdiff/error.h"
 #include "meshdiff/facts.h"
@@ -7,7 +8,6 @@
 #include "meshdiff/report/text.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/vertex_maps.h"
-#include "interrupt.h"
 #include "options.h"
 #include "progress_display.h"
 

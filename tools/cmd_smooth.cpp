@@ -123,7 +123,8 @@ void add_smooth_command(CLI::App& app, Action& action)
                     "without --profile-every only the first and last iterations are recorded");
     args->profile.levels = "1,5,10,20";
     add_profile_options(sub, args->profile, false);
-    sub->add_option("--threads", args->threads, "worker threads of the smoothing and the profile (0: all cores)")->capture_default_str();
+    sub->add_option("--threads", args->threads, "worker threads of the smoothing and the profile (0: all cores)")
+        ->capture_default_str();
     sub->callback([args, &action] { action = [args] { return run_smooth(*args); }; });
 }
 

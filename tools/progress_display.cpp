@@ -39,10 +39,8 @@ ProgressDisplay::ProgressDisplay(ProgressMode mode, std::chrono::milliseconds de
 }
 
 ProgressDisplay::ProgressDisplay(const ProgressCliOptions& o)
-    : ProgressDisplay(progress_mode(o, ::isatty(2) == 1),
-                      o.progress ? std::chrono::milliseconds(0) : kTerminalDelay)
-{
-}
+    : ProgressDisplay(progress_mode(o, ::isatty(2) == 1), o.progress ? std::chrono::milliseconds(0) : kTerminalDelay)
+{}
 
 ProgressDisplay::~ProgressDisplay()
 {

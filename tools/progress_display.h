@@ -84,7 +84,7 @@ private:
     std::size_t total_ = 0;
     Clock::time_point stage_start_ = start_;
     std::atomic<std::size_t> done_{0};
-    bool shown_ = false;  // the current stage's line is on screen (Terminal)
+    bool shown_ = false;             // the current stage's line is on screen (Terminal)
     std::size_t printed_tenth_ = 0;  // Lines: the last tenth printed, + 1 (0: none)
     Clock::time_point printed_at_ = start_;
     std::thread thread_;
