@@ -3,6 +3,7 @@
 #include "meshdiff/error.h"
 
 #include "detail/point_triangle.h"
+#include "detail/progress.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -143,6 +144,8 @@ struct ClosestPointIndex::Impl
 void ClosestPointIndex::Impl::build(const Mesh& mesh)
 {
     const std::size_t n = mesh.n_faces();
+    // Progress: the triangles placed in leaves (the build is serial: it may throw).
+    detail::StageProgress stage("index", n);
     tris.resize(n);
     std::vector<Box> boxes(n);
     std::vector<Vec3> centroid(n);
@@ -224,7 +227,9 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
         std::uint32_t node, begin, end, depth;
     };
     std::vector<Task> stack{{0, 0, std::uint32_t(n), 0}};
+    stage.check();
     while (!stack.empty()) {
+        stage.check();  // a node costs O(its triangles), the root O(n)
         const Task task = stack.back();
         stack.pop_back();
         Box box, cbox;
@@ -254,6 +259,7 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
         if (count <= kLeafSize) {
             node.first = task.begin;
             node.count = count;
+            if (!stage.tick(count)) stage.check();
             continue;
         }
         // Binned SAH along the longest centroid axis; median split if the
@@ -339,6 +345,7 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
             parent_of[node.first] = parent_of[node.first + 1] = std::uint32_t(k);
         }
     }
+    stage.finish();
 }
 
 ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const
@@ -499,12 +506,15 @@ template <class F>
 void for_blocks(std::size_t n, F&& f)
 {
     const auto n_blocks = std::int64_t((n + kBlock - 1) / kBlock);
+    detail::StageProgress stage("distances", n);
 #pragma omp parallel for schedule(dynamic, 1)
     for (std::int64_t b = 0; b < n_blocks; ++b) {
-        std::uint32_t hint = kNoFace;
         const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
+        if (!stage.tick(end - std::size_t(b) * kBlock)) continue;
+        std::uint32_t hint = kNoFace;
         for (std::size_t i = std::size_t(b) * kBlock; i < end; ++i) hint = f(i, hint);
     }
+    stage.finish();
 }
 }  // namespace
 

@@ -3,8 +3,10 @@
 #include "meshdiff/error.h"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <cmath>
+#include <functional>
 #include <future>
 #include <utility>
 
@@ -64,12 +66,23 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
     validate(options.sampling);
     if (options.hausdorff) validate(*options.hausdorff);
     validate(options.summary);
+    const ProgressScope scope(options.progress ? options.progress : current_progress());
+    check_cancelled(current_progress());
     if (is_point_cloud(a) || is_point_cloud(b)) return compare_with_cloud(a, b, options);
     Comparison c;
     c.options = options;
-    // The serial topology reports overlap the (partly serial) analyses.
-    auto facts_a = std::async(std::launch::async, [&a] { return mesh_facts(a); });
-    auto facts_b = std::async(std::launch::async, [&b] { return mesh_facts(b); });
+    c.options.progress = nullptr;
+    // The serial topology reports overlap the (partly serial) analyses, on
+    // threads of their own unless OpenMP is limited to one thread.
+    const auto policy = omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred;
+    // They stop too when the Progress says so.
+    Progress* progress = current_progress();
+    auto facts_of = [progress](const LoadedMesh& m) {
+        const ProgressScope in_this_thread(progress);
+        return mesh_facts(m);
+    };
+    auto facts_a = std::async(policy, facts_of, std::cref(a));
+    auto facts_b = std::async(policy, facts_of, std::cref(b));
     if (options.roughness && options.measure == RoughnessMeasure::Corsini) {
         if (!options.profile.radii.empty())
             throw InvalidArgumentError("compare: metric levels (radii) are not defined for the Corsini measure");

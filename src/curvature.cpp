@@ -4,6 +4,8 @@
 #include "meshdiff/error.h"
 #include "meshdiff/normals.h"
 
+#include "detail/progress.h"
+
 #include <fmt/format.h>
 #include <Eigen/QR>
 
@@ -321,6 +323,7 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
             hubs.slot[v] = std::int32_t(hubs.trees.size());
             hubs.trees.emplace_back(mesh.points, adj.begin(v), adj.end(v));
         }
+    detail::StageProgress stage("curvature", n);
 #pragma omp parallel
     {
         FitScratch s;
@@ -328,6 +331,7 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
 #pragma omp for schedule(dynamic, 1024)
         for (std::ptrdiff_t iv = 0; iv < std::ptrdiff_t(n); ++iv) {
             const auto v = std::size_t(iv);
+            if (!stage.tick()) continue;
             if (normals[v].squaredNorm() == 0.0) {
                 how[v] = 4;
                 continue;
@@ -345,6 +349,7 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
                                                 (capped ? 8 : 0) | (dropped ? 16 : 0));
         }
     }
+    stage.finish();
     for (std::size_t v = 0; v < n; ++v) {
         if (std::isnan(field.H[v])) ++field.undefined;
         if (how[v] & 1) ++field.widened;
@@ -391,7 +396,12 @@ CurvatureField mean_curvature(const Mesh& mesh, const Adjacency& adjacency, cons
             fmt::format("curvature: max_normal_angle_deg = {} is outside (0, 90]", options.max_normal_angle_deg));
     if (adjacency.size() != mesh.n_vertices() || normals.size() != mesh.n_vertices())
         throw InvalidArgumentError("curvature: adjacency or normals do not match the mesh");
-    if (options.method == CurvatureMethod::MeyerCotangent) return meyer_curvature(mesh, normals);
+    if (options.method == CurvatureMethod::MeyerCotangent) {
+        detail::StageProgress stage("curvature", 1);
+        CurvatureField field = meyer_curvature(mesh, normals);
+        stage.finish();
+        return field;
+    }
     return fitted_curvature(mesh, adjacency, normals, options);
 }
 

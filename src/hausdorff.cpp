@@ -5,6 +5,7 @@
 
 #include "detail/hausdorff.h"
 #include "detail/point_triangle.h"
+#include "detail/progress.h"
 
 #include <fmt/format.h>
 
@@ -361,6 +362,8 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
     const std::size_t budget =
         options.max_evaluations ? options.max_evaluations : 2'000'000 + 20 * std::size_t(a.n_faces());
 
+    // Progress counts the triangles bounded and split (the total is not known).
+    detail::StageProgress stage("certification", 0);
     CertifiedHausdorff r;
     Candidate best;
     if (seed) {
@@ -380,6 +383,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
         if (vq[v].distance > best.d) best = {vq[v].distance, a.points[v], first_face[v], vq[v].point, vq[v].face};
     }
 
+    stage.check();  // the serial set-up is checked between its steps
     std::vector<Cell> cells(a.n_faces());
     for (std::size_t f = 0; f < a.n_faces(); ++f) {
         Cell& c = cells[f];
@@ -397,6 +401,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
     // within threshold of all its corners (|c_i - c_j| <= d(c_i, t) +
     // diam(t) + d(c_j, t)), so its bound cannot close it: it is split
     // without searching.
+    stage.check();
     std::vector<double> diameter_b(b.n_faces(), 0.0);  // longest edge per face of B
     for (std::size_t f = 0; f < b.n_faces(); ++f)
         for (std::size_t k = 0; k < 3; ++k)
@@ -409,7 +414,9 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
                          (c.corner[2] - c.corner[0]).norm()});
     };
 
+    stage.check();
     const Neighbours nbr = edge_neighbours(b);
+    stage.check();
     const Triangles tris = triangles_of(b);
     double upper_done = 0.0;  // the largest bound of the closed triangles
     // Bounds every cell; keeps those above lower + tolerance in `cells`.
@@ -419,6 +426,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::int64_t i = 0; i < n; ++i) {
             Cell& c = list[std::size_t(i)];
+            if (!stage.tick()) continue;
             // d(., B) is 1-Lipschitz and every point of the cell is within
             // covering_radius(c) of a corner: a bound always.
             const double diam = diameter(c);
@@ -479,6 +487,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
             }
             c.upper = u;
         }
+        stage.check();
         r.bound_evaluations += list.size();
         std::size_t kept = 0;
         for (Cell& c : list) {
@@ -513,6 +522,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::int64_t ii = 0; ii < std::int64_t(n); ++ii) {
             const auto i = std::size_t(ii);
+            if (!stage.tick()) continue;
             const Cell& c = cells[i];
             std::array<Vec3, 3> m;
             std::array<double, 3> md;
@@ -558,6 +568,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
                 ch.depth = c.depth + 1;
             }
         }
+        stage.check();
         for (const std::size_t q : queried) r.point_evaluations += q;
         for (const Candidate& cand : found)  // in order: the lowest index wins ties
             if (cand.d > best.d) best = cand;
@@ -571,6 +582,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
     r.upper = upper;
     r.tolerance = tolerance(best.d);
     r.certified = !r.budget_exhausted && r.upper - r.lower <= r.tolerance;
+    stage.finish();
     r.location = {best.point, best.face, best.closest, best.closest_face};
     return r;
 }

@@ -3,6 +3,7 @@
 #include "meshdiff/error.h"
 
 #include "detail/morton.h"
+#include "detail/progress.h"
 
 #include <fmt/format.h>
 
@@ -364,11 +365,13 @@ BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
     const std::vector<std::uint32_t> centres = clustered_order(pm, padj, pvalues, kBatch);
     const std::size_t n_batches = (centres.size() + kBatch - 1) / kBatch;
 
+    detail::StageProgress stage("metric levels", n_batches);
 #pragma omp parallel
     {
         BatchBall<kBallWords> search(pm, padj, pvalues, pweights, r2, with_sizes);
 #pragma omp for schedule(dynamic, 1)
         for (std::ptrdiff_t ib = 0; ib < std::ptrdiff_t(n_batches); ++ib) {
+            if (!stage.tick()) continue;
             const std::size_t first = std::size_t(ib) * kBatch;
             const std::size_t nb = std::min(kBatch, centres.size() - first);
             search.run(centres.data() + first, nb);
@@ -381,6 +384,7 @@ BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
                 }
         }
     }
+    stage.finish();
     return m;
 }
 

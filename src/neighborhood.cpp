@@ -3,6 +3,7 @@
 #include "meshdiff/error.h"
 
 #include "detail/morton.h"
+#include "detail/progress.h"
 
 #ifndef MESHDIFF_BFS_WORDS
 #define MESHDIFF_BFS_WORDS 2
@@ -292,12 +293,14 @@ DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
     const std::vector<double>& svalues = renumber ? pvalues : values;
     const std::vector<std::uint32_t>& scentres = renumber ? pcentres : centres;
 
+    detail::StageProgress stage("rings", n_batches);
 #pragma omp parallel
     {
         BatchBfs<kWords> bfs(sadj, svalues, all_defined, word_sums, lmax);
         constexpr std::size_t kBatch = BatchBfs<kWords>::kBatch;
 #pragma omp for schedule(dynamic, 2)
         for (std::ptrdiff_t ib = 0; ib < std::ptrdiff_t(n_batches); ++ib) {
+            if (!stage.tick()) continue;
             const std::size_t first = std::size_t(ib) * kBatch;
             const std::size_t nb = std::min<std::size_t>(kBatch, centres.size() - first);
             bfs.run(scentres.data() + first, nb);
@@ -312,6 +315,7 @@ DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
             }
         }
     }
+    stage.finish();
     return out;
 }
 

@@ -135,11 +135,15 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
 RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options)
 {
     check_options(options);
+    const ProgressScope scope(options.progress ? options.progress : current_progress());
+    check_cancelled(current_progress());
     RoughnessProfile p;
     p.vertices = mesh.n_vertices();
     p.normalization = unit_normalization(mesh);
     const Mesh unit = apply_normalization(mesh, p.normalization);
+    check_cancelled(current_progress());  // the serial steps are checked in between
     const Adjacency adj = vertex_adjacency(unit);
+    check_cancelled(current_progress());
     const std::vector<Vec3> normals = vertex_normals(unit);
 
     p.curvature_options = options.curvature;
@@ -158,6 +162,7 @@ RoughnessProfile roughness_profile_from_curvature(const Mesh& mesh, const std::v
                                                   const ProfileOptions& options)
 {
     check_options(options);
+    const ProgressScope scope(options.progress ? options.progress : current_progress());
     if (H_in.size() != mesh.n_vertices())
         throw InvalidArgumentError(
             fmt::format("profile: {} curvature values for {} vertices", H_in.size(), mesh.n_vertices()));

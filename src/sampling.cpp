@@ -2,6 +2,8 @@
 
 #include "meshdiff/error.h"
 
+#include "detail/progress.h"
+
 #include <Eigen/Geometry>
 
 #include <fmt/format.h>
@@ -74,11 +76,10 @@ std::size_t sample_target(const Mesh& mesh, const SamplingOptions& options, std:
     return default_target;
 }
 
-SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options)
-{
-    validate(options);
-    validate(mesh, "sample_surface");
+namespace {
 
+SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions& options)
+{
     SurfaceSamples s;
     s.target = sample_target(mesh, options, 10 * mesh.n_faces());
 
@@ -113,12 +114,14 @@ SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options)
             }
         s.n_vertex = s.points.size();
     }
+    check_cancelled(current_progress());  // the serial steps are checked in between
     if (s.n_vertex >= s.target) return s;
     double remaining = double(s.target - s.n_vertex);
 
     // Edges: density sqrt(face density) per unit length, with carry-over.
     if (options.edges) {
         const auto edges = unique_edges(mesh);
+        check_cancelled(current_progress());
         std::vector<double> len(edges.size());
         double length = 0.0;
         for (std::size_t i = 0; i < edges.size(); ++i)
@@ -150,6 +153,7 @@ SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options)
         remaining = std::max(0.0, remaining - double(s.n_edge));
     }
 
+    check_cancelled(current_progress());
     // Faces.
     if (options.faces && area > 0.0 && remaining > 0.0) {
         s.face_density = remaining / area;
@@ -214,6 +218,18 @@ SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options)
         }
         s.n_face = s.points.size() - s.n_vertex - s.n_edge;
     }
+    return s;
+}
+
+}  // namespace
+
+SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options)
+{
+    validate(options);
+    validate(mesh, "sample_surface");
+    detail::StageProgress stage("sampling", 1);
+    SurfaceSamples s = sample_surface_unreported(mesh, options);
+    stage.finish();
     return s;
 }
 

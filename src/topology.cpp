@@ -1,5 +1,7 @@
 #include "meshdiff/topology.h"
 
+#include "meshdiff/progress.h"
+
 #include "detail/union_find.h"
 
 #include <algorithm>
@@ -166,7 +168,10 @@ TopologyReport topology_report(const Mesh& mesh)
     r.vertices = n;
     r.faces = mesh.n_faces();
 
+    // A Progress (progress.h) can stop the report between its serial steps.
+    const Progress* progress = current_progress();
     const auto he = sorted_half_edges(mesh);
+    check_cancelled(progress);
     UnionFind comp(n);
     std::vector<std::uint64_t> boundary;
     for (std::size_t i = 0; i < he.size();) {
@@ -202,6 +207,7 @@ TopologyReport topology_report(const Mesh& mesh)
         if (comp.find(std::uint32_t(v)) == v) ++roots;
     }
     r.components = roots;
+    check_cancelled(progress);
 
     // Boundary loops: connected components of the boundary-edge graph.
     {
@@ -216,6 +222,7 @@ TopologyReport topology_report(const Mesh& mesh)
             if (on_boundary[v] && bl.find(std::uint32_t(v)) == v) ++r.boundary_loops;
     }
 
+    check_cancelled(progress);
     // Duplicate faces: same vertex set.
     {
         std::vector<std::array<std::int32_t, 3>> sorted(mesh.faces.begin(), mesh.faces.end());
@@ -225,8 +232,10 @@ TopologyReport topology_report(const Mesh& mesh)
             if (sorted[i] == sorted[i - 1]) ++r.duplicate_faces;
     }
 
+    check_cancelled(progress);
     const auto degenerate = degenerate_face_mask(mesh);
     r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
+    check_cancelled(progress);
 
     // Non-manifold vertices: the faces around v, linked through shared edges
     // (v, w), form more than one fan. Each incident face gives two "other"

@@ -1,6 +1,7 @@
 #include "cli.h"
 
 #include "commands.h"
+#include "interrupt.h"
 #include "meshdiff/error.h"
 #include "meshdiff/version.h"
 
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -31,6 +33,9 @@ Failure failure_of(const std::exception& e)
     if (dynamic_cast<const IoError*>(&e)) return {kIoError, e.what()};
     if (dynamic_cast<const InvalidMeshError*>(&e)) return {kInvalidMesh, e.what()};
     if (dynamic_cast<const SolverError*>(&e)) return {kSolverError, e.what()};
+    if (dynamic_cast<const Cancelled*>(&e))
+        return {kInterrupted, fmt::format("interrupted by {}: stopped, no output file written",
+                                          interrupt_signal() == SIGTERM ? "SIGTERM" : "SIGINT")};
     if (dynamic_cast<const std::bad_alloc*>(&e)) return {kInternal, "out of memory"};
     return {kInternal, std::string("internal error: ") + e.what()};
 }
@@ -47,7 +52,8 @@ int run(const std::vector<std::string>& raw_args)
         "meshdiff: how much a processed triangle mesh differs from its original, and at which scale.\n"
         "  meshdiff ORIGINAL PROCESSED [options]   (same as: meshdiff compare ...)\n"
         "Exit codes: 0 ok, 2 usage, 3 unreadable input or unwritable output, 4 invalid mesh,\n"
-        "5 numerical failure, 6 batch finished with failed pairs, 70 internal error.",
+        "5 numerical failure, 6 batch finished with failed pairs, 70 internal error,\n"
+        "130 interrupted (Ctrl-C, SIGTERM).",
         "meshdiff"};
     app.set_version_flag("--version", std::string("meshdiff ") + MESHDIFF_VERSION);
     app.require_subcommand(1);

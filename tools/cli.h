@@ -13,12 +13,13 @@ namespace meshdiff::cli {
 enum ExitCode : int
 {
     kOk = 0,
-    kUsage = 2,         //!< bad command line or option value
-    kIoError = 3,       //!< a file could not be read or written
-    kInvalidMesh = 4,   //!< the file was read but is not a usable mesh
-    kSolverError = 5,   //!< a numerical step failed
-    kInternal = 70,     //!< a bug: please report
-    kBatchFailures = 6  //!< batch finished, but some pairs failed
+    kUsage = 2,          //!< bad command line or option value
+    kIoError = 3,        //!< a file could not be read or written
+    kInvalidMesh = 4,    //!< the file was read but is not a usable mesh
+    kSolverError = 5,    //!< a numerical step failed
+    kInternal = 70,      //!< a bug: please report
+    kBatchFailures = 6,  //!< batch finished, but some pairs failed
+    kInterrupted = 130   //!< stopped by SIGINT (Ctrl-C) or SIGTERM; no output written (128 + SIGINT)
 };
 
 //! How a command that threw \p e ends: its exit code and its one-line message

@@ -1,6 +1,7 @@
 #include "batch_list.h"
 #include "cli.h"
 #include "commands.h"
+#include "interrupt.h"
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
@@ -20,6 +21,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -94,7 +96,7 @@ std::vector<std::string> compare_args(const BatchArgs& a, const Pair& p)
 // (beyond --pair-timeout) of this pair becomes its error line.
 nlohmann::json compare_pair(const BatchArgs& a, const std::string& self, const Pair& p, int& code, std::string& error)
 {
-    const ChildResult r = run_child(self, compare_args(a, p), a.pair_timeout);
+    const ChildResult r = run_child(self, compare_args(a, p), a.pair_timeout, interrupted);
     if (r.timed_out) {
         code = kPairTimeout;
         error = fmt::format("timed out after {} s (--pair-timeout)", a.pair_timeout);
@@ -152,6 +154,7 @@ std::set<std::string> finished_ids(int fd, const std::string& path)
 int run_batch(const BatchArgs& a)
 {
     set_threads(a.threads);
+    install_interrupt_handlers();
     refuse_overwriting_inputs("--out", a.out, {a.pairs});
     if (std::filesystem::is_directory(a.pairs))
         throw IoError(fmt::format("{}: is a directory, not a pair list", a.pairs));
@@ -182,6 +185,7 @@ int run_batch(const BatchArgs& a)
 
     std::size_t ok = 0, failed = 0, skipped = 0;
     for (std::size_t k = 0; k < pairs.size(); ++k) {
+        if (interrupted()) break;
         if (k % n_shards != shard) continue;
         const Pair& p = pairs[k];
         if (done.count(p.id)) {
@@ -192,6 +196,9 @@ int run_batch(const BatchArgs& a)
         std::string error;
         const auto t0 = std::chrono::steady_clock::now();
         nlohmann::json line = compare_pair(a, self, p, code, error);
+        // Ctrl-C reaches the pair's process too (or is passed on to it): the
+        // pair is not recorded and runs again on resume.
+        if (interrupted()) break;
         line["elapsed_seconds"] =
             std::round(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1000.0) / 1000.0;
         line["meshdiff_version"] = MESHDIFF_VERSION;
@@ -207,6 +214,13 @@ int run_batch(const BatchArgs& a)
         if (!a.quiet)
             std::cerr << fmt::format("[{}/{}] {} {}{}\n", k + 1, pairs.size(), code == kOk ? "ok   " : "ERROR", p.id,
                                      code == kOk ? "" : ": " + error);
+    }
+    if (interrupted()) {
+        std::cerr << fmt::format(
+            "meshdiff: batch interrupted by {}: {} ok, {} failed recorded in {}; the pair that was running is not "
+            "recorded; the same command resumes\n",
+            interrupt_signal() == SIGTERM ? "SIGTERM" : "SIGINT", ok, failed, a.out);
+        return kInterrupted;
     }
     std::cerr << fmt::format("batch: {} ok, {} failed, {} already done (shard {}/{}, {} pairs in the list)\n", ok,
                              failed, skipped, shard, n_shards, pairs.size());

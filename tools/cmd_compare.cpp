@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "interrupt.h"
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
@@ -7,6 +8,7 @@
 #include "meshdiff/sample_cloud.h"
 #include "meshdiff/vertex_maps.h"
 #include "options.h"
+#include "progress_display.h"
 
 #include <fmt/format.h>
 
@@ -31,6 +33,7 @@ struct CompareArgs
     std::string samples_out;
     std::vector<double> color_range;
     int threads = 0;
+    ProgressCliOptions progress;
 };
 
 int run_compare(const CompareArgs& a)
@@ -63,10 +66,19 @@ int run_compare(const CompareArgs& a)
             throw InvalidArgumentError("--color-range needs MIN MAX with MIN < MAX");
         range = std::pair{a.color_range[0], a.color_range[1]};
     }
+    install_interrupt_handlers();
     // Either input may be a point cloud (vertices, no faces): cloud_distance.h.
+    ProgressDisplay progress(a.progress);
+    options.progress = &progress;
+    progress.stage("reading", 2);
     const LoadedMesh original = read_mesh_or_cloud(a.original);
+    progress.advance(1);
+    check_cancelled(&progress);
     const LoadedMesh processed = read_mesh_or_cloud(a.processed);
+    progress.advance(2);
     const Comparison c = compare_meshes(original, processed, options);
+    check_cancelled(&progress);  // once interrupted, nothing is written
+    progress.finish();
     // Both maps share one colour scale: the given range, else [0, the largest distance of both].
     if (!range && !map_processed.empty() && !map_original.empty()) range = distance_map_range(c);
     std::string legend;
@@ -119,6 +131,7 @@ void add_compare_command(CLI::App& app, Action& action)
         ->expected(2)
         ->check(in_range(-1e300, 1e300));
     sub->add_option("--threads", args->threads, "worker threads (0: all cores)")->capture_default_str();
+    add_progress_options(sub, args->progress);
     sub->callback([args, &action] { action = [args] { return run_compare(*args); }; });
 }
 

@@ -1,4 +1,5 @@
 #include "commands.h"
+#include "interrupt.h"
 #include "meshdiff/corsini.h"
 #include "meshdiff/error.h"
 #include "meshdiff/facts.h"
@@ -8,8 +9,10 @@
 #include "meshdiff/roughness.h"
 #include "meshdiff/vertex_maps.h"
 #include "options.h"
+#include "progress_display.h"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <future>
 #include <iostream>
@@ -19,6 +22,12 @@ namespace meshdiff::cli {
 
 namespace {
 
+// The topology report runs on a thread of its own, unless --threads 1.
+std::launch facts_policy()
+{
+    return omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred;
+}
+
 struct ProfileArgs
 {
     std::string mesh;
@@ -27,6 +36,7 @@ struct ProfileArgs
     std::string vertex_data;
     double color_range = 0.0;
     int threads = 0;
+    ProgressCliOptions progress;
     bool exact = false;
     std::string exact_property = "exact_H";
 };
@@ -37,10 +47,20 @@ int run_corsini(const ProfileArgs& a)
     if (!a.vertex_data.empty() || a.exact || a.color_range > 0.0)
         throw InvalidArgumentError("--vertex-data, --exact and --color-range need --measure sigma");
     const CorsiniOptions options = to_corsini_options(a.profile);
+    ProgressDisplay progress(a.progress);
+    progress.stage("reading", 1);
     const LoadedMesh loaded = read_mesh(a.mesh);
-    auto facts_future = std::async(std::launch::async, [&loaded] { return mesh_facts(loaded); });
+    progress.advance(1);
+    auto facts_future = std::async(facts_policy(), [&loaded, &progress] {
+        const ProgressScope in_this_thread(&progress);  // it stops on Ctrl-C too
+        return mesh_facts(loaded);
+    });
+    progress.stage("corsini", 1);
     const CorsiniProfile profile = corsini_profile(loaded.mesh, options);
+    progress.advance(1);
     const MeshFacts facts = facts_future.get();
+    check_cancelled(&progress);  // once interrupted, nothing is written
+    progress.finish();
     if (!a.json.empty()) write_json(a.json, corsini_profile_json(facts, profile));
     if (a.json != "-") std::cout << corsini_profile_text(facts, profile);
     return 0;
@@ -49,16 +69,25 @@ int run_corsini(const ProfileArgs& a)
 int run_profile(const ProfileArgs& a)
 {
     set_threads(a.threads);
+    install_interrupt_handlers();
     for (const auto& [what, out] : {std::pair{"--json", a.json}, {"--vertex-data", a.vertex_data}})
         refuse_overwriting_inputs(what, out, {a.mesh});
     if (a.color_range < 0.0) throw InvalidArgumentError("--color-range must be > 0");
     if (parse_enum<RoughnessMeasure>(a.profile.measure) == RoughnessMeasure::Corsini) return run_corsini(a);
     if (a.profile.unbiased_variance) throw InvalidArgumentError("--unbiased-variance needs --measure corsini");
-    const ProfileOptions options = to_profile_options(a.profile, !a.vertex_data.empty() || a.exact);
+    ProfileOptions options = to_profile_options(a.profile, !a.vertex_data.empty() || a.exact);
+    ProgressDisplay progress(a.progress);
+    options.progress = &progress;
+    progress.stage("reading", 1);
     const LoadedMesh loaded = read_mesh(a.mesh);
+    progress.advance(1);
+    check_cancelled(&progress);
     // The topology report is serial; it overlaps the serial stages of the
     // profile (normalisation, adjacency, normals) on another thread.
-    auto facts_future = std::async(std::launch::async, [&loaded] { return mesh_facts(loaded); });
+    auto facts_future = std::async(facts_policy(), [&loaded, &progress] {
+        const ProgressScope in_this_thread(&progress);  // it stops on Ctrl-C too
+        return mesh_facts(loaded);
+    });
     const RoughnessProfile profile = roughness_profile(loaded.mesh, options);
     const MeshFacts facts = facts_future.get();
 
@@ -78,6 +107,8 @@ int run_profile(const ProfileArgs& a)
         text += exact_profile_text(profile, e, a.exact_property);
         j["exact"] = exact_profile_json(profile, e, a.exact_property);
     }
+    check_cancelled(&progress);  // once interrupted, nothing is written
+    progress.finish();
     if (!a.json.empty()) write_json(a.json, j);
     if (a.json != "-") std::cout << text;
     return 0;
@@ -104,6 +135,7 @@ void add_profile_command(CLI::App& app, Action& action)
     sub->add_option("--exact-property", args->exact_property, "the PLY vertex property holding the exact H")
         ->capture_default_str();
     sub->add_option("--threads", args->threads, "worker threads (0: all cores)")->capture_default_str();
+    add_progress_options(sub, args->progress);
     sub->callback([args, &action] { action = [args] { return run_profile(*args); }; });
 }
 

@@ -46,9 +46,9 @@ int run_smooth(const SmoothArgs& a)
     refuse_overwriting_inputs("OUT", a.out, {a.in});
     refuse_overwriting_inputs("--json", a.json, {a.in, a.out});
     const bool record = !a.json.empty();
+    set_threads(a.threads);  // the smoothing itself is parallel too
     RecordOptions record_options;
     if (record) {
-        set_threads(a.threads);
         record_options.every = a.profile_every;
         record_options.profile = to_profile_options(a.profile, false);
         record_options.distance = !a.no_distance;
@@ -123,7 +123,8 @@ void add_smooth_command(CLI::App& app, Action& action)
                     "without --profile-every only the first and last iterations are recorded");
     args->profile.levels = "1,5,10,20";
     add_profile_options(sub, args->profile, false);
-    sub->add_option("--threads", args->threads, "worker threads of the profile (0: all cores)")->capture_default_str();
+    sub->add_option("--threads", args->threads, "worker threads of the smoothing and the profile (0: all cores)")
+        ->capture_default_str();
     sub->callback([args, &action] { action = [args] { return run_smooth(*args); }; });
 }
 

@@ -27,7 +27,8 @@ std::string self_executable()
     return p.string();
 }
 
-ChildResult run_child(const std::string& program, const std::vector<std::string>& args, double timeout_seconds)
+ChildResult run_child(const std::string& program, const std::vector<std::string>& args, double timeout_seconds,
+                      bool (*stop)())
 {
     int out_pipe[2], err_pipe[2];
     if (pipe2(out_pipe, O_CLOEXEC) != 0) throw IoError(fmt::format("pipe: {}", std::strerror(errno)));
@@ -58,6 +59,7 @@ ChildResult run_child(const std::string& program, const std::vector<std::string>
     ChildResult r;
     using clock = std::chrono::steady_clock;
     const auto deadline = clock::now() + std::chrono::duration<double>(timeout_seconds);
+    auto kill_at = clock::time_point::max();  // SIGKILL after a SIGTERM that was not obeyed
     pollfd fds[2] = {{out_pipe[0], POLLIN, 0}, {err_pipe[0], POLLIN, 0}};
     std::string* sink[2] = {&r.out, &r.err};
     int open_fds = 2;
@@ -72,6 +74,17 @@ ChildResult run_child(const std::string& program, const std::vector<std::string>
             } else {
                 wait_ms = int(std::min<long long>(left, 1000));
             }
+        }
+        if (stop) {
+            if (!r.stopped && stop()) {
+                kill(pid, SIGTERM);
+                r.stopped = true;
+                kill_at = clock::now() + std::chrono::seconds(5);
+            } else if (r.stopped && clock::now() >= kill_at) {
+                kill(pid, SIGKILL);
+                kill_at = clock::time_point::max();
+            }
+            wait_ms = wait_ms < 0 ? 100 : std::min(wait_ms, 100);
         }
         const int n = poll(fds, 2, wait_ms);
         if (n < 0 && errno != EINTR) break;

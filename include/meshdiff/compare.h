@@ -11,6 +11,7 @@
 #include "meshdiff/facts.h"
 #include "meshdiff/hausdorff.h"
 #include "meshdiff/io.h"
+#include "meshdiff/progress.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/roughness_distance.h"
 #include "meshdiff/same_connectivity.h"
@@ -52,6 +53,11 @@ struct CompareOptions
     //! (Comparison::forward_samples, backward_samples; about 50 bytes per
     //! sample and direction), e.g. for sample_cloud.h.
     bool keep_samples = false;
+    //! Reports every stage (curvature, rings, metric levels, index, sampling,
+    //! distances, certification) and stops the comparison with Cancelled when
+    //! it says so (progress.h); not owned, used only during the call.
+    //! nullptr: the Progress of the calling thread's ProgressScope, if any.
+    Progress* progress = nullptr;
 };
 
 struct Comparison

@@ -44,4 +44,13 @@ public:
     using Error::Error;
 };
 
+//! The computation was stopped because its Progress (progress.h) said
+//! cancelled(), e.g. on Ctrl-C (exit code 130, the shell's code for SIGINT).
+class Cancelled : public Error
+{
+public:
+    Cancelled() : Error("cancelled") {}
+    using Error::Error;
+};
+
 }  // namespace meshdiff

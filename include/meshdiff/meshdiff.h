@@ -22,6 +22,7 @@
 #include "meshdiff/normalize.h"
 #include "meshdiff/normals.h"
 #include "meshdiff/point_triangle.h"
+#include "meshdiff/progress.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/roughness_distance.h"
 #include "meshdiff/same_connectivity.h"

@@ -15,6 +15,7 @@
 #include "meshdiff/curvature.h"
 #include "meshdiff/mesh.h"
 #include "meshdiff/normalize.h"
+#include "meshdiff/progress.h"
 
 #include <cstdint>
 #include <vector>
@@ -35,6 +36,10 @@ struct ProfileOptions
     //! normalised mesh, each finite and > 0, in the order reported. Empty by
     //! default (default_radii() is what `--radii default` asks for).
     std::vector<double> radii{};
+    //! Reports the stages (curvature, rings, metric levels) and stops the
+    //! computation with Cancelled when it says so (progress.h); not owned.
+    //! nullptr: the Progress of the calling thread's ProgressScope, if any.
+    Progress* progress = nullptr;
 };
 
 //! sigma and its counts at one level.
