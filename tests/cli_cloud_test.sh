@@ -115,9 +115,11 @@ import struct, sys
 d = open(sys.argv[1], "rb").read()
 head, body = d.split(b"end_header\n", 1)
 n = int([l for l in head.decode().split("\n") if l.startswith("element vertex")][0].split()[2])
-rows = [struct.unpack_from("<ddddBBi", body, i * 38) for i in range(n)]
-pts = [r for r in rows if r[5] == 1]  # backward: the cloud's points
-assert [r[4] for r in pts] == [3] * 5 and [r[6] for r in pts] == [-1] * 5
+# x y z distance signed_distance kind direction face
+rows = [struct.unpack_from("<dddddBBi", body, i * 46) for i in range(n)]
+pts = [r for r in rows if r[6] == 1]  # backward: the cloud's points
+assert [r[5] for r in pts] == [3] * 5 and [r[7] for r in pts] == [-1] * 5
+assert all(r[4] != r[4] for r in pts)  # a cloud's points are not signed: NaN
 want = [0.5, 0.25, 0.0, 1.0, 0.5]
 assert all(abs(r[3] - w) < 1e-15 for r, w in zip(pts, want)), pts
 PY
