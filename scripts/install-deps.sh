@@ -9,6 +9,8 @@ pkgs=(build-essential cmake pkg-config
       clang-format python3
       # GNU parallel: the cluster recipe of docs/cli.md (batch shards), tested by tests/cli_batch_cluster_test.sh.
       parallel
+      # kill(1) of a process group and script(1) for a pseudo-terminal: tests/cli_progress_test.sh.
+      procps bsdutils
       # The Python module (python/) and its tests, for Debian's /usr/bin/python3;
       # OpenMesh's command-line decimater for examples/evaluate_decimation.py.
       pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib libopenmesh-apps
