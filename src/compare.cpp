@@ -27,6 +27,17 @@ MeshFacts cloud_facts(const LoadedMesh& loaded)
     return f;
 }
 
+// Moves the per-vertex distances (and signed ones, if any) of c.distance to
+// the comparison's own fields.
+void take_vertex_distances(Comparison& c)
+{
+    SurfaceDistance& d = *c.distance;
+    c.processed_vertex_distance = std::exchange(d.b_vertex_distance, {});
+    c.original_vertex_distance = std::exchange(d.a_vertex_distance, {});
+    c.processed_vertex_signed_distance = std::exchange(d.b_vertex_signed_distance, {});
+    c.original_vertex_signed_distance = std::exchange(d.a_vertex_signed_distance, {});
+}
+
 // compare_meshes() when \p a or \p b is a point cloud (options checked).
 Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const CompareOptions& options)
 {
@@ -45,10 +56,7 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
     c.distance = cloud_surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff,
                                         options.summary, options.keep_samples ? &c.forward_samples : nullptr,
                                         options.keep_samples ? &c.backward_samples : nullptr);
-    c.processed_vertex_distance = std::move(c.distance->b_vertex_distance);
-    c.distance->b_vertex_distance.clear();
-    c.original_vertex_distance = std::move(c.distance->a_vertex_distance);
-    c.distance->a_vertex_distance.clear();
+    take_vertex_distances(c);
     c.same_connectivity_unavailable = which + " (no faces)";
     c.original = cloud_a ? cloud_facts(a) : mesh_facts(a);
     c.processed = cloud_b ? cloud_facts(b) : mesh_facts(b);
@@ -102,14 +110,7 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         c.distance = surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff,
                                       options.summary, options.keep_samples ? &c.forward_samples : nullptr,
                                       options.keep_samples ? &c.backward_samples : nullptr);
-        c.processed_vertex_distance = std::move(c.distance->b_vertex_distance);
-        c.distance->b_vertex_distance.clear();
-        c.original_vertex_distance = std::move(c.distance->a_vertex_distance);
-        c.distance->a_vertex_distance.clear();
-        c.processed_vertex_signed_distance = std::move(c.distance->b_vertex_signed_distance);
-        c.distance->b_vertex_signed_distance.clear();
-        c.original_vertex_signed_distance = std::move(c.distance->a_vertex_signed_distance);
-        c.distance->a_vertex_signed_distance.clear();
+        take_vertex_distances(c);
     } else if (options.vertex_distances) {
         c.processed_vertex_distance =
             vertex_distances(b.mesh, a.mesh, ClosestPointIndex(a.mesh), c.processed_vertex_signed_distance);

@@ -12,8 +12,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace meshdiff;
@@ -35,6 +37,25 @@ void append(Mesh& mesh, const Mesh& part, const Vec3& offset)
 
 // Compares disk_means(..., with_sizes = true) with the definition: a breadth-
 // first search (ring_distances) per centre, its defined values averaged.
+// The mean of the defined values over the 1..level-ring disk of \p centre
+// (NaN if none) and the disk's size, by a search from that centre alone.
+std::pair<double, std::uint32_t> brute_force_disk_mean(const Adjacency& adj, const std::vector<double>& values,
+                                                       std::size_t centre, int level)
+{
+    const auto dist = ring_distances(adj, centre, level);
+    double sum = 0;
+    std::uint32_t cnt = 0, size = 0;
+    for (std::size_t j = 0; j < values.size(); ++j)
+        if (dist[j] > 0) {
+            ++size;
+            if (!std::isnan(values[j])) {
+                sum += values[j];
+                ++cnt;
+            }
+        }
+    return {cnt ? sum / cnt : std::numeric_limits<double>::quiet_NaN(), size};
+}
+
 void expect_brute_force_disk_means(const Mesh& mesh, const std::vector<double>& values, const std::vector<int>& levels)
 {
     const Adjacency adj = vertex_adjacency(mesh);
@@ -49,22 +70,12 @@ void expect_brute_force_disk_means(const Mesh& mesh, const std::vector<double>& 
                 ASSERT_EQ(dm.size[k][i], 0u) << "undefined centre " << i;
                 continue;
             }
-            const auto dist = ring_distances(adj, i, levels[k]);
-            double sum = 0;
-            std::uint32_t cnt = 0, size = 0;
-            for (std::size_t j = 0; j < values.size(); ++j)
-                if (dist[j] > 0) {
-                    ++size;
-                    if (!std::isnan(values[j])) {
-                        sum += values[j];
-                        ++cnt;
-                    }
-                }
+            const auto [mean, size] = brute_force_disk_mean(adj, values, i, levels[k]);
             ASSERT_EQ(dm.size[k][i], size) << "vertex " << i << ", level " << levels[k];
-            if (cnt == 0) {
+            if (std::isnan(mean)) {
                 ASSERT_TRUE(std::isnan(dm.mean[k][i])) << "vertex " << i << ", level " << levels[k];
             } else {
-                ASSERT_NEAR(dm.mean[k][i], sum / cnt, 1e-12 * (1 + std::abs(sum / cnt)))
+                ASSERT_NEAR(dm.mean[k][i], mean, 1e-12 * (1 + std::abs(mean)))
                     << "vertex " << i << ", level " << levels[k];
             }
         }
@@ -298,20 +309,9 @@ TEST(DiskMeans, AgreeWithBreadthFirstSearchOnAShuffledVertexOrder)
                 EXPECT_TRUE(std::isnan(dm.mean[k][c]));
                 continue;
             }
-            const auto dist = ring_distances(adj, c, levels[k]);
-            double sum = 0;
-            std::uint32_t cnt = 0, size = 0;
-            for (std::size_t j = 0; j < n; ++j)
-                if (dist[j] > 0) {
-                    ++size;
-                    if (!std::isnan(values[j])) {
-                        sum += values[j];
-                        ++cnt;
-                    }
-                }
+            const auto [mean, size] = brute_force_disk_mean(adj, values, c, levels[k]);
             ASSERT_EQ(dm.size[k][c], size) << "vertex " << c << ", level " << levels[k];
-            ASSERT_NEAR(dm.mean[k][c], sum / cnt, 1e-12 * (1 + std::abs(sum / cnt)))
-                << "vertex " << c << ", level " << levels[k];
+            ASSERT_NEAR(dm.mean[k][c], mean, 1e-12 * (1 + std::abs(mean))) << "vertex " << c << ", level " << levels[k];
         }
     }
 }
