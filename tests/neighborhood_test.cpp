@@ -122,19 +122,9 @@ TEST(RingNeighborhood, DiskMeansMatchBruteForceWithUndefinedValues)
                 EXPECT_TRUE(std::isnan(dm.mean[k][i]));
                 continue;
             }
-            const auto dist = ring_distances(adj, i, levels[k]);
-            double sum = 0;
-            int cnt = 0, size = 0;
-            for (std::size_t j = 0; j < values.size(); ++j)
-                if (dist[j] > 0) {
-                    ++size;
-                    if (!std::isnan(values[j])) {
-                        sum += values[j];
-                        ++cnt;
-                    }
-                }
-            ASSERT_EQ(dm.size[k][i], std::uint32_t(size));
-            ASSERT_NEAR(dm.mean[k][i], sum / cnt, 1e-12 * std::abs(sum / cnt));
+            const auto [mean, size] = brute_force_disk_mean(adj, values, i, levels[k]);
+            ASSERT_EQ(dm.size[k][i], size);
+            ASSERT_NEAR(dm.mean[k][i], mean, 1e-12 * std::abs(mean));
         }
 }
 
