@@ -3,6 +3,7 @@
 #include "meshdiff/error.h"
 
 #include "detail/progress.h"
+#include "detail/sample_plan.h"
 
 #include <Eigen/Geometry>
 
@@ -76,11 +77,14 @@ std::size_t sample_target(const Mesh& mesh, const SamplingOptions& options, std:
     return default_target;
 }
 
-namespace {
+namespace detail {
 
-SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions& options)
+SamplePlan plan_samples(const Mesh& mesh, const SamplingOptions& options)
 {
-    SurfaceSamples s;
+    SamplePlan plan;
+    SurfaceSamples& s = plan.counts;
+    plan.scheme = options.face_scheme;
+    plan.seed = options.seed;
     s.target = sample_target(mesh, options, 10 * mesh.n_faces());
 
     const auto degenerate = degenerate_face_mask(mesh);
@@ -89,18 +93,9 @@ SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions
     for (std::size_t f = 0; f < mesh.n_faces(); ++f)
         if (!degenerate[f]) area += face_area[f] = 0.5 * face_cross(mesh, f).norm();
 
-    // Counts are decided sequentially (carry-over), positions are then filled
-    // in parallel into disjoint ranges: the result does not depend on threads.
-    auto grow = [&s](std::size_t extra) {
-        s.points.resize(s.points.size() + extra);
-        s.kind.resize(s.points.size());
-        s.element.resize(s.points.size());
-    };
-    auto put = [&s](std::size_t at, const Vec3& p, SampleKind kind, std::size_t element) {
-        s.points[at] = p;
-        s.kind[at] = kind;
-        s.element[at] = std::uint32_t(element);
-    };
+    // Counts are decided sequentially (carry-over); SampleMaker then fills
+    // positions in parallel into disjoint ranges: the result does not depend
+    // on threads.
 
     // Vertices: every referenced one, in index order.
     if (options.vertices) {
@@ -108,19 +103,17 @@ SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions
         for (const Face& t : mesh.faces)
             for (auto v : t) referenced[std::size_t(v)] = 1;
         for (std::size_t v = 0; v < mesh.n_vertices(); ++v)
-            if (referenced[v]) {
-                grow(1);
-                put(s.points.size() - 1, mesh.points[v], SampleKind::OnVertex, v);
-            }
-        s.n_vertex = s.points.size();
+            if (referenced[v]) plan.vertices.push_back(std::uint32_t(v));
+        s.n_vertex = plan.vertices.size();
     }
     check_cancelled(current_progress());  // the serial steps are checked in between
-    if (s.n_vertex >= s.target) return s;
+    if (s.n_vertex >= s.target) return plan;
     double remaining = double(s.target - s.n_vertex);
 
     // Edges: density sqrt(face density) per unit length, with carry-over.
     if (options.edges) {
-        const auto edges = unique_edges(mesh);
+        plan.edges = unique_edges(mesh);
+        const auto& edges = plan.edges;
         check_cancelled(current_progress());
         std::vector<double> len(edges.size());
         double length = 0.0;
@@ -129,7 +122,8 @@ SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions
         // Never more than the remaining budget (Metro would overshoot here).
         const double cap = length > 0.0 ? remaining / length : 0.0;
         s.edge_density = options.faces && area > 0.0 ? std::min(std::sqrt(remaining / area), cap) : cap;
-        std::vector<std::size_t> offset(edges.size() + 1, s.points.size());
+        std::vector<std::size_t>& offset = plan.edge_offset;
+        offset.assign(edges.size() + 1, s.n_vertex);
         double carry = 0.0;
         for (std::size_t i = 0; i < edges.size(); ++i) {
             carry += len[i] * s.edge_density;
@@ -137,19 +131,7 @@ SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions
             offset[i + 1] = offset[i] + n;
             carry -= double(n);
         }
-        grow(offset.back() - s.points.size());
-        const auto n_edges = std::int64_t(edges.size());
-#pragma omp parallel for schedule(static)
-        for (std::int64_t ii = 0; ii < n_edges; ++ii) {
-            const auto i = std::size_t(ii);
-            const std::size_t n = offset[i + 1] - offset[i];
-            const Vec3& p0 = mesh.points[edges[i].a];
-            const Vec3& p1 = mesh.points[edges[i].b];
-            const Vec3 step = (p1 - p0) / double(n + 1);
-            for (std::size_t k = 1; k <= n; ++k)
-                put(offset[i] + k - 1, p0 + step * double(k), SampleKind::OnEdge, edges[i].face);
-        }
-        s.n_edge = s.points.size() - s.n_vertex;
+        s.n_edge = offset.back() - s.n_vertex;
         remaining = std::max(0.0, remaining - double(s.n_edge));
     }
 
@@ -159,8 +141,9 @@ SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions
         s.face_density = remaining / area;
         const bool lattice = options.face_scheme == FaceSampling::SimilarTriangles;
         // Per face: the lattice order k (SimilarTriangles) or the count.
-        std::vector<std::size_t> order(mesh.n_faces(), 0);
-        std::vector<std::size_t> offset(mesh.n_faces() + 1, s.points.size());
+        if (lattice) plan.face_order.assign(mesh.n_faces(), 0);
+        std::vector<std::size_t>& offset = plan.face_offset;
+        offset.assign(mesh.n_faces() + 1, s.n_vertex + s.n_edge);
         double carry = 0.0;
         for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
             std::size_t n = 0;
@@ -168,8 +151,9 @@ SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions
                 carry += face_area[f] * s.face_density;
                 const auto due = std::size_t(carry);
                 if (lattice) {
-                    order[f] = lattice_order(due);
-                    n = order[f] * (order[f] + 1) / 2;
+                    const std::size_t k = lattice_order(due);
+                    plan.face_order[f] = std::uint32_t(k);
+                    n = k * (k + 1) / 2;
                 } else {
                     n = due;
                 }
@@ -177,47 +161,128 @@ SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions
             }
             offset[f + 1] = offset[f] + n;
         }
-        grow(offset.back() - s.points.size());
-        auto corners = [&mesh](std::size_t f) {
-            const Face& t = mesh.faces[f];
-            return std::array<const Vec3*, 3>{&mesh.points[std::size_t(t[0])], &mesh.points[std::size_t(t[1])],
-                                              &mesh.points[std::size_t(t[2])]};
-        };
-        if (lattice) {
-            const auto n_faces = std::int64_t(mesh.n_faces());
+        s.n_face = offset.back() - s.n_vertex - s.n_edge;
+    }
+    return plan;
+}
+
+SampleMaker::SampleMaker(const Mesh& mesh, const SamplePlan& plan)
+    : mesh_(mesh), plan_(plan), rng_(plan.seed), drawn_(plan.counts.n_vertex + plan.counts.n_edge)
+{
+}
+
+void SampleMaker::make(std::size_t begin, std::size_t end, Vec3* points, SampleKind* kind, std::uint32_t* element)
+{
+    const Mesh& mesh = mesh_;
+    const SamplePlan& plan = plan_;
+    auto put = [&](std::size_t at, const Vec3& p, SampleKind k, std::size_t e) {
+        points[at - begin] = p;
+        kind[at - begin] = k;
+        element[at - begin] = std::uint32_t(e);
+    };
+    // The elements i of a range [offset[i], offset[i + 1]) meeting [begin, end).
+    std::int64_t first = 0, last = 0;
+    auto elements = [begin, end, &first, &last](const std::vector<std::size_t>& offset) {
+        first = std::max<std::int64_t>(std::upper_bound(offset.begin(), offset.end() - 1, begin) - offset.begin() - 1, 0);
+        last = std::lower_bound(offset.begin(), offset.end() - 1, end) - offset.begin();
+    };
+
+    // Vertices.
+    const std::size_t nv = plan.counts.n_vertex;
+    for (std::size_t at = begin; at < std::min(end, nv); ++at) {
+        const std::uint32_t v = plan.vertices[at];
+        put(at, mesh.points[v], SampleKind::OnVertex, v);
+    }
+
+    // Edges: the n points that cut an edge into n + 1 equal parts.
+    if (plan.counts.n_edge > 0 && end > nv && begin < plan.edge_offset.back()) {
+        const auto& offset = plan.edge_offset;
+        const auto& edges = plan.edges;
+        elements(offset);
 #pragma omp parallel for schedule(static)
-            for (std::int64_t ff = 0; ff < n_faces; ++ff) {
-                const auto f = std::size_t(ff);
-                const std::size_t k = order[f];
-                if (k == 0) continue;
-                // Interior points of the lattice of step 1/(k+2) along both edges.
-                const auto [v0, v1, v2] = corners(f);
-                const Vec3 e1 = (*v1 - *v0) / double(k + 2);
-                const Vec3 e2 = (*v2 - *v0) / double(k + 2);
-                std::size_t at = offset[f];
-                for (std::size_t i = 1; i <= k; ++i)
-                    for (std::size_t j = 1; i + j <= k + 1; ++j)
-                        put(at++, *v0 + e1 * double(i) + e2 * double(j), SampleKind::OnFace, f);
-            }
-        } else {
-            std::mt19937_64 rng(options.seed);
-            for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
-                const auto [v0, v1, v2] = corners(f);
-                const Vec3 e1 = *v1 - *v0;
-                const Vec3 e2 = *v2 - *v0;
-                for (std::size_t at = offset[f]; at < offset[f + 1]; ++at) {
-                    double r1 = unit_double(rng);
-                    double r2 = unit_double(rng);
-                    if (r1 + r2 > 1.0) {
-                        r1 = 1.0 - r1;
-                        r2 = 1.0 - r2;
-                    }
-                    put(at, *v0 + e1 * r1 + e2 * r2, SampleKind::OnFace, f);
+        for (std::int64_t ii = first; ii < last; ++ii) {
+            const auto i = std::size_t(ii);
+            const std::size_t n = offset[i + 1] - offset[i];
+            const Vec3& p0 = mesh.points[edges[i].a];
+            const Vec3& p1 = mesh.points[edges[i].b];
+            const Vec3 step = (p1 - p0) / double(n + 1);
+            const std::size_t k0 = std::max(offset[i], begin) - offset[i] + 1;
+            const std::size_t k1 = std::min(offset[i + 1], end) - offset[i];
+            for (std::size_t k = k0; k <= k1; ++k)
+                put(offset[i] + k - 1, p0 + step * double(k), SampleKind::OnEdge, edges[i].face);
+        }
+    }
+
+    // Faces.
+    if (plan.counts.n_face == 0 || end <= plan.face_offset.front()) return;
+    const auto& offset = plan.face_offset;
+    elements(offset);
+    auto corners = [&mesh](std::size_t f) {
+        const Face& t = mesh.faces[f];
+        return std::array<const Vec3*, 3>{&mesh.points[std::size_t(t[0])], &mesh.points[std::size_t(t[1])],
+                                          &mesh.points[std::size_t(t[2])]};
+    };
+    if (plan.scheme == FaceSampling::SimilarTriangles) {
+#pragma omp parallel for schedule(static)
+        for (std::int64_t ff = first; ff < last; ++ff) {
+            const auto f = std::size_t(ff);
+            const std::size_t k = plan.face_order[f];
+            if (k == 0) continue;
+            // Interior points of the lattice of step 1/(k+2) along both edges,
+            // row by row (row i has k + 1 - i points).
+            const auto [v0, v1, v2] = corners(f);
+            const Vec3 e1 = (*v1 - *v0) / double(k + 2);
+            const Vec3 e2 = (*v2 - *v0) / double(k + 2);
+            std::size_t at = offset[f];
+            for (std::size_t i = 1; i <= k && at < end; ++i) {
+                if (at + (k + 1 - i) <= begin) {
+                    at += k + 1 - i;
+                    continue;
                 }
+                for (std::size_t j = 1; i + j <= k + 1; ++j, ++at)
+                    if (at >= begin && at < end) put(at, *v0 + e1 * double(i) + e2 * double(j), SampleKind::OnFace, f);
             }
         }
-        s.n_face = s.points.size() - s.n_vertex - s.n_edge;
+    } else {
+        // One random stream over the face samples in order, two draws each.
+        const std::size_t start = std::max(begin, offset.front());
+        if (start < drawn_) {
+            rng_.seed(plan.seed);
+            drawn_ = offset.front();
+        }
+        rng_.discard(2 * (start - drawn_));
+        for (auto ff = first; ff < last; ++ff) {
+            const auto f = std::size_t(ff);
+            const auto [v0, v1, v2] = corners(f);
+            const Vec3 e1 = *v1 - *v0;
+            const Vec3 e2 = *v2 - *v0;
+            for (std::size_t at = std::max(offset[f], start); at < std::min(offset[f + 1], end); ++at) {
+                double r1 = unit_double(rng_);
+                double r2 = unit_double(rng_);
+                if (r1 + r2 > 1.0) {
+                    r1 = 1.0 - r1;
+                    r2 = 1.0 - r2;
+                }
+                put(at, *v0 + e1 * r1 + e2 * r2, SampleKind::OnFace, f);
+            }
+        }
+        drawn_ = std::min(end, offset.back());
     }
+}
+
+}  // namespace detail
+
+namespace {
+
+SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions& options)
+{
+    const detail::SamplePlan plan = detail::plan_samples(mesh, options);
+    SurfaceSamples s = plan.counts;
+    const std::size_t n = plan.size();
+    s.points.resize(n);
+    s.kind.resize(n);
+    s.element.resize(n);
+    detail::SampleMaker(mesh, plan).make(0, n, s.points.data(), s.kind.data(), s.element.data());
     return s;
 }
 

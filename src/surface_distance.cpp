@@ -1,16 +1,21 @@
 #include "meshdiff/surface_distance.h"
 
 #include "meshdiff/error.h"
+#include "meshdiff/progress.h"
 #include "meshdiff/signed_distance.h"
 
 #include "detail/compensated_sum.h"
 #include "detail/hausdorff.h"
+#include "detail/progress.h"
+#include "detail/sample_plan.h"
+#include "detail/surface_distance.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string_view>
 #include <utility>
 
 namespace meshdiff {
@@ -312,6 +317,240 @@ SampledDirection sampled_direction(const Mesh& from, const Target& to, const Sam
     return d;
 }
 
+// The Progress of one part of a stage run as a batch of its own (a chunk of
+// the samples' queries): the part's stage is not announced, its work is
+// reported as done in the whole stage from `offset` on, and it stops when the
+// whole run is cancelled.
+class PartProgress : public Progress
+{
+public:
+    PartProgress(Progress* whole, std::size_t offset) : whole_(whole), offset_(offset) {}
+    void stage(std::string_view, std::size_t) override {}
+    void advance(std::size_t done) override { whole_->advance(offset_ + done); }
+    bool cancelled() const override { return whole_->cancelled(); }
+
+private:
+    Progress* whole_;
+    std::size_t offset_;
+};
+
+// The statistics of one direction folded over its samples a range at a time,
+// in sample order, with the same sequential sums as distance_stats(),
+// signed_stats_of() and area_weighted_stats() over all samples at once.
+class DirectionFold
+{
+public:
+    DirectionFold(const Mesh& from, const detail::SamplePlan& plan, const std::vector<double>& thresholds,
+                  bool is_signed)
+        : from_(from), plan_(plan), thresholds_(thresholds), signed_(is_signed), below_(thresholds.size()),
+          run_below_(thresholds.size())
+    {
+    }
+
+    // Samples [begin, begin + n) (points p, kinds, elements, distances d and
+    // signs, those without a sign when the direction has none).
+    void add(std::size_t begin, std::size_t n, const Vec3* p, const SampleKind* kind, const std::uint32_t* element,
+             const double* d, const std::int8_t* sign)
+    {
+        for (std::size_t i = 0; i < n; ++i) {
+            const double x = d[i];
+            if (begin + i == 0) {
+                s_.min = s_.max = x;
+                set_max(p[i], kind[i], element[i]);
+                if (signed_) smin_ = smax_ = signed_of(sign[i], x);
+            }
+            s_.min = std::min(s_.min, x);
+            if (x > s_.max) {
+                s_.max = x;
+                set_max(p[i], kind[i], element[i]);
+            }
+            sum_.add(x);
+            sum2_.add(x * x);
+            if (signed_) {
+                const double y = signed_of(sign[i], x);
+                smin_ = std::min(smin_, y);
+                smax_ = std::max(smax_, y);
+                ssum_.add(y);
+                ssum2_.add(y * y);
+            }
+            if (kind[i] != SampleKind::OnFace) continue;
+            // A run of the samples of one face, summed plainly, then added
+            // with its weight (as area_weighted_stats() does).
+            if (!in_run_ || element[i] != run_face_) {
+                end_run();
+                in_run_ = true;
+                run_face_ = element[i];
+            }
+            s1_ += x;
+            s2_ += x * x;
+            for (std::size_t k = 0; k < thresholds_.size(); ++k) run_below_[k] += x < thresholds_[k];
+        }
+    }
+
+    // The statistics of the n samples whose distances are \p distances (in
+    // sample order; partially sorted here), the histogram in \p bins bins
+    // (none for 0), the area shares below the thresholds in \p within.
+    DistanceStats finish(std::vector<double>& distances, std::size_t bins, std::vector<double>& within)
+    {
+        end_run();
+        DistanceStats s = s_;
+        s.n_vertex = plan_.counts.n_vertex;
+        s.n_edge = plan_.counts.n_edge;
+        s.n_face = plan_.counts.n_face;
+        const auto n = double(distances.size());
+        s.mean = sum_.value() / n;
+        s.rms = std::sqrt(sum2_.value() / n);
+        Sum dev;
+        for (double d : distances) dev.add((d - s.mean) * (d - s.mean));
+        s.stddev = std::sqrt(dev.value() / n);
+        if (signed_) {
+            SignedDistanceStats r;
+            r.min = smin_;
+            r.max = smax_;
+            r.mean = ssum_.value() / n;
+            r.rms = std::sqrt(ssum2_.value() / n);
+            s.signed_distance = r;
+        }
+        s.area_weighted = area_weighted(within);
+        if (bins > 0) s.histogram = distance_histogram(distances, bins);
+        // In place: the same nth smallest values as in a copy.
+        s.p50 = nearest_rank(distances, 50, 0);
+        s.p95 = nearest_rank(distances, 95, 50);
+        s.p99 = nearest_rank(distances, 99, 95);
+        return s;
+    }
+
+private:
+    static double signed_of(std::int8_t sign, double d) { return sign == 0 ? 0.0 : double(sign) * d; }
+
+    void set_max(const Vec3& p, SampleKind kind, std::uint32_t element)
+    {
+        s_.max_point = p;
+        s_.max_kind = kind;
+        s_.max_element = element;
+    }
+
+    std::size_t face_samples(std::size_t f) const { return plan_.face_offset[f + 1] - plan_.face_offset[f]; }
+    double face_area(std::size_t f) const { return 0.5 * face_cross(from_, f).norm(); }
+
+    void end_run()
+    {
+        if (!in_run_) return;
+        const double w = face_area(run_face_) / double(face_samples(run_face_));
+        sum_w_.add(w * s1_);
+        sum_w2_.add(w * s2_);
+        for (std::size_t k = 0; k < thresholds_.size(); ++k)
+            if (run_below_[k]) below_[k].add(w * double(run_below_[k]));
+        in_run_ = false;
+        s1_ = s2_ = 0.0;
+        std::fill(run_below_.begin(), run_below_.end(), 0);
+    }
+
+    std::optional<AreaWeightedStats> area_weighted(std::vector<double>& within) const
+    {
+        within.assign(thresholds_.size(), 0.0);
+        if (plan_.counts.n_face == 0) return std::nullopt;
+        Sum total, sampled;
+        for (std::size_t f = 0; f < from_.n_faces(); ++f) {
+            const double area = face_area(f);
+            total.add(area);
+            if (face_samples(f)) sampled.add(area);
+        }
+        AreaWeightedStats s;
+        s.n_face = plan_.counts.n_face;
+        s.area = sampled.value();
+        if (!(s.area > 0.0)) return std::nullopt;  // only zero-area faces were sampled
+        s.area_fraction = s.area / total.value();
+        s.mean = sum_w_.value() / s.area;
+        s.mean_square = sum_w2_.value() / s.area;
+        s.rms = std::sqrt(s.mean_square);
+        for (std::size_t k = 0; k < below_.size(); ++k) within[k] = std::min(1.0, below_[k].value() / s.area);
+        return s;
+    }
+
+    const Mesh& from_;
+    const detail::SamplePlan& plan_;
+    const std::vector<double>& thresholds_;
+    bool signed_;
+    DistanceStats s_;
+    Sum sum_, sum2_;
+    double smin_ = 0.0, smax_ = 0.0;
+    Sum ssum_, ssum2_;
+    Sum sum_w_, sum_w2_;
+    std::vector<Sum> below_;
+    bool in_run_ = false;
+    std::uint32_t run_face_ = 0;
+    double s1_ = 0.0, s2_ = 0.0;
+    std::vector<std::size_t> run_below_;
+};
+
+// One direction as sampled_direction(), distance_stats(), the signed
+// statistics and summarize() give it, in bounded memory: the samples are
+// made, queried and folded into the statistics \p chunk at a time (a multiple
+// of kQueryBlock: the queries then start from the same triangles as in one
+// batch); only their distances are kept, for the percentiles. The area shares
+// below \p thresholds go to \p within.
+DistanceStats chunked_direction(const Mesh& from, const Target& to, const SamplingOptions& options,
+                                const std::vector<ClosestPoint>* vertex_closest, const std::vector<double>& thresholds,
+                                std::size_t bins, std::size_t chunk, std::vector<double>& within)
+{
+    // As sample_surface() does: check, then plan in the "sampling" stage.
+    validate(options);
+    validate(from, "sample_surface");
+    detail::SamplePlan plan;
+    {
+        detail::StageProgress stage("sampling", 1);
+        plan = detail::plan_samples(from, options);
+        stage.finish();
+    }
+    const std::size_t n = plan.size();
+    if (n == 0) throw InvalidArgumentError("SamplingOptions: the enabled sample kinds give no sample on this mesh");
+    const std::size_t nv = vertex_closest ? plan.counts.n_vertex : 0;  // the vertex samples come first
+    std::vector<double> distances(n);
+    const std::size_t m = std::min(chunk, n);
+    std::vector<Vec3> points(m);
+    std::vector<SampleKind> kind(m);
+    std::vector<std::uint32_t> element(m);
+    std::vector<std::int8_t> signs(to.normals ? m : 0, 0);
+    detail::SampleMaker maker(from, plan);
+    DirectionFold fold(from, plan, thresholds, to.normals != nullptr);
+
+    // The vertex samples with their distances from vertex_closest.
+    for (std::size_t begin = 0; begin < nv; begin += chunk) {
+        const std::size_t k = std::min(nv, begin + chunk) - begin;
+        maker.make(begin, begin + k, points.data(), kind.data(), element.data());
+        for (std::size_t i = 0; i < k; ++i) {
+            const ClosestPoint& c = (*vertex_closest)[element[i]];
+            distances[begin + i] = c.distance;
+            if (to.normals)
+                signs[i] = c.distance > 0.0 ? std::int8_t(distance_sign(to.mesh, *to.normals, points[i], c.face)) : 0;
+        }
+        fold.add(begin, k, points.data(), kind.data(), element.data(), distances.data() + begin, signs.data());
+    }
+    // The others queried, as one stage.
+    Progress* progress = current_progress();
+    detail::StageProgress stage("distances", n - nv);
+    for (std::size_t begin = nv; begin < n; begin += chunk) {
+        const std::size_t k = std::min(n, begin + chunk) - begin;
+        maker.make(begin, begin + k, points.data(), kind.data(), element.data());
+        {
+            PartProgress part(progress, begin - nv);
+            const ProgressScope scope(progress ? &part : nullptr);
+            if (to.normals)
+                signed_query(to.mesh, to.index, *to.normals, points.data(), k, distances.data() + begin, signs.data());
+            else
+                to.index.distances(points.data(), k, distances.data() + begin);
+        }
+        fold.add(begin, k, points.data(), kind.data(), element.data(), distances.data() + begin, signs.data());
+    }
+    stage.finish();
+    points = {};
+    kind = {};
+    element = {};
+    signs = {};
+    return fold.finish(distances, bins, within);
+}
+
 // The signed distances: sign x distance (0 where the sign is 0).
 std::vector<double> apply_signs(const std::vector<double>& distances, const std::vector<std::int8_t>& signs)
 {
@@ -339,10 +578,15 @@ HausdorffSeed seed_of(const Mesh& from, const DistanceStats& s)
 
 // surface_distance() and surface_distance_samples(): both directions, keeping
 // the samples in \p forward and \p backward when they are given.
+// Without them, the samples are made and queried \p chunk at a time (chunked_direction()).
 SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
                                 SampledDirection* forward, SampledDirection* backward,
-                                const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary)
+                                const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
+                                std::size_t chunk = detail::kSampleChunk)
 {
+    if (chunk == 0 || chunk % detail::kQueryBlock != 0)
+        throw InvalidArgumentError(fmt::format("surface_distance: chunk of {} samples, not a positive multiple of {}",
+                                               chunk, detail::kQueryBlock));
     validate(options);
     validate(summary);
     if (certify) validate(*certify);
@@ -372,23 +616,26 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         const Target target{to, index, normals ? &*normals : nullptr};
         std::vector<ClosestPoint> vq;  // from's vertices: samples and certification
         if (certify) vq = index.closest_points(from.points);
-        std::vector<std::int8_t> signs;
-        SampledDirection d = sampled_direction(from, target, opt, certify ? &vq : nullptr, signs);
-        stats = distance_stats(d.samples, d.distances);
-        if (normals) {
-            stats.signed_distance = signed_stats_of(
-                signs.size(), [&](std::size_t i) { return signs[i] == 0 ? 0.0 : double(signs[i]) * d.distances[i]; });
-            stats.signed_distance->flipped = normals->flipped;
-        } else {
-            stats.signed_unavailable = unavailable;
-        }
-        summarize(stats, from, d, within);
         if (keep) {
+            std::vector<std::int8_t> signs;
+            SampledDirection d = sampled_direction(from, target, opt, certify ? &vq : nullptr, signs);
+            stats = distance_stats(d.samples, d.distances);
+            if (normals)
+                stats.signed_distance = signed_stats_of(signs.size(), [&](std::size_t i) {
+                    return signs[i] == 0 ? 0.0 : double(signs[i]) * d.distances[i];
+                });
+            summarize(stats, from, d, within);
             if (normals) d.signed_distances = apply_signs(d.distances, signs);
             *keep = std::move(d);
+        } else {
+            // The same statistics without keeping the samples (freed before the certification).
+            stats = chunked_direction(from, target, opt, certify ? &vq : nullptr, thresholds, summary.histogram_bins,
+                                      chunk, within);
         }
-        d = SampledDirection{};  // free the samples before the certification
-        signs = {};
+        if (normals)
+            stats.signed_distance->flipped = normals->flipped;
+        else
+            stats.signed_unavailable = unavailable;
         if (vertex_distance) {
             const std::size_t nv = from.points.size();
             std::vector<std::int8_t> vsigns(normals ? nv : 0, 0);
@@ -439,6 +686,19 @@ SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOpt
 {
     return both_directions(a, b, options, b_vertex_distances, forward_samples, backward_samples, certify, summary);
 }
+
+namespace detail {
+
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
+                                 const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
+                                 SampledDirection* forward_samples, SampledDirection* backward_samples,
+                                 std::size_t chunk)
+{
+    return both_directions(a, b, options, b_vertex_distances, forward_samples, backward_samples, certify, summary,
+                           chunk);
+}
+
+}  // namespace detail
 
 SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options,
                                                 const SummaryOptions& summary)

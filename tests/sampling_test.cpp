@@ -5,6 +5,8 @@
 #include "meshdiff/io.h"
 #include "meshdiff/shapes.h"
 
+#include "detail/sample_plan.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -240,4 +242,50 @@ TEST(Sampling, InvalidOptionsThrowNamingTheField)
 TEST(Sampling, InvalidMeshThrows)
 {
     EXPECT_THROW(sample_surface(Mesh{}), InvalidMeshError);
+}
+
+TEST(Sampling, SamplesMadeInPiecesAreTheSamplesBitForBit)
+{
+    // detail::SampleMaker makes any range of sample indices: pieces of odd
+    // sizes, ending inside vertex, edge and face runs (faces of about 1000
+    // samples), give the samples of sample_surface().
+    const Mesh m = icosphere(0).mesh;
+    for (const FaceSampling scheme : {FaceSampling::SimilarTriangles, FaceSampling::MonteCarlo})
+        for (const bool edges : {true, false}) {
+            SamplingOptions o;
+            o.face_scheme = scheme;
+            o.edges = edges;
+            o.samples = 20000;
+            o.seed = 3;
+            const SurfaceSamples all = sample_surface(m, o);
+            const detail::SamplePlan plan = detail::plan_samples(m, o);
+            ASSERT_EQ(plan.size(), all.size());
+            EXPECT_EQ(plan.counts.n_edge, all.n_edge);
+            EXPECT_EQ(plan.counts.n_face, all.n_face);
+            for (const std::size_t piece : {1, 7, 333, 4096}) {
+                detail::SampleMaker maker(m, plan);
+                std::vector<Vec3> p(piece);
+                std::vector<SampleKind> kind(piece);
+                std::vector<std::uint32_t> element(piece);
+                for (std::size_t begin = 0; begin < all.size(); begin += piece) {
+                    const std::size_t end = std::min(all.size(), begin + piece);
+                    maker.make(begin, end, p.data(), kind.data(), element.data());
+                    for (std::size_t i = begin; i < end; ++i) {
+                        ASSERT_EQ(p[i - begin], all.points[i]) << "piece " << piece << ", sample " << i;
+                        ASSERT_EQ(kind[i - begin], all.kind[i]) << i;
+                        ASSERT_EQ(element[i - begin], all.element[i]) << i;
+                    }
+                }
+            }
+            // Out of order too (the random stream is drawn again from the start).
+            detail::SampleMaker maker(m, plan);
+            Vec3 p;
+            SampleKind kind;
+            std::uint32_t element;
+            for (const std::size_t i : {all.size() - 1, all.size() / 2, all.n_vertex, std::size_t(0)}) {
+                maker.make(i, i + 1, &p, &kind, &element);
+                EXPECT_EQ(p, all.points[i]) << i;
+                EXPECT_EQ(element, all.element[i]) << i;
+            }
+        }
 }

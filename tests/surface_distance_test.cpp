@@ -4,6 +4,8 @@
 #include "meshdiff/io.h"
 #include "meshdiff/shapes.h"
 
+#include "detail/surface_distance.h"
+
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -600,4 +602,119 @@ TEST(SummaryMetrics, MeanSquaresConvergeToTheSurfaceIntegral)
     const SurfaceDistance r = surface_distance(pyramid(0.0), pyramid(h), mc);
     EXPECT_NEAR(r.backward.area_weighted->mean_square, h * h / 6.0, 1e-2 * h * h / 6.0);  // 5 standard errors
     EXPECT_NEAR(r.backward.area_weighted->mean, h / 3.0, 1e-2 * h / 3.0);
+}
+
+namespace {
+
+void expect_same_vector(const std::vector<double>& x, const std::vector<double>& y)
+{
+    ASSERT_EQ(x.size(), y.size());
+    for (std::size_t i = 0; i < x.size(); ++i) EXPECT_TRUE(same_bits(x[i], y[i])) << i;
+}
+
+// Every statistic of one direction, bit for bit.
+void expect_every_bit(const DistanceStats& x, const DistanceStats& y)
+{
+    expect_identical(x, y);
+    for (int c = 0; c < 3; ++c) EXPECT_TRUE(same_bits(x.max_point[c], y.max_point[c]));
+    EXPECT_EQ(x.max_kind, y.max_kind);
+    EXPECT_EQ(x.max_element, y.max_element);
+    ASSERT_EQ(x.area_weighted.has_value(), y.area_weighted.has_value());
+    if (x.area_weighted) {
+        const AreaWeightedStats &p = *x.area_weighted, &q = *y.area_weighted;
+        for (auto m : {&AreaWeightedStats::mean, &AreaWeightedStats::mean_square, &AreaWeightedStats::rms,
+                       &AreaWeightedStats::area, &AreaWeightedStats::area_fraction})
+            EXPECT_TRUE(same_bits(p.*m, q.*m));
+        EXPECT_EQ(p.n_face, q.n_face);
+    }
+    expect_same_vector(x.histogram.edges, y.histogram.edges);
+    EXPECT_EQ(x.histogram.counts, y.histogram.counts);
+    ASSERT_EQ(x.signed_distance.has_value(), y.signed_distance.has_value());
+    if (x.signed_distance) {
+        const SignedDistanceStats &p = *x.signed_distance, &q = *y.signed_distance;
+        for (auto m : {&SignedDistanceStats::min, &SignedDistanceStats::max, &SignedDistanceStats::mean,
+                       &SignedDistanceStats::rms})
+            EXPECT_TRUE(same_bits(p.*m, q.*m));
+        EXPECT_EQ(p.flipped, q.flipped);
+    }
+    EXPECT_EQ(x.signed_unavailable, y.signed_unavailable);
+}
+
+void expect_every_bit(const SurfaceDistance& x, const SurfaceDistance& y)
+{
+    expect_every_bit(x.forward, y.forward);
+    expect_every_bit(x.backward, y.backward);
+    EXPECT_TRUE(same_bits(x.hausdorff, y.hausdorff));
+    ASSERT_EQ(x.summary.has_value(), y.summary.has_value());
+    if (x.summary) {
+        EXPECT_TRUE(same_bits(x.summary->chamfer_l1, y.summary->chamfer_l1));
+        EXPECT_TRUE(same_bits(x.summary->chamfer_l2, y.summary->chamfer_l2));
+        EXPECT_TRUE(same_bits(x.summary->psnr.mse_db, y.summary->psnr.mse_db));
+    }
+    EXPECT_EQ(x.summary_unavailable, y.summary_unavailable);
+    ASSERT_EQ(x.fscore.size(), y.fscore.size());
+    for (std::size_t k = 0; k < x.fscore.size(); ++k) {
+        EXPECT_TRUE(same_bits(x.fscore[k].precision, y.fscore[k].precision));
+        EXPECT_TRUE(same_bits(x.fscore[k].recall, y.fscore[k].recall));
+    }
+    ASSERT_EQ(x.forward_hausdorff.has_value(), y.forward_hausdorff.has_value());
+    if (x.forward_hausdorff) {
+        EXPECT_TRUE(same_bits(x.forward_hausdorff->lower, y.forward_hausdorff->lower));
+        EXPECT_TRUE(same_bits(x.forward_hausdorff->upper, y.forward_hausdorff->upper));
+        EXPECT_TRUE(same_bits(x.backward_hausdorff->lower, y.backward_hausdorff->lower));
+        EXPECT_TRUE(same_bits(x.backward_hausdorff->upper, y.backward_hausdorff->upper));
+    }
+}
+
+}  // namespace
+
+TEST(SurfaceDistance, ChunkedSamplesGiveTheKeptSamplesStatisticsBitForBit)
+{
+    // The kept path makes and queries all samples at once; without kept
+    // samples they are made, queried and summed a chunk at a time. With one
+    // query block a chunk, the chunks end inside vertex, edge and face runs
+    // (20 coarse faces of 2500 samples each span several chunks).
+    const Mesh coarse = icosphere(0).mesh;
+    const Mesh fine = icosphere(2, 1.05).mesh;
+    const Mesh flat = plane_grid(12, 9, 0.1).mesh;  // open: no sign
+    const Mesh bumpy = heightfield(16, 0.05).mesh;
+    SummaryOptions so;
+    so.fscore_thresholds = {0.001, 0.02, 0.05};
+    so.histogram_bins = 7;
+    HausdorffOptions certify;
+    certify.relative_tolerance = 1e-3;
+    struct Case
+    {
+        const Mesh *a, *b;
+        std::optional<std::size_t> samples;
+        bool edges;
+        bool certified;
+    };
+    for (const Case& c : {Case{&coarse, &fine, 50000, true, false}, Case{&fine, &coarse, 40000, true, true},
+                          Case{&coarse, &fine, 30000, false, true}, Case{&flat, &bumpy, 20000, true, false}})
+        for (const FaceSampling scheme : {FaceSampling::SimilarTriangles, FaceSampling::MonteCarlo}) {
+            SCOPED_TRACE(testing::Message() << "faces " << c.a->n_faces() << " vs " << c.b->n_faces() << ", scheme "
+                                            << int(scheme) << ", certified " << c.certified);
+            SamplingOptions o;
+            o.face_scheme = scheme;
+            o.seed = 9;
+            o.samples = c.samples;
+            o.edges = c.edges;
+            const auto cert = c.certified ? std::optional<HausdorffOptions>(certify) : std::nullopt;
+            SampledDirection fk, bk;
+            const SurfaceDistance kept =
+                detail::surface_distance(*c.a, *c.b, o, true, cert, so, &fk, &bk, detail::kQueryBlock);
+            ASSERT_GT(fk.samples.size(), 4 * detail::kQueryBlock);
+            for (const std::size_t chunk : {detail::kQueryBlock, 3 * detail::kQueryBlock, detail::kSampleChunk}) {
+                const SurfaceDistance chunked =
+                    detail::surface_distance(*c.a, *c.b, o, true, cert, so, nullptr, nullptr, chunk);
+                expect_every_bit(kept, chunked);
+                expect_same_vector(kept.a_vertex_distance, chunked.a_vertex_distance);
+                expect_same_vector(kept.b_vertex_signed_distance, chunked.b_vertex_signed_distance);
+            }
+            // The public call (default chunks) too.
+            expect_every_bit(kept, surface_distance(*c.a, *c.b, o, false, cert, so));
+        }
+    EXPECT_THROW(detail::surface_distance(coarse, fine, {}, false, std::nullopt, so, nullptr, nullptr, 1000),
+                 InvalidArgumentError);
 }
