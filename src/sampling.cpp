@@ -195,7 +195,7 @@ void SampleMaker::make(std::size_t begin, std::size_t end, Vec3* points, SampleK
     }
 
     // Edges: the n points that cut an edge into n + 1 equal parts.
-    if (plan.counts.n_edge > 0 && end > nv && begin < plan.edge_offset.back()) {
+    if (plan.counts.n_edge > 0 && end > nv && begin < nv + plan.counts.n_edge) {
         const auto& offset = plan.edge_offset;
         const auto& edges = plan.edges;
         elements(offset);

@@ -542,6 +542,7 @@ DistanceStats chunked_direction(const Mesh& from, const Target& to, const Sampli
                 to.index.distances(points.data(), k, distances.data() + begin);
         }
         fold.add(begin, k, points.data(), kind.data(), element.data(), distances.data() + begin, signs.data());
+        if (begin + k >= plan.counts.n_vertex + plan.counts.n_edge) plan.drop_vertices_and_edges();  // face samples left
     }
     stage.finish();
     points = {};

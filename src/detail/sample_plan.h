@@ -29,6 +29,13 @@ struct SamplePlan
     std::uint64_t seed = 1;
 
     std::size_t size() const { return counts.n_vertex + counts.n_edge + counts.n_face; }
+    //! Frees the vertex and edge lists: only face samples can be made after.
+    void drop_vertices_and_edges()
+    {
+        vertices = {};
+        edges = {};
+        edge_offset = {};
+    }
 };
 
 //! The counts of sample_surface(mesh, options), options and mesh valid
