@@ -506,7 +506,10 @@ DistanceStats chunked_direction(const Mesh& from, const Target& to, const Sampli
     const std::size_t n = plan.size();
     if (n == 0) throw InvalidArgumentError("SamplingOptions: the enabled sample kinds give no sample on this mesh");
     const std::size_t nv = vertex_closest ? plan.counts.n_vertex : 0;  // the vertex samples come first
-    std::vector<double> distances(n);
+    // Grown chunk by chunk, so that its pages become resident as the plan's
+    // vertex and edge lists are freed.
+    std::vector<double> distances;
+    distances.reserve(n);
     const std::size_t m = std::min(chunk, n);
     std::vector<Vec3> points(m);
     std::vector<SampleKind> kind(m);
@@ -519,6 +522,7 @@ DistanceStats chunked_direction(const Mesh& from, const Target& to, const Sampli
     for (std::size_t begin = 0; begin < nv; begin += chunk) {
         const std::size_t k = std::min(nv, begin + chunk) - begin;
         maker.make(begin, begin + k, points.data(), kind.data(), element.data());
+        distances.resize(begin + k);
         for (std::size_t i = 0; i < k; ++i) {
             const ClosestPoint& c = (*vertex_closest)[element[i]];
             distances[begin + i] = c.distance;
@@ -533,6 +537,7 @@ DistanceStats chunked_direction(const Mesh& from, const Target& to, const Sampli
     for (std::size_t begin = nv; begin < n; begin += chunk) {
         const std::size_t k = std::min(n, begin + chunk) - begin;
         maker.make(begin, begin + k, points.data(), kind.data(), element.data());
+        distances.resize(begin + k);
         {
             PartProgress part(progress, begin - nv);
             const ProgressScope scope(progress ? &part : nullptr);
