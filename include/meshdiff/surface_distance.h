@@ -289,6 +289,9 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
 //! \p summary, the histograms are filled too (sums over the samples). With
 //! \p forward_samples (\p backward_samples), the samples of that direction and
 //! their distances are kept there (as surface_distance_samples() keeps them).
+//! A direction whose samples are not kept makes, queries and sums them a
+//! chunk at a time and keeps only their distances (8 bytes per sample, for
+//! the percentiles); the results are the same bit for bit.
 SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options = {},
                                  bool b_vertex_distances = false,
                                  const std::optional<HausdorffOptions>& certify = std::nullopt,
