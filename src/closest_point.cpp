@@ -100,7 +100,8 @@ struct Box
 constexpr std::uint32_t kLeafSize = 4;
 constexpr int kBins = 16;
 constexpr std::uint32_t kMaxSahDepth = 48;
-constexpr std::size_t kBlock = detail::kQueryBlock;  // queries per parallel block (fixed: results do not depend on threads)
+// Queries per parallel block (fixed: results do not depend on threads).
+constexpr std::size_t kBlock = detail::kQueryBlock;
 // Oriented boxes: tried for a node whose box's half area exceeds its
 // triangles' area this many times (slivers, such as the fan of triangles
 // around a vertex of very high valence, whose boxes all contain the hub), and

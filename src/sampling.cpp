@@ -168,8 +168,7 @@ SamplePlan plan_samples(const Mesh& mesh, const SamplingOptions& options)
 
 SampleMaker::SampleMaker(const Mesh& mesh, const SamplePlan& plan)
     : mesh_(mesh), plan_(plan), rng_(plan.seed), drawn_(plan.counts.n_vertex + plan.counts.n_edge)
-{
-}
+{}
 
 void SampleMaker::make(std::size_t begin, std::size_t end, Vec3* points, SampleKind* kind, std::uint32_t* element)
 {
@@ -183,7 +182,8 @@ void SampleMaker::make(std::size_t begin, std::size_t end, Vec3* points, SampleK
     // The elements i of a range [offset[i], offset[i + 1]) meeting [begin, end).
     std::int64_t first = 0, last = 0;
     auto elements = [begin, end, &first, &last](const std::vector<std::size_t>& offset) {
-        first = std::max<std::int64_t>(std::upper_bound(offset.begin(), offset.end() - 1, begin) - offset.begin() - 1, 0);
+        first =
+            std::max<std::int64_t>(std::upper_bound(offset.begin(), offset.end() - 1, begin) - offset.begin() - 1, 0);
         last = std::lower_bound(offset.begin(), offset.end() - 1, end) - offset.begin();
     };
 

@@ -342,10 +342,13 @@ class DirectionFold
 public:
     DirectionFold(const Mesh& from, const detail::SamplePlan& plan, const std::vector<double>& thresholds,
                   bool is_signed)
-        : from_(from), plan_(plan), thresholds_(thresholds), signed_(is_signed), below_(thresholds.size()),
+        : from_(from),
+          plan_(plan),
+          thresholds_(thresholds),
+          signed_(is_signed),
+          below_(thresholds.size()),
           run_below_(thresholds.size())
-    {
-    }
+    {}
 
     // Samples [begin, begin + n) (points p, kinds, elements, distances d and
     // signs, those without a sign when the direction has none).
@@ -547,7 +550,8 @@ DistanceStats chunked_direction(const Mesh& from, const Target& to, const Sampli
                 to.index.distances(points.data(), k, distances.data() + begin);
         }
         fold.add(begin, k, points.data(), kind.data(), element.data(), distances.data() + begin, signs.data());
-        if (begin + k >= plan.counts.n_vertex + plan.counts.n_edge) plan.drop_vertices_and_edges();  // face samples left
+        if (begin + k >= plan.counts.n_vertex + plan.counts.n_edge)
+            plan.drop_vertices_and_edges();  // face samples left
     }
     stage.finish();
     points = {};
