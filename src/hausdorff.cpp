@@ -360,7 +360,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
         return std::max({options.relative_tolerance * lower, options.absolute_tolerance, floor});
     };
     const std::size_t budget =
-        options.max_evaluations ? options.max_evaluations : 2'000'000 + 20 * std::size_t(a.n_faces());
+        options.max_evaluations ? options.max_evaluations : 2'000'000 + 20 * (std::size_t(a.n_faces()) + b.n_faces());
 
     // Progress counts the triangles bounded and split (the total is not known).
     detail::StageProgress stage("certification", 0);
@@ -503,8 +503,37 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
     bound_and_prune(cells);
     std::vector<Cell> next;
     std::vector<Candidate> found;
-    while (!cells.empty()) {
-        if (r.bound_evaluations + 4 * cells.size() > budget || 4 * cells.size() > options.max_round_triangles) {
+    // Open cells set aside when a round would create more than
+    // max_round_triangles: the search goes on with the first
+    // max_round_triangles / 4 of them and takes the lists set aside later,
+    // the last one first (depth first, so the memory stays bounded). Until
+    // a round would be that large the search is the breadth-first one.
+    std::vector<std::vector<Cell>> pending;
+    const std::size_t chunk = options.max_round_triangles / 4;
+    for (;;) {
+        if (cells.empty()) {
+            if (pending.empty()) break;
+            cells = std::move(pending.back());
+            pending.pop_back();
+            // Bounded against an earlier lower bound: close those that the
+            // current one closes.
+            const double threshold = best.d + tolerance(best.d);
+            std::size_t kept = 0;
+            for (Cell& c : cells) {
+                if (c.upper <= threshold)
+                    upper_done = std::max(upper_done, c.upper);
+                else
+                    cells[kept++] = c;
+            }
+            cells.resize(kept);
+            continue;
+        }
+        if (4 * cells.size() > options.max_round_triangles) {
+            pending.emplace_back(cells.begin() + std::ptrdiff_t(chunk), cells.end());
+            cells.resize(chunk);
+            ++r.chunks;
+        }
+        if (r.bound_evaluations + 4 * cells.size() > budget) {
             r.budget_exhausted = true;
             break;
         }
@@ -578,6 +607,8 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
 
     double upper = std::max(upper_done, best.d);
     for (const Cell& c : cells) upper = std::max(upper, c.upper);
+    for (const std::vector<Cell>& list : pending)
+        for (const Cell& c : list) upper = std::max(upper, c.upper);
     r.lower = best.d;
     r.upper = upper;
     r.tolerance = tolerance(best.d);

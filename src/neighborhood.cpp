@@ -64,8 +64,10 @@ struct BatchBfs
     const bool word_sums;  // see kWordSumDegree
     const int lmax;
     std::vector<Marks<W>> marks;
-    std::vector<std::array<std::uint64_t, W>> frontier;
+    // The frontier: the vertices reached at the last level (flist) and the
+    // centres that reached each (ffront, parallel to flist).
     std::vector<std::uint32_t> flist, nlist, touched;
+    std::vector<std::array<std::uint64_t, W>> ffront, nfront;
     std::vector<double> sum;           // [level][kBatch], level 1..lmax
     std::vector<std::uint32_t> count;  // defined values
     std::vector<std::uint32_t> size;   // all vertices
@@ -80,7 +82,6 @@ struct BatchBfs
     {
         const std::size_t n = adj.size();
         marks.assign(n, Marks<W>{});
-        frontier.assign(n, std::array<std::uint64_t, W>{});
         nlist.resize(n + 1);
         sum.resize(std::size_t(lmax + 1) * kBatch);
         count.resize(std::size_t(lmax + 1) * kBatch);
@@ -103,12 +104,15 @@ struct BatchBfs
         std::array<std::uint64_t, W> live{};
         for (std::size_t k = 0; k < nb; ++k) live[k / 64] |= std::uint64_t(1) << (k % 64);
         flist.clear();
+        ffront.clear();
         touched.clear();
-        for (std::size_t k = 0; k < nb; ++k) {
+        for (std::size_t k = 0; k < nb; ++k) {  // distinct centres
             const auto c = centres[k];
             marks[c].seen[k / 64] |= std::uint64_t(1) << (k % 64);
-            frontier[c][k / 64] |= std::uint64_t(1) << (k % 64);
+            std::array<std::uint64_t, W> f{};
+            f[k / 64] = std::uint64_t(1) << (k % 64);
             flist.push_back(c);
+            ffront.push_back(f);
             touched.push_back(c);
         }
         for (int level = 1; level <= lmax && !flist.empty(); ++level) {
@@ -116,8 +120,9 @@ struct BatchBfs
             // when a vertex gets its first new centre at this level.
             std::size_t n_new = 0;
             std::uint32_t* nl = nlist.data();
-            for (auto v : flist) {
-                const auto f = frontier[v];
+            for (std::size_t q = 0; q < flist.size(); ++q) {
+                const auto v = flist[q];
+                const auto f = ffront[q];
                 for (auto it = adj.begin(v); it != adj.end(v); ++it) {
                     Marks<W>& m = marks[*it];
                     std::uint64_t old_any = 0, add_any = 0;
@@ -131,11 +136,11 @@ struct BatchBfs
                     n_new += std::size_t((old_any == 0) & (add_any != 0));
                 }
             }
-            for (auto v : flist) frontier[v] = std::array<std::uint64_t, W>{};
             double* lsum = &sum[std::size_t(level) * kBatch];
             std::uint32_t* lcount = &count[std::size_t(level) * kBatch];
             std::uint32_t* lsize = &size[std::size_t(level) * kBatch];
             flist.clear();
+            nfront.resize(n_new);
             for (std::size_t q = 0; q < n_new; ++q) {
                 const auto v = nl[q];
                 Marks<W>& m = marks[v];
@@ -143,13 +148,14 @@ struct BatchBfs
                 for (int w = 0; w < W; ++w) seen_any |= m.seen[w];
                 if (!seen_any) touched.push_back(v);
                 flist.push_back(v);
+                std::array<std::uint64_t, W>& frontier = nfront[q];
                 const double val = values[v];
                 const bool defined = !std::isnan(val);
                 for (int w = 0; w < W; ++w) {
                     std::uint64_t bits = m.next[w];
                     m.next[w] = 0;
                     m.seen[w] |= bits;
-                    frontier[v][w] = bits;
+                    frontier[std::size_t(w)] = bits;
                     if (word_sums && bits == live[w] && bits != 0) {
                         // All centres of the word at once (around a hub): once per word.
                         const std::size_t at = std::size_t(level) * W + std::size_t(w);
@@ -184,8 +190,8 @@ struct BatchBfs
                     }
                 }
             }
+            ffront.swap(nfront);
         }
-        for (auto v : flist) frontier[v] = std::array<std::uint64_t, W>{};
         for (auto v : touched) marks[v] = Marks<W>{};
         if (word_sums)
             for (int level = 1; level <= lmax; ++level)

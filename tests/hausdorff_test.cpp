@@ -303,7 +303,7 @@ TEST(Hausdorff, BudgetStopsWithAValidInterval)
     EXPECT_GT(h.upper - h.lower, h.tolerance);
 }
 
-TEST(Hausdorff, MemoryBoundStopsWithAValidInterval)
+TEST(Hausdorff, MemoryBoundTakesTheOpenTrianglesInParts)
 {
     // A coarse sphere against a fine one: every face of the coarse one sags
     // about as far, so many triangles stay open in the first rounds.
@@ -312,12 +312,22 @@ TEST(Hausdorff, MemoryBoundStopsWithAValidInterval)
     HausdorffOptions o;
     const CertifiedHausdorff full = certified_hausdorff(a, b, o);
     expect_certified(full);
-    o.max_round_triangles = 64;  // at most 16 open triangles per round
-    const CertifiedHausdorff h = certified_hausdorff(a, b, o);
-    EXPECT_TRUE(h.budget_exhausted);
-    EXPECT_FALSE(h.certified);
-    EXPECT_LE(h.lower, full.upper);
-    EXPECT_GE(h.upper, full.lower);
+    EXPECT_EQ(full.chunks, 0);
+    for (const std::size_t bound : {std::size_t(4), std::size_t(64), std::size_t(1000)}) {
+        o.max_round_triangles = bound;  // at most bound / 4 open triangles per round
+        const CertifiedHausdorff h = certified_hausdorff(a, b, o);
+        expect_certified(h);
+        EXPECT_GT(h.chunks, 0) << bound;
+        // Both intervals hold the true value: they overlap.
+        EXPECT_LE(h.lower, full.upper) << bound;
+        EXPECT_GE(h.upper, full.lower) << bound;
+        // A dense sampling's maximum is at most the true value.
+        SamplingOptions so;
+        so.samples = 200'000;
+        const ClosestPointIndex index(b);
+        const DistanceStats dense = one_sided_distance(a, index, so);
+        EXPECT_GE(h.upper, dense.max) << bound;
+    }
     o.max_round_triangles = 3;
     EXPECT_THROW(certified_hausdorff(a, b, o), InvalidArgumentError);
 }

@@ -230,7 +230,7 @@ void add_compare_options(CLI::App* sub, CompareCliOptions& o)
         ->check(in_range(1e-300, 1e300));
     sub->add_option("--hausdorff-budget", o.hausdorff_budget,
                     "most triangle bounds per direction before the interval reached is reported (default "
-                    "2,000,000 + 20 x the faces of the sampled mesh)")
+                    "2,000,000 + 20 x the faces of both meshes)")
         ->check(in_range(1, kMaxHausdorffBudget, true));
     sub->add_option("--fscore", o.fscore,
                     "F-score thresholds relative to the original's bounding-box diagonal, e.g. 0.001,0.005 "

@@ -43,9 +43,13 @@
 //! - The search runs in rounds (all open triangles of a round in parallel,
 //!   the lower bound updated between rounds), so the interval and the
 //!   location do not depend on the number of threads.
+//! - Memory: when a round would create more triangles than
+//!   max_round_triangles, the open triangles beyond the first
+//!   max_round_triangles / 4 are set aside and taken up, the last set aside
+//!   first, once the others are done (and re-checked against the lower bound
+//!   reached by then). Until then the search is breadth-first as above.
 //! - It stops when no triangle is open (certified), or when the evaluations of
-//!   upper bounds reach a budget, or a round would create more triangles than
-//!   the memory bound allows: then the interval reached is returned with
+//!   upper bounds reach a budget: then the interval reached is returned with
 //!   `certified` false (never an endless loop on adversarial input).
 //!
 //! Exactness. Distances are computed in double precision with the exact
@@ -75,11 +79,12 @@ struct HausdorffOptions
     //! Width asked for in the meshes' length unit (0: relative only).
     double absolute_tolerance = 0.0;
     //! Budget of upper-bound evaluations (triangles of A bounded); 0 means
-    //! the default, 2,000,000 + 20 x #faces of A.
+    //! the default, 2,000,000 + 20 x (#faces of A + #faces of B).
     std::size_t max_evaluations = 0;
     //! The most triangles one round may create (4 per open triangle); each
-    //! holds about 130 bytes, so the default bounds the search's memory near
-    //! 1 GB. A round that would create more ends the search like the budget.
+    //! holds about 130 bytes, so the default bounds a round's memory near
+    //! 1 GB. Beyond it the open triangles are taken in parts (see the file
+    //! comment); at least 4.
     std::size_t max_round_triangles = std::size_t(1) << 23;
 };
 
@@ -108,7 +113,10 @@ struct CertifiedHausdorff
     std::size_t bound_evaluations = 0;  //!< upper bounds of triangles evaluated
     std::size_t point_evaluations = 0;  //!< exact point distances evaluated (vertices and new corners)
     int rounds = 0;                     //!< subdivision rounds run
-    bool budget_exhausted = false;      //!< the search stopped at max_evaluations or max_round_triangles
+    //! Times open triangles were set aside because a round would have created
+    //! more than max_round_triangles (0: the search was breadth-first throughout).
+    int chunks = 0;
+    bool budget_exhausted = false;  //!< the search stopped at max_evaluations
 };
 
 //! A seed of the lower bound: a point of A with its exact distance to B (the

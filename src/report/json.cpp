@@ -357,7 +357,8 @@ nlohmann::json certified_json(const std::optional<CertifiedHausdorff>& h, double
               {"closest_face", h->location.closest_face}}},
             {"bound_evaluations", h->bound_evaluations},
             {"point_evaluations", h->point_evaluations},
-            {"rounds", h->rounds}};
+            {"rounds", h->rounds},
+            {"chunks", h->chunks}};
 }
 
 // surface_distance_json() without the notes of point clouds.
