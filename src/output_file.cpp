@@ -25,6 +25,17 @@ std::filesystem::path temporary_for(const std::filesystem::path& path)
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(const std::filesystem::path& temporary)>& write)
 {
+    // A device, a pipe or a socket (/dev/null, /dev/stdout, a FIFO), also
+    // through a symbolic link, is written in place: there is no file to
+    // replace, and a rename would put a regular file in its stead (as root,
+    // even over /dev/null).
+    std::error_code status_ec;
+    const std::filesystem::file_status st = std::filesystem::status(path, status_ec);
+    if (!status_ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st) &&
+        !std::filesystem::is_directory(st)) {
+        write(path);
+        return;
+    }
     const std::filesystem::path tmp = temporary_for(path);
     std::error_code ignored;
     try {

@@ -15,7 +15,10 @@ namespace meshdiff {
 //! `.<stem>.meshdiff-<pid>-<n><extension>`, so a writer that picks the format
 //! by extension sees the right one), then renames it onto \p path. If \p write
 //! throws, or the rename fails, the temporary file is removed and \p path is
-//! left as it was.
+//! left as it was. An existing \p path that is neither a regular file nor a
+//! folder (a device such as /dev/null, a FIFO, a socket; also through a
+//! symbolic link) is passed to \p write itself: it is written in place, never
+//! replaced.
 //! \throw IoError if the rename fails; whatever \p write throws.
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(const std::filesystem::path& temporary)>& write);
