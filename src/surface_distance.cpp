@@ -42,6 +42,27 @@ double nearest_rank(std::vector<double>& v, unsigned q, unsigned below)
     return v[rank - 1];
 }
 
+// The area-weighted statistics from the sums over the face samples' runs
+// (each run's sum times its face's area per sample): the area of the sampled
+// faces, that of all faces, and the weighted sums of d, d^2 and of the
+// samples below each F-score threshold (into \p within, when given).
+std::optional<AreaWeightedStats> finish_area_weighted(std::size_t n_face, const Sum& sampled, const Sum& total,
+                                                      const Sum& sum, const Sum& sum2, const std::vector<Sum>& below,
+                                                      std::vector<double>* within)
+{
+    AreaWeightedStats s;
+    s.n_face = n_face;
+    s.area = sampled.value();
+    if (!(s.area > 0.0)) return std::nullopt;  // only zero-area faces were sampled
+    s.area_fraction = s.area / total.value();
+    s.mean = sum.value() / s.area;
+    s.mean_square = sum2.value() / s.area;
+    s.rms = std::sqrt(s.mean_square);
+    if (within)
+        for (std::size_t k = 0; k < below.size(); ++k) (*within)[k] = std::min(1.0, below[k].value() / s.area);
+    return s;
+}
+
 }  // namespace
 
 void validate(const SummaryOptions& options)
@@ -110,17 +131,7 @@ std::optional<AreaWeightedStats> area_weighted_stats(const Mesh& from, const Sur
             if (run_below[k]) below[k].add(w * double(run_below[k]));
         i = j;
     }
-    AreaWeightedStats s;
-    s.n_face = n_face;
-    s.area = sampled.value();
-    if (!(s.area > 0.0)) return std::nullopt;  // only zero-area faces were sampled
-    s.area_fraction = s.area / total.value();
-    s.mean = sum.value() / s.area;
-    s.mean_square = sum2.value() / s.area;
-    s.rms = std::sqrt(s.mean_square);
-    if (within)
-        for (std::size_t k = 0; k < below.size(); ++k) (*within)[k] = std::min(1.0, below[k].value() / s.area);
-    return s;
+    return finish_area_weighted(n_face, sampled, total, sum, sum2, below, within);
 }
 
 Histogram distance_histogram(const std::vector<double>& distances, std::size_t bins)
@@ -459,16 +470,7 @@ private:
             total.add(area);
             if (face_samples(f)) sampled.add(area);
         }
-        AreaWeightedStats s;
-        s.n_face = plan_.counts.n_face;
-        s.area = sampled.value();
-        if (!(s.area > 0.0)) return std::nullopt;  // only zero-area faces were sampled
-        s.area_fraction = s.area / total.value();
-        s.mean = sum_w_.value() / s.area;
-        s.mean_square = sum_w2_.value() / s.area;
-        s.rms = std::sqrt(s.mean_square);
-        for (std::size_t k = 0; k < below_.size(); ++k) within[k] = std::min(1.0, below_[k].value() / s.area);
-        return s;
+        return finish_area_weighted(plan_.counts.n_face, sampled, total, sum_w_, sum_w2_, below_, &within);
     }
 
     const Mesh& from_;
