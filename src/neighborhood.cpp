@@ -18,6 +18,10 @@
 #include <limits>
 #include <numeric>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace meshdiff {
 
 std::vector<int> ring_distances(const Adjacency& adj, std::size_t source, int max_level)
@@ -91,6 +95,139 @@ struct BatchBfs
         wsize.resize(std::size_t(lmax + 1) * W);
     }
 
+    // Settles the vertices that expand() listed for \p level: their new
+    // centres become seen and their frontier, and each adds its value to the
+    // sums of those centres (in the list's order; within a vertex, in bit
+    // order), or once to a word's sum where the whole word reached it.
+    template <bool AllDefined, bool WordSums>
+    void settle(int level, std::size_t n_new, const std::array<std::uint64_t, W>& live)
+    {
+        double* const lsum = &sum[std::size_t(level) * kBatch];
+        std::uint32_t* const lcount = &count[std::size_t(level) * kBatch];
+        std::uint32_t* const lsize = &size[std::size_t(level) * kBatch];
+        flist.resize(n_new);
+        nfront.resize(n_new);
+        const std::uint32_t* const nl = nlist.data();
+        Marks<W>* const mk = marks.data();
+        const double* const vals = values.data();
+        for (std::size_t q = 0; q < n_new; ++q) {
+            const auto v = nl[q];
+            flist[q] = v;
+            Marks<W>& m = mk[v];
+            std::uint64_t seen_any = 0;
+            std::uint64_t bits[W];
+            for (int w = 0; w < W; ++w) {
+                seen_any |= m.seen[w];
+                bits[w] = m.next[w];
+                m.next[w] = 0;
+                m.seen[w] |= bits[w];
+                nfront[q][std::size_t(w)] = bits[w];
+            }
+            if (!seen_any) touched.push_back(v);
+            const double val = vals[v];
+            for (int w = 0; w < W; ++w) {
+                if constexpr (WordSums)
+                    if (bits[w] == live[std::size_t(w)] && bits[w] != 0) {
+                        // All centres of the word at once (around a hub): once per word.
+                        const std::size_t at = std::size_t(level) * W + std::size_t(w);
+                        ++wsize[at];
+                        if (AllDefined || !std::isnan(val)) {
+                            wsum[at] += val;
+                            ++wcount[at];
+                        }
+                        continue;
+                    }
+                add_word<AllDefined>(bits[w], val, lsum + 64 * w, lcount + 64 * w, lsize + 64 * w);
+            }
+        }
+    }
+
+    // Adds val to the sums (and 1 to the counts) of the centres whose bits
+    // are set in x, in bit order; without AllDefined, a NaN val counts only in
+    // the sizes.
+    template <bool AllDefined>
+    static inline __attribute__((always_inline)) void add_word(std::uint64_t x, double val, double* ws,
+                                                               std::uint32_t* wc, std::uint32_t* wz)
+    {
+        if constexpr (AllDefined) {
+            // count == size: one counter per centre suffices.
+            while (x) {
+                const std::size_t b = std::size_t(__builtin_ctzll(x)) & 63;
+                x &= x - 1;
+                ws[b] += val;
+                ++wc[b];
+            }
+        } else {
+            const bool defined = !std::isnan(val);
+            while (x) {
+                const std::size_t b = std::size_t(__builtin_ctzll(x)) & 63;
+                x &= x - 1;
+                ++wz[b];
+                if (defined) {
+                    ws[b] += val;
+                    ++wc[b];
+                }
+            }
+        }
+    }
+
+    // One level's expansion: offers each frontier vertex's centres to its
+    // neighbours (those that have not reached them yet) and lists in nlist, in
+    // the order of the offers, each vertex that gets its first new centre at
+    // this level. Branch-free: the list grows by one exactly then. Returns
+    // the list's length.
+    std::size_t expand()
+    {
+        std::size_t n_new = 0;
+        std::uint32_t* const nl = nlist.data();
+        const std::uint32_t* const off = adj.offset.data();
+        const std::uint32_t* const idx = adj.index.data();
+        Marks<W>* const mk = marks.data();
+        const std::size_t nf = flist.size();
+#if defined(__SSE2__)
+        if constexpr (W == 2) {
+            // Both words at once; a vertex is new when its next mask was
+            // empty and is not now (the bytes that are zero now were zero).
+            const __m128i zero = _mm_setzero_si128();
+            for (std::size_t q = 0; q < nf; ++q) {
+                const std::uint32_t v = flist[q];
+                const __m128i f = _mm_loadu_si128(reinterpret_cast<const __m128i*>(ffront[q].data()));
+                for (const std::uint32_t *it = idx + off[v], *end = idx + off[v + 1]; it != end; ++it) {
+                    const std::uint32_t u = *it;
+                    Marks<W>& m = mk[u];
+                    const __m128i seen = _mm_loadu_si128(reinterpret_cast<const __m128i*>(m.seen));
+                    const __m128i old = _mm_loadu_si128(reinterpret_cast<const __m128i*>(m.next));
+                    const __m128i now = _mm_or_si128(old, _mm_andnot_si128(seen, f));
+                    _mm_storeu_si128(reinterpret_cast<__m128i*>(m.next), now);
+                    const auto zold = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(old, zero)));
+                    const auto znow = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(now, zero)));
+                    nl[n_new] = u;
+                    // 1 exactly when zold == 0xFFFF and znow != 0xFFFF.
+                    n_new += ((zold + 1) & (0x1FFFEu - znow)) >> 16;
+                }
+            }
+            return n_new;
+        }
+#endif
+        for (std::size_t q = 0; q < nf; ++q) {
+            const std::uint32_t v = flist[q];
+            const auto f = ffront[q];
+            for (const std::uint32_t *it = idx + off[v], *end = idx + off[v + 1]; it != end; ++it) {
+                Marks<W>& m = mk[*it];
+                std::uint64_t old_any = 0, add_any = 0;
+                for (int w = 0; w < W; ++w) {
+                    const std::uint64_t add = f[std::size_t(w)] & ~m.seen[w];
+                    old_any |= m.next[w];
+                    add_any |= add;
+                    m.next[w] |= add;
+                }
+                nl[n_new] = *it;
+                n_new += std::size_t((old_any == 0) & (add_any != 0));
+            }
+        }
+        return n_new;
+    }
+
     // Fills sum/count/size (cumulative over levels) for centres[0..nb).
     void run(const std::uint32_t* centres, std::size_t nb)
     {
@@ -116,80 +253,11 @@ struct BatchBfs
             touched.push_back(c);
         }
         for (int level = 1; level <= lmax && !flist.empty(); ++level) {
-            // Branch-free expansion: the new-vertex list grows by one exactly
-            // when a vertex gets its first new centre at this level.
-            std::size_t n_new = 0;
-            std::uint32_t* nl = nlist.data();
-            for (std::size_t q = 0; q < flist.size(); ++q) {
-                const auto v = flist[q];
-                const auto f = ffront[q];
-                for (auto it = adj.begin(v); it != adj.end(v); ++it) {
-                    Marks<W>& m = marks[*it];
-                    std::uint64_t old_any = 0, add_any = 0;
-                    for (int w = 0; w < W; ++w) {
-                        const std::uint64_t add = f[w] & ~m.seen[w];
-                        old_any |= m.next[w];
-                        add_any |= add;
-                        m.next[w] |= add;
-                    }
-                    nl[n_new] = *it;
-                    n_new += std::size_t((old_any == 0) & (add_any != 0));
-                }
-            }
-            double* lsum = &sum[std::size_t(level) * kBatch];
-            std::uint32_t* lcount = &count[std::size_t(level) * kBatch];
-            std::uint32_t* lsize = &size[std::size_t(level) * kBatch];
-            flist.clear();
-            nfront.resize(n_new);
-            for (std::size_t q = 0; q < n_new; ++q) {
-                const auto v = nl[q];
-                Marks<W>& m = marks[v];
-                std::uint64_t seen_any = 0;
-                for (int w = 0; w < W; ++w) seen_any |= m.seen[w];
-                if (!seen_any) touched.push_back(v);
-                flist.push_back(v);
-                std::array<std::uint64_t, W>& frontier = nfront[q];
-                const double val = values[v];
-                const bool defined = !std::isnan(val);
-                for (int w = 0; w < W; ++w) {
-                    std::uint64_t bits = m.next[w];
-                    m.next[w] = 0;
-                    m.seen[w] |= bits;
-                    frontier[std::size_t(w)] = bits;
-                    if (word_sums && bits == live[w] && bits != 0) {
-                        // All centres of the word at once (around a hub): once per word.
-                        const std::size_t at = std::size_t(level) * W + std::size_t(w);
-                        ++wsize[at];
-                        if (defined) {
-                            wsum[at] += val;
-                            ++wcount[at];
-                        }
-                        continue;
-                    }
-                    double* ws = lsum + 64 * w;
-                    std::uint32_t* wc = lcount + 64 * w;
-                    if (all_defined) {
-                        // count == size: one counter per centre suffices.
-                        while (bits) {
-                            const int b = __builtin_ctzll(bits);
-                            bits &= bits - 1;
-                            ws[b] += val;
-                            ++wc[b];
-                        }
-                    } else {
-                        std::uint32_t* wz = lsize + 64 * w;
-                        while (bits) {
-                            const int b = __builtin_ctzll(bits);
-                            bits &= bits - 1;
-                            ++wz[b];
-                            if (defined) {
-                                ws[b] += val;
-                                ++wc[b];
-                            }
-                        }
-                    }
-                }
-            }
+            const std::size_t n_new = expand();
+            if (all_defined)
+                word_sums ? settle<true, true>(level, n_new, live) : settle<true, false>(level, n_new, live);
+            else
+                word_sums ? settle<false, true>(level, n_new, live) : settle<false, false>(level, n_new, live);
             ffront.swap(nfront);
         }
         for (auto v : touched) marks[v] = Marks<W>{};
