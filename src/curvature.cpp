@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace meshdiff {
 
@@ -146,19 +147,37 @@ struct HubTrees
 constexpr std::size_t kHubDegree = kMaxFitNeighbors + 1;
 
 // Scratch space per thread: neighbourhood and least-squares system.
+// A fit's matrices, with \p Rows7 and \p Rows3 rows at most (Eigen::Dynamic:
+// any number, on the heap).
+template <int Rows7, int Rows3>
+struct FitBuffers
+{
+    using Matrix7 = Eigen::Matrix<double, Eigen::Dynamic, 7, Eigen::ColMajor, Rows7, 7>;
+    using Vector7 = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, Rows7, 1>;
+    using Matrix3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::ColMajor, Rows3, 3>;
+    using Vector3 = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, Rows3, 1>;
+    Matrix7 M;
+    Vector7 rhs;
+    Matrix3 Q;
+    Vector3 qrhs;
+    // Kept between vertices: on the heap, Eigen reallocates only when the row count changes.
+    Eigen::ColPivHouseholderQR<Matrix7> qr7;
+    Eigen::ColPivHouseholderQR<Matrix3> qr3;
+};
+
 struct FitScratch
 {
     std::vector<std::uint32_t> nbrs;
     std::vector<std::uint32_t> stamp;  // visited marks for the 2-ring
     std::uint32_t mark = 0;
     std::vector<Ranked> rest, near;  // candidates of a capped 2-ring
-    Eigen::Matrix<double, Eigen::Dynamic, 7> M;
-    Eigen::VectorXd rhs;
-    Eigen::Matrix<double, Eigen::Dynamic, 3> Q;
-    // Kept between vertices: Eigen reallocates only when the row count changes.
-    Eigen::ColPivHouseholderQR<Eigen::Matrix<double, Eigen::Dynamic, 7>> qr7;
-    Eigen::ColPivHouseholderQR<Eigen::Matrix<double, Eigen::Dynamic, 3>> qr3;
-    Eigen::VectorXd qrhs;
+    // The least-squares systems: sized at compile time for every fit but a
+    // hub's (up to kMaxFitNeighbors neighbours, three rows each), so that no
+    // fit allocates; on the heap for a hub's 1-ring. The arithmetic is the
+    // same on both (report corpus identical).
+    std::unique_ptr<FitBuffers<3 * int(kMaxFitNeighbors), int(kMaxFitNeighbors)>> fixed =
+        std::make_unique<FitBuffers<3 * int(kMaxFitNeighbors), int(kMaxFitNeighbors)>>();
+    FitBuffers<Eigen::Dynamic, Eigen::Dynamic> heap;
 };
 
 // The fitting neighbourhood of v into s.nbrs: the 1-ring, or, below
@@ -221,8 +240,9 @@ void gather_neighbourhood(std::size_t v, const Mesh& mesh, const Adjacency& adj,
 // The fitting estimators (cubic with quadric fallback, or quadric only).
 // `dropped`: set when the cubic system left out a neighbour's normal rows (the
 // max_normal_angle_deg rule).
-FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
-                     bool cubic, FitScratch& s, double& H, bool& dropped)
+template <class Buffers>
+FitResult fit_with(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
+                   bool cubic, const std::vector<std::uint32_t>& nbrs, Buffers& s, double& H, bool& dropped)
 {
     dropped = false;
     const Vec3& N = normals[v];
@@ -232,9 +252,9 @@ FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& n
     const Vec3 u = N.cross(helper).normalized();
     const Vec3 w = N.cross(u);
 
-    const std::size_t m = s.nbrs.size();
+    const std::size_t m = nbrs.size();
     double h = 0.0;
-    for (auto q : s.nbrs) h += (mesh.points[q] - p).norm();
+    for (auto q : nbrs) h += (mesh.points[q] - p).norm();
     h /= double(m);
     if (!(h > 0.0)) return FitResult::Failed;
     const double inv_h = 1.0 / h;
@@ -254,7 +274,7 @@ FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& n
             s.rhs.resize(Eigen::Index(3 * m));
         }
         Eigen::Index r = 0;
-        for (auto q : s.nbrs) {
+        for (auto q : nbrs) {
             const auto [x, y, z, wt] = local(q);
             s.M.row(r) << x * x / 2, x * y, y * y / 2, x * x * x, x * x * y, x * y * y, y * y * y;
             s.M.row(r) *= wt;
@@ -290,7 +310,7 @@ FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& n
     s.Q.resize(Eigen::Index(m), 3);
     s.qrhs.resize(Eigen::Index(m));
     Eigen::Index r = 0;
-    for (auto q : s.nbrs) {
+    for (auto q : nbrs) {
         const auto [x, y, z, wt] = local(q);
         s.Q.row(r) << wt * x * x / 2, wt * x * y, wt * y * y / 2;
         s.qrhs(r++) = wt * z;
@@ -305,6 +325,13 @@ FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& n
     if (!std::isfinite(Hs)) return FitResult::Failed;
     H = Hs * inv_h;
     return FitResult::Quadric;
+}
+
+FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
+                     bool cubic, FitScratch& s, double& H, bool& dropped)
+{
+    if (s.nbrs.size() <= kMaxFitNeighbors) return fit_with(v, mesh, normals, opt, cubic, s.nbrs, *s.fixed, H, dropped);
+    return fit_with(v, mesh, normals, opt, cubic, s.nbrs, s.heap, H, dropped);
 }
 
 CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const std::vector<Vec3>& normals,
