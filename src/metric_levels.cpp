@@ -13,6 +13,10 @@
 #include <limits>
 #include <utility>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace meshdiff {
 
 std::vector<double> default_radii()
@@ -188,6 +192,7 @@ private:
             const std::size_t cap = std::max<std::size_t>(1024, 2 * vertex_.size());
             vertex_.resize(cap);
             marks_.resize(cap);
+            nlist_.resize(cap + 1);  // expand() lists each slot at most once per round
         }
         vertex_[s] = v;
         marks_[s] = Marks{};
@@ -242,7 +247,7 @@ private:
     void expand(std::size_t b)
     {
         while (!flist_.empty()) {
-            nlist_.clear();
+            std::size_t n_new = 0;
             for (const std::uint32_t s : flist_) {
                 std::uint64_t f[W];
                 for (int w = 0; w < W; ++w) {
@@ -254,19 +259,39 @@ private:
                     const std::uint32_t t = slot(*it);
                     if (t == kOut) continue;  // in no ball of any radius
                     Marks& m = marks_[t];
-                    std::uint64_t old_any = 0, add_any = 0;
-                    for (int w = 0; w < W; ++w) {
-                        const std::uint64_t add = f[w] & ~m.seen[w] & ~m.refused[w];
-                        old_any |= m.next[w];
-                        add_any |= add;
-                        m.next[w] |= add;
+                    // Branch-free: the list grows by one exactly when the
+                    // slot gets its first offer of this round.
+                    bool first;
+#if defined(__SSE2__)
+                    if constexpr (W == 2) {
+                        const __m128i fv = _mm_loadu_si128(reinterpret_cast<const __m128i*>(f));
+                        const __m128i old = _mm_loadu_si128(reinterpret_cast<const __m128i*>(m.next));
+                        const __m128i closed = _mm_or_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(m.seen)),
+                                                            _mm_loadu_si128(reinterpret_cast<const __m128i*>(m.refused)));
+                        const __m128i now = _mm_or_si128(old, _mm_andnot_si128(closed, fv));
+                        _mm_storeu_si128(reinterpret_cast<__m128i*>(m.next), now);
+                        const __m128i zero = _mm_setzero_si128();
+                        first = _mm_movemask_epi8(_mm_cmpeq_epi8(old, zero)) == 0xFFFF &&
+                                _mm_movemask_epi8(_mm_cmpeq_epi8(now, zero)) != 0xFFFF;
+                    } else
+#endif
+                    {
+                        std::uint64_t old_any = 0, add_any = 0;
+                        for (int w = 0; w < W; ++w) {
+                            const std::uint64_t add = f[w] & ~m.seen[w] & ~m.refused[w];
+                            old_any |= m.next[w];
+                            add_any |= add;
+                            m.next[w] |= add;
+                        }
+                        first = old_any == 0 && add_any != 0;
                     }
-                    if (old_any == 0 && add_any != 0) nlist_.push_back(t);
+                    nlist_[n_new] = t;
+                    n_new += first;
                 }
             }
             flist_.clear();
-            for (const std::uint32_t t : nlist_)
-                if (enter(t, b)) flist_.push_back(t);
+            for (std::size_t q = 0; q < n_new; ++q)
+                if (enter(nlist_[q], b)) flist_.push_back(nlist_[q]);
         }
     }
 
