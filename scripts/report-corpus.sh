@@ -53,6 +53,8 @@ run profile_meyer profile "$data/sphere_irregular_3072.ply" --curvature meyer --
 run profile_quadric profile "$data/sphere_irregular_3072.ply" --curvature quadric --weighting inverse-square \
     --levels 1,3,7 --json profile_quadric.json
 run profile_noglobal profile "$data/fandisk.ply" --no-global --levels 1-5 --json -
+run profile_radii profile "$data/bunny_res3.ply" --radii default --json profile_radii.json
+run profile_radii_only profile "$data/fandisk.ply" --levels '' --radii 0.05,0.1,0.3 --json profile_radii_only.json
 run profile_vertexdata profile "$data/hemisphere.ply" --levels 1,2 --vertex-data vertexdata.ply
 run profile_vertexdata_range profile "$data/fandisk.ply" --levels 2 --vertex-data vertexdata_range.ply \
     --color-range 3
@@ -66,6 +68,8 @@ run compare_noedges "$data/fandisk.ply" "$data/hemisphere.ply" --no-edge-samples
     --no-roughness --json compare_noedges.json
 run compare_nodist "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-distance --curvature meyer \
     --json compare_nodist.json
+run compare_radii "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --levels 1,4 --radii default \
+    --json compare_radii.json
 run compare_stdout "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --levels 1,4 --json -
 run compare_map "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --levels 1 --distance-map map.ply
 run compare_map_range "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" --no-roughness \

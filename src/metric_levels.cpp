@@ -266,8 +266,9 @@ private:
                     if constexpr (W == 2) {
                         const __m128i fv = _mm_loadu_si128(reinterpret_cast<const __m128i*>(f));
                         const __m128i old = _mm_loadu_si128(reinterpret_cast<const __m128i*>(m.next));
-                        const __m128i closed = _mm_or_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(m.seen)),
-                                                            _mm_loadu_si128(reinterpret_cast<const __m128i*>(m.refused)));
+                        const __m128i closed =
+                            _mm_or_si128(_mm_loadu_si128(reinterpret_cast<const __m128i*>(m.seen)),
+                                         _mm_loadu_si128(reinterpret_cast<const __m128i*>(m.refused)));
                         const __m128i now = _mm_or_si128(old, _mm_andnot_si128(closed, fv));
                         _mm_storeu_si128(reinterpret_cast<__m128i*>(m.next), now);
                         const __m128i zero = _mm_setzero_si128();
