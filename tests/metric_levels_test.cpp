@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "meshdiff/error.h"
+#include "meshdiff/io.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/roughness_distance.h"
 #include "meshdiff/shapes.h"
@@ -11,9 +12,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <numeric>
 #include <random>
+#include <string>
 
 using namespace meshdiff;
 
@@ -467,4 +470,41 @@ TEST(MetricLevels, DistanceMatchesRadii)
     EXPECT_EQ(d.radii[0].relative_change, expect.relative_change);
     EXPECT_GT(d.radii[0].relative_change, 0.5);  // rougher
     EXPECT_EQ(d.levels.size(), 1u);
+}
+
+TEST(MetricLevels, SummationOrderIsPinned)
+{
+    // As DiskMeans.SummationOrderIsPinned for the ball search: a hash of the
+    // means' bits recorded when the order of the additions was fixed; a
+    // change of the search that reorders a sum fails here. No libm in the
+    // inputs (a mesh read from a file, hashed values and weights, radii from
+    // the bounding box by + - * / and sqrt only).
+    const Mesh mesh = read_mesh(std::string(MESHDIFF_TEST_DATA_DIR) + "/fandisk.ply").mesh;
+    const Adjacency adj = vertex_adjacency(mesh);
+    auto hashed = [](std::uint64_t i) {
+        std::uint64_t x = (i + 1) * 0x9E3779B97F4A7C15ULL;
+        x ^= x >> 29;
+        x *= 0xBF58476D1CE4E5B9ULL;
+        x ^= x >> 32;
+        return 1.0 + double(x >> 12) * 0x1p-52;
+    };
+    const std::size_t n = mesh.n_vertices();
+    std::vector<double> values(n), weights(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        values[i] = i % 13 == 4 ? std::nan("") : hashed(i);
+        weights[i] = hashed(i + n);
+    }
+    const BoundingBox box = bounding_box(mesh);
+    const double diag = (box.max - box.min).norm();
+    const std::vector<double> radii = {0.02 * diag, 0.05 * diag, 0.1 * diag};
+    const BallMeans bm = ball_means(mesh, adj, values, weights, radii, true);
+    std::uint64_t h = 0xCBF29CE484222325ULL;
+    auto add = [&h](const void* p, std::size_t bytes) {
+        for (std::size_t i = 0; i < bytes; ++i) h = (h ^ static_cast<const unsigned char*>(p)[i]) * 0x100000001B3ULL;
+    };
+    for (std::size_t k = 0; k < radii.size(); ++k) {
+        add(bm.mean[k].data(), n * sizeof(double));
+        add(bm.size[k].data(), n * sizeof(std::uint32_t));
+    }
+    EXPECT_EQ(h, 0x6FEE314DFB272E06ULL) << std::hex << h;
 }
