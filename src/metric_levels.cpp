@@ -272,8 +272,10 @@ private:
                         const __m128i now = _mm_or_si128(old, _mm_andnot_si128(closed, fv));
                         _mm_storeu_si128(reinterpret_cast<__m128i*>(m.next), now);
                         const __m128i zero = _mm_setzero_si128();
-                        first = _mm_movemask_epi8(_mm_cmpeq_epi8(old, zero)) == 0xFFFF &&
-                                _mm_movemask_epi8(_mm_cmpeq_epi8(now, zero)) != 0xFFFF;
+                        const auto zold = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(old, zero)));
+                        const auto znow = unsigned(_mm_movemask_epi8(_mm_cmpeq_epi8(now, zero)));
+                        // Without a branch (as in the ring search): zold == 0xFFFF and znow != 0xFFFF.
+                        first = (((zold + 1) & (0x1FFFEu - znow)) >> 16) != 0;
                     } else
 #endif
                     {
@@ -284,7 +286,7 @@ private:
                             add_any |= add;
                             m.next[w] |= add;
                         }
-                        first = old_any == 0 && add_any != 0;
+                        first = (old_any == 0) & (add_any != 0);
                     }
                     nlist_[n_new] = t;
                     n_new += first;
