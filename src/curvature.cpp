@@ -146,7 +146,6 @@ struct HubTrees
 
 constexpr std::size_t kHubDegree = kMaxFitNeighbors + 1;
 
-// Scratch space per thread: neighbourhood and least-squares system.
 // A fit's matrices, with \p Rows7 and \p Rows3 rows at most (Eigen::Dynamic:
 // any number, on the heap).
 template <int Rows7, int Rows3>
@@ -165,6 +164,7 @@ struct FitBuffers
     Eigen::ColPivHouseholderQR<Matrix3> qr3;
 };
 
+// Scratch space per thread: neighbourhood and least-squares system.
 struct FitScratch
 {
     std::vector<std::uint32_t> nbrs;
