@@ -4,6 +4,7 @@
 
 #include "detail/morton.h"
 #include "detail/progress.h"
+#include "detail/simd.h"
 
 #ifndef MESHDIFF_BFS_WORDS
 #define MESHDIFF_BFS_WORDS 2
@@ -20,6 +21,9 @@
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
+#endif
+#if MESHDIFF_HAVE_AVX512_KERNELS
+#include <immintrin.h>
 #endif
 
 namespace meshdiff {
@@ -58,6 +62,22 @@ struct Marks
     std::uint64_t next[W];
 };
 
+#if MESHDIFF_HAVE_AVX512_KERNELS
+// Entry k: bit k. Row j (entries 8 j .. 8 j + 7) selects, lane by lane, the
+// bits of a mask word's byte j: the centres that register of sums holds.
+struct LaneBits
+{
+    alignas(64) std::uint64_t bit[64];
+};
+constexpr LaneBits make_lane_bits()
+{
+    LaneBits t{};
+    for (int k = 0; k < 64; ++k) t.bit[k] = std::uint64_t(1) << k;
+    return t;
+}
+constexpr LaneBits kLaneBits = make_lane_bits();
+#endif
+
 template <int W>
 struct BatchBfs
 {
@@ -67,6 +87,7 @@ struct BatchBfs
     const bool all_defined;
     const bool word_sums;  // see kWordSumDegree
     const int lmax;
+    const bool avx512 = detail::use_avx512();
     std::vector<Marks<W>> marks;
     // The frontier: the vertices reached at the last level (flist) and the
     // centres that reached each (ffront, parallel to flist).
@@ -102,6 +123,10 @@ struct BatchBfs
     template <bool AllDefined, bool WordSums>
     void settle(int level, std::size_t n_new, const std::array<std::uint64_t, W>& live)
     {
+#if MESHDIFF_HAVE_AVX512_KERNELS
+        if constexpr (W == 2 && !WordSums)
+            if (avx512) return settle_avx512<AllDefined>(level, n_new);
+#endif
         double* const lsum = &sum[std::size_t(level) * kBatch];
         std::uint32_t* const lcount = &count[std::size_t(level) * kBatch];
         std::uint32_t* const lsize = &size[std::size_t(level) * kBatch];
@@ -141,6 +166,82 @@ struct BatchBfs
             }
         }
     }
+
+#if MESHDIFF_HAVE_AVX512_KERNELS
+    // settle<AllDefined, false>() for W == 2 with AVX-512: the level's 128
+    // sums stay in 16 registers of 8 doubles, and each listed vertex adds its
+    // value to all 16 under the masks of its new centres' bits (none where the
+    // value is NaN). The same additions in the same order as add_word() (per
+    // centre: the list's order), so the same sums to the last bit; no branch
+    // on the bits. The counts (and the sizes) are kept in bytes, one 64-byte
+    // register per mask word, and added to the level's every 255 vertices.
+    template <bool AllDefined>
+    __attribute__((target("avx512f,avx512bw"))) void settle_avx512(int level, std::size_t n_new)
+    {
+        double* const lsum = &sum[std::size_t(level) * kBatch];
+        std::uint32_t* const lcount = &count[std::size_t(level) * kBatch];
+        std::uint32_t* const lsize = &size[std::size_t(level) * kBatch];
+        flist.resize(n_new);
+        nfront.resize(n_new);
+        const std::uint32_t* const nl = nlist.data();
+        Marks<W>* const mk = marks.data();
+        const double* const vals = values.data();
+        __m512d acc[16];
+#pragma GCC unroll 16
+        for (int j = 0; j < 16; ++j) acc[j] = _mm512_loadu_pd(lsum + 8 * j);
+        __m512i cnt0 = _mm512_setzero_si512(), cnt1 = _mm512_setzero_si512();
+        __m512i siz0 = _mm512_setzero_si512(), siz1 = _mm512_setzero_si512();
+        for (std::size_t q0 = 0; q0 < n_new; q0 += 255) {
+            const std::size_t q1 = std::min(n_new, q0 + 255);
+            for (std::size_t q = q0; q < q1; ++q) {
+                const auto v = nl[q];
+                flist[q] = v;
+                Marks<W>& m = mk[v];
+                const std::uint64_t b0 = m.next[0], b1 = m.next[1];
+                if (!(m.seen[0] | m.seen[1])) touched.push_back(v);
+                m.next[0] = 0;
+                m.next[1] = 0;
+                m.seen[0] |= b0;
+                m.seen[1] |= b1;
+                nfront[q][0] = b0;
+                nfront[q][1] = b1;
+                const double x = vals[v];
+                // The centres that add x: all new ones, or none where x is NaN.
+                const std::uint64_t keep = AllDefined ? ~std::uint64_t(0) : std::uint64_t(0) - !std::isnan(x);
+                const __m512d val = _mm512_set1_pd(x);
+                const __m512i w0 = _mm512_set1_epi64(std::int64_t(b0 & keep));
+                const __m512i w1 = _mm512_set1_epi64(std::int64_t(b1 & keep));
+#pragma GCC unroll 8
+                for (int j = 0; j < 8; ++j) {
+                    const __m512i bit = _mm512_load_si512(reinterpret_cast<const __m512i*>(kLaneBits.bit + 8 * j));
+                    acc[j] = _mm512_mask_add_pd(acc[j], _mm512_test_epi64_mask(w0, bit), acc[j], val);
+                    acc[8 + j] = _mm512_mask_add_pd(acc[8 + j], _mm512_test_epi64_mask(w1, bit), acc[8 + j], val);
+                }
+                cnt0 = _mm512_sub_epi8(cnt0, _mm512_movm_epi8(_cvtu64_mask64(b0 & keep)));
+                cnt1 = _mm512_sub_epi8(cnt1, _mm512_movm_epi8(_cvtu64_mask64(b1 & keep)));
+                if constexpr (!AllDefined) {
+                    siz0 = _mm512_sub_epi8(siz0, _mm512_movm_epi8(_cvtu64_mask64(b0)));
+                    siz1 = _mm512_sub_epi8(siz1, _mm512_movm_epi8(_cvtu64_mask64(b1)));
+                }
+            }
+            alignas(64) std::uint8_t c[256];
+            _mm512_store_si512(reinterpret_cast<__m512i*>(c), cnt0);
+            _mm512_store_si512(reinterpret_cast<__m512i*>(c + 64), cnt1);
+            for (int b = 0; b < 128; ++b) lcount[b] += c[b];
+            cnt0 = _mm512_setzero_si512();
+            cnt1 = _mm512_setzero_si512();
+            if constexpr (!AllDefined) {
+                _mm512_store_si512(reinterpret_cast<__m512i*>(c + 128), siz0);
+                _mm512_store_si512(reinterpret_cast<__m512i*>(c + 192), siz1);
+                for (int b = 0; b < 128; ++b) lsize[b] += c[128 + b];
+                siz0 = _mm512_setzero_si512();
+                siz1 = _mm512_setzero_si512();
+            }
+        }
+#pragma GCC unroll 16
+        for (int j = 0; j < 16; ++j) _mm512_storeu_pd(lsum + 8 * j, acc[j]);
+    }
+#endif
 
     // Adds val to the sums (and 1 to the counts) of the centres whose bits
     // are set in x, in bit order; without AllDefined, a NaN val counts only in

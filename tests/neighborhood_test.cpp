@@ -6,6 +6,8 @@
 #include "meshdiff/io.h"
 #include "meshdiff/shapes.h"
 
+#include "detail/simd.h"
+
 #include <omp.h>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <numeric>
 #include <random>
 #include <string>
 #include <utility>
@@ -319,6 +322,19 @@ double hashed_value(std::uint64_t i)
     return 1.0 + double(x >> 12) * 0x1p-52;
 }
 
+// Allows or forbids the vector kernels for the scope (detail/simd.h).
+class KernelChoice
+{
+public:
+    explicit KernelChoice(bool allow) : before_(detail::allow_avx512(allow)) {}
+    ~KernelChoice() { detail::allow_avx512(before_); }
+    KernelChoice(const KernelChoice&) = delete;
+    KernelChoice& operator=(const KernelChoice&) = delete;
+
+private:
+    bool before_;
+};
+
 std::uint64_t fnv1a(std::uint64_t h, const void* data, std::size_t n)
 {
     const auto* p = static_cast<const unsigned char*>(data);
@@ -342,11 +358,72 @@ TEST(DiskMeans, SummationOrderIsPinned)
     std::vector<double> values(mesh.n_vertices());
     for (std::size_t i = 0; i < values.size(); ++i) values[i] = i % 13 == 4 ? std::nan("") : hashed_value(i);
     const std::vector<int> levels = {1, 4, 9, 20};
-    const DiskMeans dm = disk_means(mesh, adj, values, levels, true);
-    std::uint64_t h = 0xCBF29CE484222325ULL;
-    for (std::size_t k = 0; k < levels.size(); ++k) {
-        h = fnv1a(h, dm.mean[k].data(), dm.mean[k].size() * sizeof(double));
-        h = fnv1a(h, dm.size[k].data(), dm.size[k].size() * sizeof(std::uint32_t));
+    for (const bool vector_kernels : {false, true}) {  // the AVX-512 sums where the CPU has them
+        const KernelChoice choice(vector_kernels);
+        const DiskMeans dm = disk_means(mesh, adj, values, levels, true);
+        std::uint64_t h = 0xCBF29CE484222325ULL;
+        for (std::size_t k = 0; k < levels.size(); ++k) {
+            h = fnv1a(h, dm.mean[k].data(), dm.mean[k].size() * sizeof(double));
+            h = fnv1a(h, dm.size[k].data(), dm.size[k].size() * sizeof(std::uint32_t));
+        }
+        EXPECT_EQ(h, 0x9DA721C464C449D9ULL) << std::hex << h << (vector_kernels ? " (vector kernels)" : "");
     }
-    EXPECT_EQ(h, 0x9DA721C464C449D9ULL) << std::hex << h;
+}
+
+TEST(DiskMeans, SummationOrderIsPinnedWithEveryValueDefined)
+{
+    // The same with no NaN among the values: the search's other path (one
+    // counter per centre; the vectorised sums where the CPU has AVX-512).
+    // Hashes of fandisk and of a bunny.
+    auto hash_of = [](const Mesh& mesh) {
+        const Adjacency adj = vertex_adjacency(mesh);
+        std::vector<double> values(mesh.n_vertices());
+        for (std::size_t i = 0; i < values.size(); ++i) values[i] = hashed_value(i) - 1.5;
+        const std::vector<int> levels = {1, 2, 4, 9, 20};
+        const DiskMeans dm = disk_means(mesh, adj, values, levels, true);
+        std::uint64_t h = 0xCBF29CE484222325ULL;
+        for (std::size_t k = 0; k < levels.size(); ++k) {
+            h = fnv1a(h, dm.mean[k].data(), dm.mean[k].size() * sizeof(double));
+            h = fnv1a(h, dm.size[k].data(), dm.size[k].size() * sizeof(std::uint32_t));
+        }
+        return h;
+    };
+    const Mesh fandisk = read_mesh(data("fandisk.ply")).mesh, bunny = read_mesh(data("bunny_res3.ply")).mesh;
+    for (const bool vector_kernels : {false, true}) {
+        const KernelChoice choice(vector_kernels);
+        EXPECT_EQ(hash_of(fandisk), 0x0887E75001D60906ULL) << (vector_kernels ? "vector kernels" : "");
+        EXPECT_EQ(hash_of(bunny), 0x4421E46DFB5A7014ULL) << (vector_kernels ? "vector kernels" : "");
+    }
+}
+
+TEST(DiskMeans, VectorSumsAreTheScalarSumsBitForBit)
+{
+    // The AVX-512 settle loop against the scalar one, on closed and open
+    // meshes, with and without NaN values, every level 1..20: the same bits.
+    if (!detail::cpu_has_avx512()) GTEST_SKIP() << "this CPU has no AVX-512: the scalar sums only";
+    std::vector<int> levels(20);
+    std::iota(levels.begin(), levels.end(), 1);
+    for (const char* name : {"fandisk.ply", "bunny_res3.ply", "sphere_irregular_3072.ply", "hemisphere.ply"}) {
+        const Mesh mesh = read_mesh(data(name)).mesh;
+        const Adjacency adj = vertex_adjacency(mesh);
+        for (const int nan_every : {0, 7, 2}) {
+            std::vector<double> values(mesh.n_vertices());
+            for (std::size_t i = 0; i < values.size(); ++i)
+                values[i] = nan_every && i % std::size_t(nan_every) == 1 ? std::nan("") : 3.0 * hashed_value(i) - 4.5;
+            DiskMeans scalar, vector;
+            {
+                const KernelChoice choice(false);
+                scalar = disk_means(mesh, adj, values, levels, true);
+            }
+            {
+                const KernelChoice choice(true);
+                vector = disk_means(mesh, adj, values, levels, true);
+            }
+            for (std::size_t k = 0; k < levels.size(); ++k) {
+                ASSERT_EQ(scalar.size[k], vector.size[k]) << name << ", level " << levels[k];
+                ASSERT_EQ(0, std::memcmp(scalar.mean[k].data(), vector.mean[k].data(), sizeof(double) * values.size()))
+                    << name << ", NaN every " << nan_every << ", level " << levels[k];
+            }
+        }
+    }
 }

@@ -1,0 +1,28 @@
+// Run-time choice of the vector kernels. The library is built for the
+// baseline x86-64 (SSE2); a kernel with an AVX-512 variant compiles that
+// variant with __attribute__((target(...))) and takes it only where the CPU
+// has AVX-512F and AVX-512BW, so one binary runs everywhere. Every variant
+// gives bitwise the same results as the baseline (the same additions in the
+// same order); tests switch the variants off and on to check that.
+#pragma once
+
+#if defined(__x86_64__) && defined(__GNUC__)
+#define MESHDIFF_HAVE_AVX512_KERNELS 1
+#else
+#define MESHDIFF_HAVE_AVX512_KERNELS 0
+#endif
+
+namespace meshdiff::detail {
+
+//! Whether this CPU has the AVX-512 subsets the kernels use (F, BW).
+bool cpu_has_avx512();
+
+//! Whether the kernels take their AVX-512 variants now: the CPU has them and
+//! they are allowed.
+bool use_avx512();
+
+//! For tests and benchmarks: allows (the default) or forbids the AVX-512
+//! variants; returns the previous setting.
+bool allow_avx512(bool allow);
+
+}  // namespace meshdiff::detail
