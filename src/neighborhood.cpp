@@ -18,6 +18,7 @@
 #include <deque>
 #include <limits>
 #include <numeric>
+#include <tuple>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -116,6 +117,16 @@ struct BatchBfs
         wsize.resize(std::size_t(lmax + 1) * W);
     }
 
+    // The sums, counts and sizes of \p level, after sizing the next frontier
+    // for the \p n_new vertices that settle().
+    std::tuple<double*, std::uint32_t*, std::uint32_t*> level_sums(int level, std::size_t n_new)
+    {
+        flist.resize(n_new);
+        nfront.resize(n_new);
+        const std::size_t at = std::size_t(level) * kBatch;
+        return {&sum[at], &count[at], &size[at]};
+    }
+
     // Settles the vertices that expand() listed for \p level: their new
     // centres become seen and their frontier, and each adds its value to the
     // sums of those centres (in the list's order; within a vertex, in bit
@@ -127,11 +138,7 @@ struct BatchBfs
         if constexpr (W == 2 && !WordSums)
             if (avx512) return settle_avx512<AllDefined>(level, n_new);
 #endif
-        double* const lsum = &sum[std::size_t(level) * kBatch];
-        std::uint32_t* const lcount = &count[std::size_t(level) * kBatch];
-        std::uint32_t* const lsize = &size[std::size_t(level) * kBatch];
-        flist.resize(n_new);
-        nfront.resize(n_new);
+        const auto [lsum, lcount, lsize] = level_sums(level, n_new);
         const std::uint32_t* const nl = nlist.data();
         Marks<W>* const mk = marks.data();
         const double* const vals = values.data();
@@ -178,11 +185,7 @@ struct BatchBfs
     template <bool AllDefined>
     __attribute__((target("avx512f,avx512bw"))) void settle_avx512(int level, std::size_t n_new)
     {
-        double* const lsum = &sum[std::size_t(level) * kBatch];
-        std::uint32_t* const lcount = &count[std::size_t(level) * kBatch];
-        std::uint32_t* const lsize = &size[std::size_t(level) * kBatch];
-        flist.resize(n_new);
-        nfront.resize(n_new);
+        const auto [lsum, lcount, lsize] = level_sums(level, n_new);
         const std::uint32_t* const nl = nlist.data();
         Marks<W>* const mk = marks.data();
         const double* const vals = values.data();
