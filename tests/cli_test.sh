@@ -26,6 +26,14 @@ expect 3 profile "$tmp/cut.ply" && grep -q "cut.ply" "$tmp/stderr" && pass || fa
 printf 'OFF\n3 1 0\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n' > "$tmp/nan.off"
 expect 4 profile "$tmp/nan.off" && grep -q "non-finite" "$tmp/stderr" && pass || fail "nan message"
 [ "$(wc -l < "$tmp/stderr")" -eq 1 ] && pass || fail "errors must be one line"
+# compare reads both files at once (with 2 threads): the original's error still comes first, and a bad processed
+# file is named, at 1 and 2 threads alike
+for t in 1 2; do
+    expect 3 "$tmp/missing.ply" "$tmp/empty.ply" --threads $t && grep -q "missing.ply: no such file" "$tmp/stderr" &&
+        [ "$(wc -l < "$tmp/stderr")" -eq 1 ] && pass || fail "compare, both inputs bad, --threads $t: $(cat "$tmp/stderr")"
+    expect 4 "$data/fandisk.ply" "$tmp/nan.off" --threads $t && grep -q "nan.off" "$tmp/stderr" && pass ||
+        fail "compare, processed input bad, --threads $t: $(cat "$tmp/stderr")"
+done
 
 # --- hostile input (issue 13, tests/data/hostile/README.md): the exit code within 10 s (several files hung or
 # crashed the OpenMesh readers), and an error is one printable line naming the file
