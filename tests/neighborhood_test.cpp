@@ -342,6 +342,17 @@ std::uint64_t fnv1a(std::uint64_t h, const void* data, std::size_t n)
     return h;
 }
 
+// FNV-1a of the bits of every level's means and sizes, in level order.
+std::uint64_t hash_of_means(const DiskMeans& dm)
+{
+    std::uint64_t h = 0xCBF29CE484222325ULL;
+    for (std::size_t k = 0; k < dm.levels.size(); ++k) {
+        h = fnv1a(h, dm.mean[k].data(), dm.mean[k].size() * sizeof(double));
+        h = fnv1a(h, dm.size[k].data(), dm.size[k].size() * sizeof(std::uint32_t));
+    }
+    return h;
+}
+
 }  // namespace
 
 TEST(DiskMeans, SummationOrderIsPinned)
@@ -360,12 +371,7 @@ TEST(DiskMeans, SummationOrderIsPinned)
     const std::vector<int> levels = {1, 4, 9, 20};
     for (const bool vector_kernels : {false, true}) {  // the AVX-512 sums where the CPU has them
         const KernelChoice choice(vector_kernels);
-        const DiskMeans dm = disk_means(mesh, adj, values, levels, true);
-        std::uint64_t h = 0xCBF29CE484222325ULL;
-        for (std::size_t k = 0; k < levels.size(); ++k) {
-            h = fnv1a(h, dm.mean[k].data(), dm.mean[k].size() * sizeof(double));
-            h = fnv1a(h, dm.size[k].data(), dm.size[k].size() * sizeof(std::uint32_t));
-        }
+        const std::uint64_t h = hash_of_means(disk_means(mesh, adj, values, levels, true));
         EXPECT_EQ(h, 0x9DA721C464C449D9ULL) << std::hex << h << (vector_kernels ? " (vector kernels)" : "");
     }
 }
@@ -380,13 +386,7 @@ TEST(DiskMeans, SummationOrderIsPinnedWithEveryValueDefined)
         std::vector<double> values(mesh.n_vertices());
         for (std::size_t i = 0; i < values.size(); ++i) values[i] = hashed_value(i) - 1.5;
         const std::vector<int> levels = {1, 2, 4, 9, 20};
-        const DiskMeans dm = disk_means(mesh, adj, values, levels, true);
-        std::uint64_t h = 0xCBF29CE484222325ULL;
-        for (std::size_t k = 0; k < levels.size(); ++k) {
-            h = fnv1a(h, dm.mean[k].data(), dm.mean[k].size() * sizeof(double));
-            h = fnv1a(h, dm.size[k].data(), dm.size[k].size() * sizeof(std::uint32_t));
-        }
-        return h;
+        return hash_of_means(disk_means(mesh, adj, values, levels, true));
     };
     const Mesh fandisk = read_mesh(data("fandisk.ply")).mesh, bunny = read_mesh(data("bunny_res3.ply")).mesh;
     for (const bool vector_kernels : {false, true}) {
