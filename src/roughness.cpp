@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -37,24 +38,31 @@ LevelRoughness level_roughness(int level, const std::vector<double>& D, double o
     r.sigma = std::sqrt(total / double(sq.size()));
     if (total > 0.0) {
         const auto k = std::max<std::size_t>(1, std::size_t(std::ceil(outlier_fraction * double(sq.size()))));
-        std::vector<double> part(sq);
-        std::nth_element(part.begin(), part.begin() + std::ptrdiff_t(k - 1), part.end(), std::greater<>());
+        // In place: sq is not needed any more (the top k summed in the order
+        // nth_element leaves them, as ever).
+        std::nth_element(sq.begin(), sq.begin() + std::ptrdiff_t(k - 1), sq.end(), std::greater<>());
         double top = 0.0;
-        for (std::size_t i = 0; i < k; ++i) top += part[i];
+        for (std::size_t i = 0; i < k; ++i) top += sq[i];
         r.top_share = top / total;
     }
-    // The worst vertices by |D| (ties by id).
-    std::vector<std::uint32_t> ids;
-    ids.reserve(D.size());
-    for (std::size_t i = 0; i < D.size(); ++i)
-        if (!std::isnan(D[i])) ids.push_back(std::uint32_t(i));
-    const std::size_t m = std::min<std::size_t>(10, ids.size());
+    // The worst vertices by |D| (ties by id: a total order, so the list is
+    // unique), kept sorted in one pass over the vertices.
+    constexpr std::size_t kWorst = 10;
     auto worse = [&](std::uint32_t a, std::uint32_t b) {
         const double da = std::abs(D[a]), db = std::abs(D[b]);
         return da != db ? da > db : a < b;
     };
-    std::partial_sort(ids.begin(), ids.begin() + std::ptrdiff_t(m), ids.end(), worse);
-    r.worst_vertices.assign(ids.begin(), ids.begin() + std::ptrdiff_t(m));
+    std::array<std::uint32_t, kWorst + 1> top{};
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < D.size(); ++i) {
+        if (std::isnan(D[i])) continue;
+        const auto id = std::uint32_t(i);
+        if (m == kWorst && !worse(id, top[m - 1])) continue;
+        std::size_t at = m < kWorst ? m++ : m - 1;
+        for (; at > 0 && worse(id, top[at - 1]); --at) top[at] = top[at - 1];
+        top[at] = id;
+    }
+    r.worst_vertices.assign(top.begin(), top.begin() + std::ptrdiff_t(m));
     return r;
 }
 

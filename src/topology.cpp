@@ -223,13 +223,26 @@ TopologyReport topology_report(const Mesh& mesh)
     }
 
     check_cancelled(progress);
-    // Duplicate faces: same vertex set.
+    // Duplicate faces: same vertex set. The sorted corners of each face,
+    // bucketed by the smallest (a counting sort), then the other two sorted
+    // within each bucket: every face equal to the one before it counts.
     {
-        std::vector<std::array<std::int32_t, 3>> sorted(mesh.faces.begin(), mesh.faces.end());
-        for (auto& t : sorted) std::sort(t.begin(), t.end());
-        std::sort(sorted.begin(), sorted.end());
-        for (std::size_t i = 1; i < sorted.size(); ++i)
-            if (sorted[i] == sorted[i - 1]) ++r.duplicate_faces;
+        std::vector<std::uint32_t> start(n + 1, 0);
+        for (const Face& t : mesh.faces) ++start[std::size_t(std::min({t[0], t[1], t[2]})) + 1];
+        for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+        std::vector<std::uint64_t> rest(mesh.n_faces());  // the two larger corners, packed
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (const Face& t : mesh.faces) {
+            std::array<std::uint32_t, 3> c{std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])};
+            std::sort(c.begin(), c.end());
+            rest[fill[c[0]]++] = (std::uint64_t(c[1]) << 32) | c[2];
+        }
+        for (std::size_t v = 0; v < n; ++v) {
+            const auto b = rest.begin() + start[v], e = rest.begin() + start[v + 1];
+            std::sort(b, e);
+            for (auto it = b; it != e; ++it)
+                if (it != b && *it == *(it - 1)) ++r.duplicate_faces;
+        }
     }
 
     check_cancelled(progress);

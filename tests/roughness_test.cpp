@@ -12,6 +12,7 @@
 #include <omp.h>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -221,6 +222,42 @@ TEST(LevelRoughness, TopShareFlagsOneDominantVertex)
     EXPECT_EQ(l.worst_vertices[0], 17u);
     std::vector<double> even(2000, 0.5);
     EXPECT_NEAR(level_roughness(1, even).top_share, 2.0 / 2000.0, 1e-12);
+}
+
+// The worst vertices against a brute-force sort by (|D| descending, id),
+// with many ties (values from a small set, both signs), NaN and fewer
+// defined values than the list's length; the top share against a full sort
+// (equal up to the order of the top k's summation).
+TEST(LevelRoughness, WorstVerticesAndTopShareMatchABruteForceSort)
+{
+    std::mt19937 rng(11);
+    for (const std::size_t n : {0u, 1u, 5u, 9u, 10u, 11u, 300u, 5000u}) {
+        std::uniform_int_distribution<int> pick(-6, 6);
+        std::vector<double> D(n);
+        for (auto& d : D) {
+            const int k = pick(rng);
+            d = k == 6 ? std::nan("") : 0.25 * k;
+        }
+        const auto l = level_roughness(1, D, 0.05);
+        std::vector<std::uint32_t> ids;
+        for (std::size_t i = 0; i < n; ++i)
+            if (!std::isnan(D[i])) ids.push_back(std::uint32_t(i));
+        std::sort(ids.begin(), ids.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return std::abs(D[a]) != std::abs(D[b]) ? std::abs(D[a]) > std::abs(D[b]) : a < b;
+        });
+        ids.resize(std::min<std::size_t>(10, ids.size()));
+        EXPECT_EQ(l.worst_vertices, ids) << n;
+        std::vector<double> sq;
+        for (double d : D)
+            if (!std::isnan(d)) sq.push_back(d * d);
+        std::sort(sq.begin(), sq.end(), std::greater<>());
+        const double total = std::accumulate(sq.begin(), sq.end(), 0.0);
+        if (total > 0.0) {
+            const auto k = std::max<std::size_t>(1, std::size_t(std::ceil(0.05 * double(sq.size()))));
+            EXPECT_NEAR(l.top_share, std::accumulate(sq.begin(), sq.begin() + std::ptrdiff_t(k), 0.0) / total, 1e-12)
+                << n;
+        }
+    }
 }
 
 TEST(RoughnessProfile, FromExactCurvatureOfASphereIsZeroEverywhere)

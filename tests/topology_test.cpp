@@ -6,8 +6,10 @@
 #include "meshdiff/shapes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -245,5 +247,26 @@ TEST(DegenerateFaceMask, FlipsAtKDegenerateAreaTimesTheSquaredDiagonal)
         const auto mask = degenerate_face_mask(m);
         EXPECT_EQ(mask, (std::vector<char>{0, 0, 0, 0, char(factor < 1.0)})) << factor;
         EXPECT_EQ(topology_report(m).degenerate_faces, factor < 1.0 ? 1u : 0u);
+    }
+}
+
+// Random faces over few vertices (so that many repeat, in any corner order,
+// some with repeated corners): the duplicate count equals a brute-force sort
+// of the sorted corner triples.
+TEST(Topology, DuplicateFacesMatchABruteForceCount)
+{
+    std::mt19937 rng(7);
+    for (int round = 0; round < 20; ++round) {
+        Mesh m;
+        const int nv = 4 + round;
+        for (int i = 0; i < nv; ++i) m.points.emplace_back(i, (i * 7) % 5, (i * 3) % 4);
+        std::uniform_int_distribution<int> vertex(0, nv - 1);
+        for (int f = 0; f < 200; ++f) m.faces.push_back({vertex(rng), vertex(rng), vertex(rng)});
+        std::vector<std::array<int, 3>> sorted(m.faces.begin(), m.faces.end());
+        for (auto& t : sorted) std::sort(t.begin(), t.end());
+        std::sort(sorted.begin(), sorted.end());
+        std::size_t expected = 0;
+        for (std::size_t i = 1; i < sorted.size(); ++i) expected += sorted[i] == sorted[i - 1];
+        EXPECT_EQ(topology_report(m).duplicate_faces, expected) << round;
     }
 }

@@ -325,6 +325,7 @@ PlySoup read_ply(const std::string& path)
         if (e.name == "face") soup.polygons.reserve(std::size_t(e.count));
         double xyz[3] = {0, 0, 0};
         std::vector<int> poly;
+        const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
         for (std::uint64_t i = 0; i < e.count; ++i) {
             for (std::size_t k = 0; k < e.props.size(); ++k) {
                 const auto& p = e.props[k];
@@ -349,8 +350,8 @@ PlySoup read_ply(const std::string& path)
                     if (scalar_slot[k] >= 0) soup.scalar_values[std::size_t(scalar_slot[k])].push_back(v);
                 }
             }
-            if (e.name == "vertex") soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
-            if (e.name == "face") soup.polygons.push_back(poly);
+            if (is_vertex) soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+            if (is_face) soup.polygons.push_back(poly);
         }
     }
     src.expect_end();

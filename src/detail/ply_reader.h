@@ -7,6 +7,8 @@
 
 #include "meshdiff/mesh.h"
 
+#include "detail/polygon_list.h"
+
 #include <string>
 #include <vector>
 
@@ -15,7 +17,7 @@ namespace meshdiff::detail {
 struct PlySoup
 {
     std::vector<Vec3> points;
-    std::vector<std::vector<int>> polygons;
+    PolygonList polygons;
     std::vector<std::string> scalar_names;           //!< scalar vertex properties other than x, y, z
     std::vector<std::vector<double>> scalar_values;  //!< [property][vertex]
 };

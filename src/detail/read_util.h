@@ -8,6 +8,8 @@
 #include "meshdiff/io.h"
 #include "meshdiff/mesh.h"
 
+#include "detail/polygon_list.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -23,7 +25,7 @@ namespace meshdiff::detail {
 struct Soup
 {
     std::vector<Vec3> points;
-    std::vector<std::vector<int>> polygons;
+    PolygonList polygons;
 };
 
 //! \p text for an error message: in single quotes, at most \p max_bytes of it
