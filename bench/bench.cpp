@@ -115,7 +115,7 @@ void bench(const std::string& label, const std::string& path, const Mesh* genera
         for (int k = 0; k < 2; ++k) {
             const bool scalar = k == 1;
             if ((kernels == Kernels::vector && scalar) || (kernels == Kernels::scalar && !scalar)) continue;
-            detail::allow_avx512(!scalar);
+            detail::allow_vector_kernels(!scalar);
             runs[k].push_back(run_once(path, generated));
             const auto& s = runs[k].back();
             fmt::print(
@@ -124,7 +124,7 @@ void bench(const std::string& label, const std::string& path, const Mesh* genera
                 r + 1, kernels == Kernels::both ? (scalar ? " scalar" : " vector") : "", s.read, s.facts,
                 s.normalize_normals, s.curvature, s.rings, s.rings_cpu, s.total);
         }
-    detail::allow_avx512(true);
+    detail::allow_vector_kernels(true);
     auto med = [&](int k, double Stages::*m) {
         std::vector<double> v;
         for (const auto& s : runs[k]) v.push_back(s.*m);

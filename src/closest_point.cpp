@@ -3,6 +3,7 @@
 #include "meshdiff/error.h"
 
 #include "detail/point_triangle.h"
+#include "detail/point_triangle_x4.h"
 #include "detail/progress.h"
 #include "detail/query_block.h"
 
@@ -356,15 +357,43 @@ ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, s
     std::uint32_t best_face = kNoFace;
     std::uint32_t best_pos = kNoFace;
     Vec3 best_point = Vec3::Zero();
-    auto consider = [&](std::uint32_t pos) {
-        const Tri& t = tris[pos];
-        const Vec3 q = tri_point(p, t);
-        const double d2 = (p - q).squaredNorm();
-        if (d2 < best_d2 || (d2 == best_d2 && t.face < best_face)) {
+    auto offer = [&](double d2, std::uint32_t pos, const Vec3& q) {
+        const std::uint32_t face = tris[pos].face;
+        if (d2 < best_d2 || (d2 == best_d2 && face < best_face)) {
             best_d2 = d2;
-            best_face = t.face;
+            best_face = face;
             best_pos = pos;
             best_point = q;
+        }
+    };
+    auto consider = [&](std::uint32_t pos) {
+        const Vec3 q = tri_point(p, tris[pos]);
+        offer((p - q).squaredNorm(), pos, q);
+    };
+    // A leaf's triangles: with AVX2, up to four at once (bitwise the same
+    // values, detail/point_triangle_x4.h); thin ones one by one.
+    const bool x4 = detail::use_avx2();
+    auto consider_leaf = [&](const Node& leaf) {
+        const std::uint32_t first = leaf.first, count = leaf.triangles();
+        if (!x4 || count < 2) {
+            for (std::uint32_t i = 0; i < count; ++i) consider(first + i);
+            return;
+        }
+        detail::PairsX4 in;
+        for (std::uint32_t k = 0; k < 4; ++k) {
+            const Tri& t = tris[first + std::min(k, count - 1)];
+            in.p[k] = p.data();
+            in.a[k] = t.a.data();
+            in.b[k] = t.b.data();
+            in.c[k] = t.c.data();
+        }
+        double d2[4], qx[4], qy[4], qz[4];
+        detail::closest_points_x4(in, d2, qx, qy, qz);
+        for (std::uint32_t i = 0; i < count; ++i) {
+            if (tris[first + i].thin)
+                consider(first + i);
+            else
+                offer(d2[i], first + i, Vec3(qx[i], qy[i], qz[i]));
         }
     };
 
@@ -386,7 +415,7 @@ ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, s
             if (e.d2 * keep > best_d2) continue;
             const Node& node = nodes[e.node];
             if (node.triangles() > 0) {
-                for (std::uint32_t i = 0; i < node.triangles(); ++i) consider(node.first + i);
+                consider_leaf(node);
                 continue;
             }
             const double dl = node_distance2(node.first, p);
@@ -407,7 +436,7 @@ ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, s
         // Start in the hint's leaf and climb to the root, searching the sibling
         // subtree at each level: every triangle is in exactly one of these.
         std::uint32_t node = leaf_of[hint];
-        for (std::uint32_t i = 0; i < nodes[node].triangles(); ++i) consider(nodes[node].first + i);
+        consider_leaf(nodes[node]);
         while (node != 0) {
             const std::uint32_t parent = parent_of[node];
             const std::uint32_t sibling = node == nodes[parent].first ? node + 1 : node - 1;

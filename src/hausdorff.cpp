@@ -5,6 +5,7 @@
 
 #include "detail/hausdorff.h"
 #include "detail/point_triangle.h"
+#include "detail/point_triangle_x4.h"
 #include "detail/progress.h"
 
 #include <fmt/format.h>
@@ -83,6 +84,28 @@ double squared_distance(const Vec3& p, const Triangle& t)
     return (p - q).squaredNorm();
 }
 
+// The squared distances from the \p n points \p pts to triangle t, into
+// \p d2 (room for n rounded up to 4): squared_distance() of each, four at a
+// time with AVX2 (bitwise the same, detail/point_triangle_x4.h).
+void squared_distances(const Vec3* pts, int n, const Triangle& t, double* d2)
+{
+    if (t.thin || n < 2 || !detail::use_avx2()) {
+        for (int i = 0; i < n; ++i) d2[i] = squared_distance(pts[i], t);
+        return;
+    }
+    detail::PairsX4 in;
+    for (int k = 0; k < 4; ++k) {
+        in.a[k] = t.p0.data();
+        in.b[k] = t.p1.data();
+        in.c[k] = t.p2.data();
+    }
+    double qx[4], qy[4], qz[4];
+    for (int i0 = 0; i0 < n; i0 += 4) {
+        for (int k = 0; k < 4; ++k) in.p[k] = pts[std::min(i0 + k, n - 1)].data();
+        detail::closest_points_x4(in, d2 + i0, qx, qy, qz);
+    }
+}
+
 // Distance from p to face t of B (closest_point_on_triangle()'s value).
 double face_distance(const Vec3& p, const Triangles& b, std::uint32_t t)
 {
@@ -94,9 +117,11 @@ double face_distance(const Vec3& p, const Triangles& b, std::uint32_t t)
 double max_corner_distance(const std::array<Vec3, 3>& c, const Triangles& b, std::uint32_t t, double stop)
 {
     const double stop2 = stop * stop;
+    double d2[4];
+    squared_distances(c.data(), 3, b[t], d2);
     double v = 0.0;
-    for (const Vec3& q : c) {
-        v = std::max(v, squared_distance(q, b[t]));
+    for (int k = 0; k < 3; ++k) {
+        v = std::max(v, d2[k]);
         if (v >= stop2) return kInf;
     }
     return std::sqrt(v);
@@ -281,8 +306,10 @@ double piece_bound(const Piece& q, std::uint32_t t, int depth, double goal, cons
 {
     if (q.n == 0) return 0.0;
     if (--work < 0) return kInf;
+    std::array<double, kMaxPiece> d2;
+    squared_distances(q.p.data(), q.n, tris[t], d2.data());
     double v2 = 0.0;
-    for (int i = 0; i < q.n; ++i) v2 = std::max(v2, squared_distance(q.p[std::size_t(i)], tris[t]));
+    for (int i = 0; i < q.n; ++i) v2 = std::max(v2, d2[std::size_t(i)]);
     const double v = std::sqrt(v2);
     if (v <= goal) return v;
     if (depth == 0) return kInf;

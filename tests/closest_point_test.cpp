@@ -4,6 +4,8 @@
 #include "meshdiff/io.h"
 #include "meshdiff/shapes.h"
 
+#include "detail/simd.h"
+
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -214,4 +216,43 @@ TEST(ClosestPoint, DistancesOfARangeEqualTheWholeBatch)
     index.distances(q.data() + 777, part.size(), part.data());
     for (std::size_t i = 0; i < part.size(); ++i) EXPECT_EQ(part[i], all[777 + i]) << i;
     index.distances(q.data(), 0, nullptr);  // nothing to do
+}
+
+// The AVX2 leaf kernel (where the CPU has it) and the scalar loop give the
+// same closest point, face and distance bits, on meshes with thin and
+// degenerate triangles too; and so the same hull bounds.
+TEST(ClosestPoint, VectorAndScalarKernelsGiveTheSameAnswersBitForBit)
+{
+    for (const Mesh& m : {read_mesh(kData + "/bunny_res3.ply").mesh, read_mesh(kData + "/teapot.obj").mesh,
+                          mesh_with_degenerate_faces(), read_mesh(kData + "/fandisk.ply").mesh}) {
+        const ClosestPointIndex index(m);
+        const auto queries = random_queries(m, 20000, 11);
+        const bool before = detail::allow_vector_kernels(false);
+        const auto scalar = index.closest_points(queries);
+        std::vector<double> scalar_hull;
+        for (std::size_t f = 0; f < m.n_faces(); f += 7) {
+            const Face& t = m.faces[f];
+            scalar_hull.push_back(
+                index.hull_distance_bound({m.points[std::size_t(t[0])] + Vec3(1e-3, 0, 0), m.points[std::size_t(t[1])],
+                                           m.points[std::size_t(t[2])] - Vec3(0, 2e-3, 0)},
+                                          0.0));
+        }
+        detail::allow_vector_kernels(true);
+        const auto vector = index.closest_points(queries);
+        std::size_t h = 0;
+        for (std::size_t f = 0; f < m.n_faces(); f += 7, ++h) {
+            const Face& t = m.faces[f];
+            const double v =
+                index.hull_distance_bound({m.points[std::size_t(t[0])] + Vec3(1e-3, 0, 0), m.points[std::size_t(t[1])],
+                                           m.points[std::size_t(t[2])] - Vec3(0, 2e-3, 0)},
+                                          0.0);
+            ASSERT_EQ(std::memcmp(&v, &scalar_hull[h], sizeof(double)), 0) << f;
+        }
+        detail::allow_vector_kernels(before);
+        for (std::size_t i = 0; i < queries.size(); ++i) {
+            ASSERT_EQ(std::memcmp(&scalar[i].distance, &vector[i].distance, sizeof(double)), 0) << i;
+            ASSERT_EQ(scalar[i].face, vector[i].face) << i;
+            ASSERT_EQ(std::memcmp(scalar[i].point.data(), vector[i].point.data(), 3 * sizeof(double)), 0) << i;
+        }
+    }
 }

@@ -5,6 +5,8 @@
 #include "meshdiff/shapes.h"
 #include "meshdiff/surface_distance.h"
 
+#include "detail/simd.h"
+
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -287,6 +289,30 @@ TEST(Hausdorff, SameIntervalAndLocationForAnyThreadCount)
     EXPECT_EQ(one.location.closest_face, many.location.closest_face);
     EXPECT_EQ(one.bound_evaluations, many.bound_evaluations);
     EXPECT_EQ(one.rounds, many.rounds);
+}
+
+// The certification's bounds with the AVX2 kernel (where the CPU has it) and
+// without: the same interval, location and work, to the bit.
+TEST(Hausdorff, VectorAndScalarKernelsGiveTheSameInterval)
+{
+    const Mesh a = noisy_sphere(3, 0.03, 5).mesh;
+    const Mesh b = read_mesh(kData + "/sphere_irregular_3072.ply").mesh;
+    HausdorffOptions o;
+    o.relative_tolerance = 1e-8;
+    for (const auto& [x, y] : {std::pair<const Mesh*, const Mesh*>{&a, &b}, {&b, &a}}) {
+        const bool before = detail::allow_vector_kernels(false);
+        const CertifiedHausdorff scalar = certified_hausdorff(*x, *y, o);
+        detail::allow_vector_kernels(true);
+        const CertifiedHausdorff vector = certified_hausdorff(*x, *y, o);
+        detail::allow_vector_kernels(before);
+        EXPECT_TRUE(same_bits(scalar.lower, vector.lower));
+        EXPECT_TRUE(same_bits(scalar.upper, vector.upper));
+        EXPECT_EQ(scalar.location.point, vector.location.point);
+        EXPECT_EQ(scalar.location.face, vector.location.face);
+        EXPECT_EQ(scalar.location.closest_face, vector.location.closest_face);
+        EXPECT_EQ(scalar.bound_evaluations, vector.bound_evaluations);
+        EXPECT_EQ(scalar.rounds, vector.rounds);
+    }
 }
 
 TEST(Hausdorff, BudgetStopsWithAValidInterval)

@@ -326,8 +326,8 @@ double hashed_value(std::uint64_t i)
 class KernelChoice
 {
 public:
-    explicit KernelChoice(bool allow) : before_(detail::allow_avx512(allow)) {}
-    ~KernelChoice() { detail::allow_avx512(before_); }
+    explicit KernelChoice(bool allow) : before_(detail::allow_vector_kernels(allow)) {}
+    ~KernelChoice() { detail::allow_vector_kernels(before_); }
     KernelChoice(const KernelChoice&) = delete;
     KernelChoice& operator=(const KernelChoice&) = delete;
 

@@ -2,11 +2,16 @@
 
 #include "meshdiff/shapes.h"
 
+#include "detail/point_triangle.h"
+#include "detail/point_triangle_x4.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <random>
 
 using namespace meshdiff;
 
@@ -134,4 +139,78 @@ TEST(PointTriangle, BruteForceIsTheMinimumOverFacesWithTheLowestFaceOnTies)
             if (v == 0) lowest = std::min(lowest, std::uint32_t(f));
     EXPECT_EQ(at_vertex.face, lowest);
     EXPECT_NEAR(at_vertex.distance, 0.5, 1e-15);
+}
+
+// The AVX2 kernel of the closest-point index and the certification
+// (detail/point_triangle_x4.h) against detail::triangle_point(), lane by
+// lane, bit for bit: points in every Voronoi region, on the corners, on the
+// edges and in the plane, triangles from needles near the thin threshold to
+// 1e6 wide and 1e-4 small far from the origin, one point for four
+// triangles and four points for one.
+TEST(PointTriangleX4, LanesAreTheScalarClosestPointsBitForBit)
+{
+    if (!detail::cpu_has_avx2()) GTEST_SKIP() << "this CPU has no AVX2: the scalar closest points only";
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::uniform_int_distribution<int> kind(0, 9);
+    auto vec = [&] { return Vec3(u(rng), u(rng), u(rng)); };
+    std::size_t compared = 0;
+    for (int round = 0; round < 200000; ++round) {
+        Vec3 a[4], b[4], c[4], p[4];
+        const bool one_point = round % 2 == 0;
+        for (int k = 0; k < 4; ++k) {
+            a[k] = vec();
+            b[k] = vec();
+            c[k] = vec();
+            p[k] = 2.0 * vec();
+            switch (kind(rng)) {
+                case 0:
+                    c[k] = a[k] + 1e-7 * (b[k] - a[k]) + Vec3(1e-9, 0.0, 0.0);
+                    break;  // a needle
+                case 1:
+                    p[k] = b[k];
+                    break;  // a corner
+                case 2:
+                    p[k] = 0.5 * (b[k] + c[k]);
+                    break;  // an edge
+                case 3:
+                    p[k] = (a[k] + b[k] + c[k]) / 3.0;
+                    break;  // the plane
+                case 4:
+                    a[k] *= 1e6, b[k] *= 1e6, c[k] *= 1e6;
+                    break;
+                case 5: {
+                    const Vec3 far(3e3, -2e3, 1e3);
+                    a[k] = far + 1e-4 * a[k], b[k] = far + 1e-4 * b[k], c[k] = far + 1e-4 * c[k];
+                    p[k] = far + 1e-4 * p[k];
+                    break;
+                }
+                default:
+                    break;
+            }
+            if (one_point) p[k] = p[0];
+        }
+        if (round % 3 == 0)  // four points, one triangle (the certification's use)
+            for (int k = 1; k < 4; ++k) a[k] = a[0], b[k] = b[0], c[k] = c[0];
+        detail::PairsX4 in;
+        for (int k = 0; k < 4; ++k) {
+            in.p[k] = p[k].data();
+            in.a[k] = a[k].data();
+            in.b[k] = b[k].data();
+            in.c[k] = c[k].data();
+        }
+        double d2[4], qx[4], qy[4], qz[4];
+        detail::closest_points_x4(in, d2, qx, qy, qz);
+        for (int k = 0; k < 4; ++k) {
+            if (detail::is_thin_triangle(a[k], b[k], c[k])) continue;  // never given to the kernel
+            const Vec3 q = detail::triangle_point(p[k], a[k], b[k], c[k]);
+            const double e2 = (p[k] - q).squaredNorm();
+            ASSERT_EQ(std::memcmp(&e2, &d2[k], sizeof(double)), 0) << round << " lane " << k;
+            ASSERT_EQ(std::memcmp(&q[0], &qx[k], sizeof(double)), 0) << round << " lane " << k;
+            ASSERT_EQ(std::memcmp(&q[1], &qy[k], sizeof(double)), 0) << round << " lane " << k;
+            ASSERT_EQ(std::memcmp(&q[2], &qz[k], sizeof(double)), 0) << round << " lane " << k;
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 600000u);
 }

@@ -27,10 +27,7 @@ public:
 
     std::size_t size() const { return start_.size() - 1; }
     bool empty() const { return size() == 0; }
-    Polygon operator[](std::size_t i) const
-    {
-        return {corners_.data() + start_[i], corners_.data() + start_[i + 1]};
-    }
+    Polygon operator[](std::size_t i) const { return {corners_.data() + start_[i], corners_.data() + start_[i + 1]}; }
     //! Room for \p n polygons of \p corners_each corners.
     void reserve(std::size_t n, std::size_t corners_each = 3)
     {

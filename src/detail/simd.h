@@ -1,7 +1,8 @@
 // Run-time choice of the vector kernels. The library is built for the
-// baseline x86-64 (SSE2); a kernel with an AVX-512 variant compiles that
-// variant with __attribute__((target(...))) and takes it only where the CPU
-// has AVX-512F and AVX-512BW, so one binary runs everywhere. Every variant
+// baseline x86-64 (SSE2); a kernel with an AVX-512 or AVX2 variant compiles
+// that variant for its target (__attribute__((target(...))) or #pragma GCC
+// target) and takes it only where the CPU has it (AVX-512F and AVX-512BW;
+// AVX2), so one binary runs everywhere. Every variant
 // gives bitwise the same results as the baseline (the same additions in the
 // same order); tests switch the variants off and on to check that.
 #pragma once
@@ -21,8 +22,14 @@ bool cpu_has_avx512();
 //! they are allowed.
 bool use_avx512();
 
-//! For tests and benchmarks: allows (the default) or forbids the AVX-512
-//! variants; returns the previous setting.
-bool allow_avx512(bool allow);
+//! Whether this CPU has AVX2.
+bool cpu_has_avx2();
+
+//! Whether the kernels take their AVX2 variants now.
+bool use_avx2();
+
+//! For tests and benchmarks: allows (the default) or forbids all vector
+//! variants (AVX-512 and AVX2); returns the previous setting.
+bool allow_vector_kernels(bool allow);
 
 }  // namespace meshdiff::detail
