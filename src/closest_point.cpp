@@ -13,8 +13,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <numeric>
+
+#include <omp.h>
 
 namespace meshdiff {
 
@@ -99,6 +102,9 @@ struct Box
 };
 
 constexpr std::uint32_t kLeafSize = 4;
+// Triangles from which the build splits the root's two subtrees between two
+// threads.
+constexpr std::size_t kParallelBuild = 4096;
 constexpr int kBins = 16;
 constexpr std::uint32_t kMaxSahDepth = 48;
 // Queries per parallel block (fixed: results do not depend on threads).
@@ -147,12 +153,15 @@ struct ClosestPointIndex::Impl
 void ClosestPointIndex::Impl::build(const Mesh& mesh)
 {
     const std::size_t n = mesh.n_faces();
-    // Progress: the triangles placed in leaves (the build is serial: it may throw).
+    // Progress: the triangles placed in leaves. The tree is grown outside
+    // OpenMP regions (its check() may throw Cancelled).
     detail::StageProgress stage("index", n);
     tris.resize(n);
     std::vector<Box> boxes(n);
     std::vector<Vec3> centroid(n);
     std::vector<double> area(n);
+    // Per triangle, independent: in parallel (as the loops after the tree).
+#pragma omp parallel for schedule(static)
     for (std::size_t f = 0; f < n; ++f) {
         const Face& t = mesh.faces[f];
         Tri& tri = tris[f];
@@ -170,8 +179,6 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
     }
     std::vector<std::uint32_t> order(n);
     std::iota(order.begin(), order.end(), 0u);
-    obbs.clear();
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> obb_of;  // (node, slot)
     // The oriented box of the triangles order[begin..end): principal axes of
     // their corners, extents over the corners, padded.
     auto fit_obb = [&](std::uint32_t begin, std::uint32_t end, Obb& out) {
@@ -222,25 +229,29 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
         return std::isfinite(pad);
     };
 
-    nodes.clear();
-    nodes.reserve(2 * (n / kLeafSize + 1));
-    nodes.push_back({});
     struct Task
     {
         std::uint32_t node, begin, end, depth;
     };
-    std::vector<Task> stack{{0, 0, std::uint32_t(n), 0}};
-    stage.check();
-    while (!stack.empty()) {
-        stage.check();  // a node costs O(its triangles), the root O(n)
-        const Task task = stack.back();
-        stack.pop_back();
+    // A tree or a subtree being built: its nodes (numbered from 0 in the
+    // order the build creates them), oriented boxes (in the order of their
+    // nodes' processing) with their (node, slot) pairs, and the tasks left.
+    struct Part
+    {
+        std::vector<Node> nodes;
+        std::vector<Obb> obbs;
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> obb_of;
+        std::vector<Task> stack;
+    };
+    // Processes one node: its boxes, and its triangles as a leaf or its two
+    // children, created in `out` and pushed on its stack (left on top).
+    auto process = [&](const Task task, Part& out) {
         Box box, cbox;
         for (std::uint32_t i = task.begin; i < task.end; ++i) {
             box.grow(boxes[order[i]]);
             cbox.grow(centroid[order[i]]);
         }
-        Node& node = nodes[task.node];
+        Node& node = out.nodes[task.node];
         for (int k = 0; k < 3; ++k) {
             node.lo[std::size_t(k)] = box.lo[k];
             node.hi[std::size_t(k)] = box.hi[k];
@@ -254,8 +265,8 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
                 const double obb_half_area =
                     4.0 * (obb.half[0] * obb.half[1] + obb.half[1] * obb.half[2] + obb.half[2] * obb.half[0]);
                 if (obb_half_area < kObbKeepShare * box.half_area()) {
-                    obb_of.push_back({task.node, std::uint32_t(obbs.size())});
-                    obbs.push_back(obb);
+                    out.obb_of.push_back({task.node, std::uint32_t(out.obbs.size())});
+                    out.obbs.push_back(obb);
                 }
             }
         }
@@ -263,7 +274,7 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
             node.first = task.begin;
             node.count = count;
             if (!stage.tick(count)) stage.check();
-            continue;
+            return;
         }
         // Binned SAH along the longest centroid axis; median split if the
         // centroids coincide or the SAH split is one-sided.
@@ -320,15 +331,69 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
                                  });
             }
         }
-        const auto left = std::uint32_t(nodes.size());
-        nodes.push_back({});
-        nodes.push_back({});
-        nodes[task.node].first = left;
-        nodes[task.node].count = 0;
-        stack.push_back({left + 1, mid, task.end, task.depth + 1});
-        stack.push_back({left, task.begin, mid, task.depth + 1});
+        const auto left = std::uint32_t(out.nodes.size());
+        out.nodes.push_back({});
+        out.nodes.push_back({});
+        out.nodes[task.node].first = left;
+        out.nodes[task.node].count = 0;
+        out.stack.push_back({left + 1, mid, task.end, task.depth + 1});
+        out.stack.push_back({left, task.begin, mid, task.depth + 1});
+    };
+    // Depth first, left child first, as the tasks come off the stack.
+    auto grow = [&](Part& part) {
+        while (!part.stack.empty()) {
+            stage.check();  // a node costs O(its triangles), the root O(n)
+            const Task task = part.stack.back();
+            part.stack.pop_back();
+            process(task, part);
+        }
+    };
+
+    Part tree;
+    tree.nodes.reserve(2 * (n / kLeafSize + 1));
+    tree.nodes.push_back({});
+    stage.check();
+    process({0, 0, std::uint32_t(n), 0}, tree);
+    if (tree.stack.size() == 2 && n >= kParallelBuild && omp_get_max_threads() > 1) {
+        // The root's two subtrees on two threads, each numbered from 0 (its
+        // root), then appended as the serial build numbers them: the left
+        // subtree's root is node 1, its other nodes follow from 3 in their
+        // order; the right one's root is node 2, its other nodes follow
+        // those. Their triangle ranges are disjoint. The same tree, node for
+        // node, as the serial build.
+        Part sub[2];
+        for (int k = 0; k < 2; ++k) {
+            const Task t = tree.stack[std::size_t(1 - k)];  // left on top
+            sub[k].nodes.push_back({});
+            sub[k].stack.push_back({0, t.begin, t.end, t.depth});
+        }
+        auto right = std::async(std::launch::async, [&] { grow(sub[1]); });
+        grow(sub[0]);
+        right.get();
+        tree.nodes.resize(3);
+        const std::uint32_t offset[2] = {2, std::uint32_t(sub[0].nodes.size()) + 1};  // for local ids >= 1
+        for (std::uint32_t k = 0; k < 2; ++k) {
+            auto global = [&](std::uint32_t local) { return local == 0 ? 1 + k : local + offset[k]; };
+            for (std::size_t i = 0; i < sub[k].nodes.size(); ++i) {
+                Node node = sub[k].nodes[i];
+                if (node.triangles() == 0) node.first = global(node.first);
+                if (i == 0)
+                    tree.nodes[1 + k] = node;
+                else
+                    tree.nodes.push_back(node);
+            }
+            const auto slot0 = std::uint32_t(tree.obbs.size());
+            tree.obbs.insert(tree.obbs.end(), sub[k].obbs.begin(), sub[k].obbs.end());
+            for (const auto& [node, slot] : sub[k].obb_of) tree.obb_of.push_back({global(node), slot0 + slot});
+        }
+    } else {
+        grow(tree);
     }
+    nodes = std::move(tree.nodes);
+    obbs = std::move(tree.obbs);
+    const auto obb_of = std::move(tree.obb_of);
     std::vector<Tri> ordered(n);
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) ordered[i] = tris[order[i]];
     tris.swap(ordered);
     obb_slot.assign(obbs.empty() ? 0 : nodes.size(), 0);
@@ -339,7 +404,9 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
     parent_of.assign(nodes.size(), 0);
     leaf_of.assign(n, 0);
     position_of.assign(n, 0);
+#pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) position_of[tris[i].face] = std::uint32_t(i);
+#pragma omp parallel for schedule(static)
     for (std::size_t k = 0; k < nodes.size(); ++k) {
         const Node& node = nodes[k];
         if (node.triangles() > 0) {

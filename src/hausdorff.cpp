@@ -159,16 +159,28 @@ std::vector<std::array<std::uint32_t, 3>> edge_neighbours(const Mesh& m)
         std::uint32_t face;
         std::uint32_t k;
     };
-    std::vector<HalfEdge> e;
-    e.reserve(3 * m.n_faces());
+    // Sorted by (lo, hi, face, k), a key unique per half-edge: a counting
+    // sort by lo, then small sorts per vertex.
+    const std::size_t nv = m.n_vertices();
+    std::vector<std::uint32_t> start(nv + 1, 0);
     for (std::size_t f = 0; f < m.n_faces(); ++f)
         for (std::uint32_t k = 0; k < 3; ++k) {
             const std::int32_t v0 = m.faces[f][k], v1 = m.faces[f][(k + 1) % 3];
-            if (v0 != v1) e.push_back({std::min(v0, v1), std::max(v0, v1), std::uint32_t(f), k});
+            if (v0 != v1) ++start[std::size_t(std::min(v0, v1)) + 1];
         }
-    std::sort(e.begin(), e.end(), [](const HalfEdge& x, const HalfEdge& y) {
-        return std::tie(x.lo, x.hi, x.face, x.k) < std::tie(y.lo, y.hi, y.face, y.k);
-    });
+    for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+    std::vector<HalfEdge> e(start[nv]);
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t f = 0; f < m.n_faces(); ++f)
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            const std::int32_t v0 = m.faces[f][k], v1 = m.faces[f][(k + 1) % 3];
+            if (v0 != v1)
+                e[fill[std::size_t(std::min(v0, v1))]++] = {std::min(v0, v1), std::max(v0, v1), std::uint32_t(f), k};
+        }
+    for (std::size_t v = 0; v < nv; ++v)
+        std::sort(e.begin() + start[v], e.begin() + start[v + 1], [](const HalfEdge& x, const HalfEdge& y) {
+            return std::tie(x.hi, x.face, x.k) < std::tie(y.hi, y.face, y.k);
+        });
     std::vector<std::array<std::uint32_t, 3>> nbr(m.n_faces(), {kNone, kNone, kNone});
     for (std::size_t i = 0; i < e.size();) {
         std::size_t j = i + 1;

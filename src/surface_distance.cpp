@@ -11,9 +11,11 @@
 #include "detail/surface_distance.h"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <string_view>
 #include <utility>
@@ -621,10 +623,14 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
     auto direction = [&](const Mesh& from, const Mesh& to, const char* to_name, DistanceStats& stats,
                          std::vector<double>& within, SampledDirection* keep, std::vector<double>* vertex_distance,
                          std::vector<double>* vertex_signed, std::optional<CertifiedHausdorff>& certified) {
-        const ClosestPointIndex index(to);
-        // The sign (signed_distance.h): from the closest faces of the same queries.
+        // The sign (signed_distance.h): from the closest faces of the same
+        // queries. The pseudo-normals (serial) are made on another thread
+        // while the index is built.
         std::string unavailable;
-        std::optional<PseudoNormals> normals = pseudo_normals(to, to_name, &unavailable);
+        auto made_normals = std::async(omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred,
+                                       [&] { return pseudo_normals(to, to_name, &unavailable); });
+        const ClosestPointIndex index(to);
+        std::optional<PseudoNormals> normals = made_normals.get();
         const Target target{to, index, normals ? &*normals : nullptr};
         std::vector<ClosestPoint> vq;  // from's vertices: samples and certification
         if (certify) vq = index.closest_points(from.points);

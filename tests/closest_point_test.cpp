@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -255,4 +256,56 @@ TEST(ClosestPoint, VectorAndScalarKernelsGiveTheSameAnswersBitForBit)
             ASSERT_EQ(std::memcmp(scalar[i].point.data(), vector[i].point.data(), 3 * sizeof(double)), 0) << i;
         }
     }
+}
+
+namespace {
+std::uint64_t fnv1a(std::uint64_t h, const void* data, std::size_t n)
+{
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 0x100000001B3ULL;
+    return h;
+}
+
+// Answers that depend on the tree's layout, not only on the triangles: a
+// hull bound with a target returns the first triangle found below it, in the
+// traversal's order. Hashed over many corner triples of \p m.
+std::uint64_t hash_of_first_bounds(const Mesh& m, const ClosestPointIndex& index)
+{
+    std::uint64_t h = 0xCBF29CE484222325ULL;
+    const double scale = bounding_box(m).diagonal();
+    for (std::size_t f = 0; f < m.n_faces(); f += 3) {
+        const Face& t = m.faces[f];
+        const std::array<Vec3, 3> c{m.points[std::size_t(t[0])] + Vec3(0.01 * scale, 0, 0), m.points[std::size_t(t[1])],
+                                    m.points[std::size_t(t[2])]};
+        std::uint32_t face = 0;
+        const double v = index.hull_distance_bound(c, 0.05 * scale, &face);
+        h = fnv1a(h, &v, sizeof v);
+        h = fnv1a(h, &face, sizeof face);
+    }
+    return h;
+}
+}  // namespace
+
+// The tree does not depend on the thread count (the build splits the root's
+// two subtrees between threads): the first-found hull bounds, which follow the
+// tree's order, are the same, and the same as those of the serial build the
+// hashes were recorded with (2026-12-02, before the parallel build). The
+// teapot (6,320 faces) and fandisk (12,946) are above the 4,096 faces from
+// which the build splits; bunny_res3 (3,851) is below.
+TEST(ClosestPoint, TreeIsTheSameForAnyThreadCount)
+{
+    const std::pair<const char*, std::uint64_t> cases[] = {{"/bunny_res3.ply", 0xA0D1AFA766B50E47ULL},
+                                                           {"/fandisk.ply", 0x39C6683C8EDEE934ULL},
+                                                           {"/teapot.obj", 0xDC9BF00B22058FFDULL}};
+    const int saved = omp_get_max_threads();
+    for (const auto& [name, pinned] : cases) {
+        const Mesh m = read_mesh(kData + name).mesh;
+        omp_set_num_threads(1);
+        const std::uint64_t one = hash_of_first_bounds(m, ClosestPointIndex(m));
+        omp_set_num_threads(2);
+        const std::uint64_t two = hash_of_first_bounds(m, ClosestPointIndex(m));
+        EXPECT_EQ(one, two) << name;
+        EXPECT_EQ(one, pinned) << name << std::hex << " 0x" << one;
+    }
+    omp_set_num_threads(saved);
 }
