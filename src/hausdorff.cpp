@@ -67,6 +67,7 @@ using Triangles = std::vector<Triangle>;
 Triangles triangles_of(const Mesh& m)
 {
     Triangles t(m.n_faces());
+#pragma omp parallel for schedule(static)
     for (std::size_t f = 0; f < m.n_faces(); ++f) {
         const Face& v = m.faces[f];
         t[f] = {m.points[std::size_t(v[0])], m.points[std::size_t(v[1])], m.points[std::size_t(v[2])], false};
@@ -424,6 +425,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
 
     stage.check();  // the serial set-up is checked between its steps
     std::vector<Cell> cells(a.n_faces());
+#pragma omp parallel for schedule(static)
     for (std::size_t f = 0; f < a.n_faces(); ++f) {
         Cell& c = cells[f];
         for (std::size_t k = 0; k < 3; ++k) {
@@ -442,6 +444,7 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
     // without searching.
     stage.check();
     std::vector<double> diameter_b(b.n_faces(), 0.0);  // longest edge per face of B
+#pragma omp parallel for schedule(static)
     for (std::size_t f = 0; f < b.n_faces(); ++f)
         for (std::size_t k = 0; k < 3; ++k)
             diameter_b[f] = std::max(
