@@ -270,6 +270,20 @@ TEST(Hausdorff, DegenerateAndNonManifoldMeshes)
     }
 }
 
+namespace {
+// The same interval, location and work, to the bit.
+void expect_same_result(const CertifiedHausdorff& x, const CertifiedHausdorff& y)
+{
+    EXPECT_TRUE(same_bits(x.lower, y.lower));
+    EXPECT_TRUE(same_bits(x.upper, y.upper));
+    EXPECT_EQ(x.location.point, y.location.point);
+    EXPECT_EQ(x.location.face, y.location.face);
+    EXPECT_EQ(x.location.closest_face, y.location.closest_face);
+    EXPECT_EQ(x.bound_evaluations, y.bound_evaluations);
+    EXPECT_EQ(x.rounds, y.rounds);
+}
+}  // namespace
+
 TEST(Hausdorff, SameIntervalAndLocationForAnyThreadCount)
 {
     const Mesh a = noisy_sphere(3, 0.03, 5).mesh;
@@ -282,13 +296,7 @@ TEST(Hausdorff, SameIntervalAndLocationForAnyThreadCount)
     omp_set_num_threads(std::max(2, threads));
     const CertifiedHausdorff many = certified_hausdorff(a, b, o);
     omp_set_num_threads(threads);
-    EXPECT_TRUE(same_bits(one.lower, many.lower));
-    EXPECT_TRUE(same_bits(one.upper, many.upper));
-    EXPECT_EQ(one.location.point, many.location.point);
-    EXPECT_EQ(one.location.face, many.location.face);
-    EXPECT_EQ(one.location.closest_face, many.location.closest_face);
-    EXPECT_EQ(one.bound_evaluations, many.bound_evaluations);
-    EXPECT_EQ(one.rounds, many.rounds);
+    expect_same_result(one, many);
 }
 
 // The certification's bounds with the AVX2 kernel (where the CPU has it) and
@@ -305,13 +313,7 @@ TEST(Hausdorff, VectorAndScalarKernelsGiveTheSameInterval)
         detail::allow_vector_kernels(true);
         const CertifiedHausdorff vector = certified_hausdorff(*x, *y, o);
         detail::allow_vector_kernels(before);
-        EXPECT_TRUE(same_bits(scalar.lower, vector.lower));
-        EXPECT_TRUE(same_bits(scalar.upper, vector.upper));
-        EXPECT_EQ(scalar.location.point, vector.location.point);
-        EXPECT_EQ(scalar.location.face, vector.location.face);
-        EXPECT_EQ(scalar.location.closest_face, vector.location.closest_face);
-        EXPECT_EQ(scalar.bound_evaluations, vector.bound_evaluations);
-        EXPECT_EQ(scalar.rounds, vector.rounds);
+        expect_same_result(scalar, vector);
     }
 }
 
