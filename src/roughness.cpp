@@ -52,7 +52,7 @@ LevelRoughness level_roughness(int level, const std::vector<double>& D, double o
         const double da = std::abs(D[a]), db = std::abs(D[b]);
         return da != db ? da > db : a < b;
     };
-    std::array<std::uint32_t, kWorst + 1> top{};
+    std::array<std::uint32_t, kWorst> top{};
     std::size_t m = 0;
     for (std::size_t i = 0; i < D.size(); ++i) {
         if (std::isnan(D[i])) continue;
