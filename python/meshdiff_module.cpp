@@ -12,7 +12,9 @@
 #include "meshdiff/facts.h"
 #include "meshdiff/io.h"
 #include "meshdiff/metric_levels.h"
+#include "meshdiff/options.h"
 #include "meshdiff/report/json.h"
+#include "meshdiff/report/outputs.h"
 #include "meshdiff/roughness.h"
 #include "meshdiff/surface_distance.h"
 #include "meshdiff/version.h"
@@ -23,12 +25,16 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -80,10 +86,62 @@ struct BadArgument : std::runtime_error
     using std::runtime_error::runtime_error;
 };
 
+// The keyword of an options field (meshdiff/options.h: option_fields()), e.g.
+// "profile.levels" -> "levels"; "" for a field Python does not offer. The one
+// table from field to keyword: every OptionError is worded with it.
+std::string py_spelling(const std::string& field)
+{
+    static const std::map<std::string, std::string> spelling = {
+        {"profile.levels", "levels"},
+        {"profile.radii", "radii"},
+        {"profile.global", "global_level"},
+        {"profile.curvature.method", "curvature"},
+        {"profile.curvature.weighting", "weighting"},
+        {"measure", "measure"},
+        {"corsini_unbiased", "unbiased_variance"},
+        {"k", "k"},
+        {"roughness", "roughness"},
+        {"distance", "distance"},
+        {"sampling.samples", "samples"},
+        {"sampling.density", "density"},
+        {"sampling.face_scheme", "face_sampling"},
+        {"sampling.seed", "seed"},
+        {"sampling.vertices", "vertex_samples"},
+        {"sampling.edges", "edge_samples"},
+        {"sampling.faces", "face_samples"},
+        {"hausdorff", "hausdorff"},
+        {"hausdorff.relative_tolerance", "hausdorff_tolerance"},
+        {"hausdorff.absolute_tolerance", "hausdorff_abs_tolerance"},
+        {"hausdorff.max_evaluations", "hausdorff_budget"},
+        {"summary.fscore_thresholds", "fscore"},
+        {"summary.histogram_bins", "histogram"},
+        {"threads", "threads"},
+        {"outputs.json", "json"},
+        {"outputs.distance_map", "distance_map"},
+        {"outputs.distance_map_original", "distance_map_original"},
+        {"outputs.distance_maps", "distance_maps"},
+        {"outputs.samples_out", "samples_out"},
+        {"outputs.color_range", "color_range"},
+        {"outputs.vertex_data", "vertex_data"},
+        {"outputs.exact", "exact"},
+        {"outputs.exact_property", "exact_property"},
+    };
+    const auto it = spelling.find(field);
+    return it == spelling.end() ? std::string() : it->second;
+}
+
+std::string py_spelling(const char* field)
+{
+    const std::string s = py_spelling(std::string(field));
+    return s.empty() ? std::string(field) : s;
+}
+
 void translate_exceptions(std::exception_ptr p)
 {
     try {
         if (p) std::rethrow_exception(p);
+    } catch (const OptionError& e) {
+        PyErr_SetString(PyExc_ValueError, worded(e, [](const std::string& f) { return py_spelling(f); }).c_str());
     } catch (const FileMissing& e) {
         const py::tuple args = py::make_tuple(ENOENT, e.message, e.path);
         PyErr_SetObject(PyExc_FileNotFoundError, args.ptr());
@@ -106,26 +164,6 @@ void translate_exceptions(std::exception_ptr p)
 {
     throw BadArgument(message);
 }
-
-// ---------------------------------------------------------------- threads
-
-// Sets the OpenMP thread count of the calling thread for one call (0: leave
-// the default, all cores or OMP_NUM_THREADS, as the CLI does) and restores it.
-class ThreadScope
-{
-public:
-    explicit ThreadScope(int threads) : saved_(omp_get_max_threads())
-    {
-        if (threads < 0) bad("threads: " + std::to_string(threads) + " must be >= 0 (0: all cores)");
-        if (threads > 0) omp_set_num_threads(threads);
-    }
-    ~ThreadScope() { omp_set_num_threads(saved_); }
-    ThreadScope(const ThreadScope&) = delete;
-    ThreadScope& operator=(const ThreadScope&) = delete;
-
-private:
-    int saved_;
-};
 
 // ---------------------------------------------------------------- arrays in
 
@@ -275,91 +313,213 @@ LoadedMesh read_file(const std::string& path, bool cloud = false)
 }
 
 // ---------------------------------------------------------------- options
+//
+// Every keyword is taken as a Python object and converted here: a wrong type
+// is a TypeError naming the keyword; every value, limit, default and
+// combination is then the library's (validate(), options.h), whose
+// OptionErrors translate_exceptions() words with py_spelling().
 
-// Levels from any iterable of integers (list, range, numpy array; no numpy
-// needed, so compare_files() and profile_file() work without it).
-std::vector<int> levels_from(const py::handle& obj)
+using Obj = const py::object&;
+
+std::string repr(Obj v)
 {
-    const std::string expected = "levels: expected a sequence of ints such as range(1, 21) or [1, 5, 20], got ";
-    if (py::isinstance<py::str>(obj) || py::isinstance<py::bytes>(obj) || !py::isinstance<py::iterable>(obj))
-        bad(expected + std::string(py::repr(obj)));
+    return std::string(py::repr(v));
+}
+
+[[noreturn]] void type_error(const char* field, const std::string& expected, Obj got)
+{
+    throw py::type_error(py_spelling(field) + ": expected " + expected + ", got " + repr(got));
+}
+
+bool is_text(Obj v)
+{
+    return py::isinstance<py::str>(v) || py::isinstance<py::bytes>(v);
+}
+
+// True/False (also numpy.bool_); None keeps \p default_value.
+bool flag(Obj v, const char* field, bool default_value)
+{
+    if (v.is_none()) return default_value;
+    if (py::isinstance<py::bool_>(v)) return v.cast<bool>();
+    if (py::hasattr(v, "dtype") && py::hasattr(v, "ndim") && v.attr("ndim").cast<int>() == 0 &&
+        std::string(py::str(v.attr("dtype").attr("kind"))) == "b")
+        return PyObject_IsTrue(v.ptr()) == 1;
+    type_error(field, "True or False", v);
+}
+
+// A real number (int, float, numpy scalars); None: not given. Beyond the
+// range of float it is +-inf, for the rules to refuse as a value.
+std::optional<double> number(Obj v, const char* field)
+{
+    if (v.is_none()) return std::nullopt;
+    if (py::isinstance<py::bool_>(v) || is_text(v)) type_error(field, "a number", v);
+    PyObject* f = PyNumber_Float(v.ptr());
+    if (!f) {
+        if (PyErr_ExceptionMatches(PyExc_OverflowError)) {
+            PyErr_Clear();
+            return py::int_(v) < py::int_(0) ? -HUGE_VAL : HUGE_VAL;
+        }
+        PyErr_Clear();
+        type_error(field, "a number", v);
+    }
+    const double d = PyFloat_AsDouble(f);
+    Py_DECREF(f);
+    return d;
+}
+
+// A whole number (int, numpy integers) in 0..2^64-1; None: not given.
+std::optional<std::uint64_t> whole(Obj v, const char* field)
+{
+    if (v.is_none()) return std::nullopt;
+    if (py::isinstance<py::bool_>(v)) type_error(field, "an int", v);
+    const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(v.ptr()));
+    if (!index) {
+        PyErr_Clear();
+        type_error(field, "an int", v);
+    }
+    return parse_whole_number(field, std::string(py::str(index)));
+}
+
+// A str; None: not given.
+std::optional<std::string> text(Obj v, const char* field)
+{
+    if (v.is_none()) return std::nullopt;
+    if (!py::isinstance<py::str>(v)) type_error(field, "a str", v);
+    return v.cast<std::string>();
+}
+
+// An output path (str, bytes, os.PathLike); None: no output.
+std::string output_path(Obj v, const char* field)
+{
+    if (v.is_none()) return {};
+    try {
+        return py::module_::import("os").attr("fsdecode")(v).cast<std::string>();
+    } catch (const py::error_already_set&) {
+        type_error(field, "a path (str, bytes or os.PathLike) or None", v);
+    }
+}
+
+template <class E>
+std::optional<E> choice(Obj v, const char* field)
+{
+    const auto name = text(v, field);
+    if (!name) return std::nullopt;
+    return parse_enum_option<E>(field, *name);
+}
+
+// The items of an iterable that is not text, at most \p most (the rules
+// refuse a list longer than \p most - 1 without needing the rest).
+std::vector<py::object> items_of(Obj v, const char* field, const std::string& expected, std::size_t most)
+{
+    if (is_text(v) || !py::isinstance<py::iterable>(v)) type_error(field, expected, v);
+    std::vector<py::object> out;
+    for (const py::handle item : py::reinterpret_borrow<py::iterable>(v)) {
+        out.push_back(py::reinterpret_borrow<py::object>(item));
+        if (out.size() >= most) break;
+    }
+    return out;
+}
+
+// Levels: an iterable of ints (list, range, numpy array), or the CLI's text ("1-20").
+std::optional<std::vector<int>> levels_arg(Obj v)
+{
+    const char* field = "profile.levels";
+    if (v.is_none()) return std::nullopt;
+    if (py::isinstance<py::str>(v)) return parse_levels(v.cast<std::string>());
+    const std::string expected = "a sequence of ints such as range(1, 21) or [1, 5, 20]";
     std::vector<int> levels;
-    for (const py::handle item : py::reinterpret_borrow<py::iterable>(obj)) {
+    for (const py::object& item : items_of(v, field, expected, kMaxLevels + 1)) {
+        if (py::isinstance<py::bool_>(item)) type_error(field, expected, item);
         const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(item.ptr()));
         if (!index) {
             PyErr_Clear();
-            bad(expected + "the item " + std::string(py::repr(item)));
+            type_error(field, expected + " (the item " + repr(item) + " is not an int)", v);
         }
-        int overflow = 0;
-        const long long l = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
-        if (overflow != 0 || l < 1 || l > 100000)
-            bad("levels: level " + std::string(py::str(index)) + " is out of 1..100000");
-        levels.push_back(int(l));
+        levels.push_back(parse_level(std::string(py::str(index))));
     }
     return levels;
 }
 
-// None, "default" (default_radii()) or a sequence of numbers > 0.
-std::vector<double> radii_from(const py::handle& obj)
+// Numbers: an iterable of numbers (list, numpy array of any float dtype).
+std::vector<double> numbers_arg(Obj v, const char* field, const std::string& expected, std::size_t most)
 {
-    if (obj.is_none()) return {};
-    if (py::isinstance<py::str>(obj)) {
-        if (obj.cast<std::string>() == "default") return default_radii();
-        bad("radii: expected None, \"default\" or a sequence of numbers > 0, got " + std::string(py::str(obj)));
+    std::vector<double> out;
+    for (const py::object& item : items_of(v, field, expected, most)) {
+        if (py::isinstance<py::bool_>(item) || is_text(item)) type_error(field, expected, item);
+        PyObject* f = PyNumber_Float(item.ptr());
+        if (!f) {
+            PyErr_Clear();
+            type_error(field, expected + " (the item " + repr(item) + " is not a number)", v);
+        }
+        out.push_back(PyFloat_AsDouble(f));
+        Py_DECREF(f);
     }
-    if (!py::isinstance<py::sequence>(obj))
-        bad("radii: expected None, \"default\" or a sequence of numbers > 0, got " + std::string(py::str(obj)));
-    std::vector<double> radii;
-    for (const auto& item : obj.cast<py::sequence>()) {
-        if (!py::isinstance<py::float_>(item) && !py::isinstance<py::int_>(item))
-            bad("radii: " + std::string(py::str(item)) + " is not a number");
-        const double r = item.cast<double>();
-        if (!(r > 0.0) || !std::isfinite(r))
-            bad("radii: radius " + std::string(py::str(item)) + " is not finite and > 0");
-        radii.push_back(r);
-    }
-    return radii;
+    return out;
 }
 
-ProfileOptions profile_options(const py::handle& levels, bool global_level, const std::string& curvature,
-                               const std::string& weighting, bool keep_vertex_data, std::vector<double> radii = {})
+// Radii: None, "default" (or the CLI's text), or an iterable of numbers.
+std::optional<std::vector<double>> radii_arg(Obj v)
 {
-    ProfileOptions p;
-    p.levels = levels_from(levels);
-    p.radii = std::move(radii);
-    p.global = global_level;
-    p.curvature.method = parse_enum<CurvatureMethod>(curvature);
-    p.curvature.weighting = parse_enum<RowWeighting>(weighting);
-    p.keep_vertex_data = keep_vertex_data;
-    if (p.levels.empty() && p.radii.empty() && !p.global)
-        bad("levels: empty and global_level=False: nothing to compute");
+    if (v.is_none()) return std::nullopt;
+    if (py::isinstance<py::str>(v)) return parse_radii(v.cast<std::string>());
+    return numbers_arg(v, "profile.radii", "None, \"default\" or a sequence of numbers", kMaxRadii + 1);
+}
+
+// F-score thresholds: None, the CLI's text, or an iterable of numbers.
+std::optional<std::vector<double>> fscore_arg(Obj v)
+{
+    if (v.is_none()) return std::nullopt;
+    if (py::isinstance<py::str>(v)) return parse_fscore(v.cast<std::string>());
+    return numbers_arg(v, "summary.fscore_thresholds", "None or a sequence of numbers", kMaxFscoreThresholds + 1);
+}
+
+// The ring-level options of a profile, over \p defaults.
+ProfileOptions profile_options(Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting,
+                               ProfileOptions p = {})
+{
+    if (auto l = levels_arg(levels)) p.levels = std::move(*l);
+    if (auto r = radii_arg(radii)) p.radii = std::move(*r);
+    p.global = flag(global_level, "profile.global", p.global);
+    if (auto c = choice<CurvatureMethod>(curvature, "profile.curvature.method")) p.curvature.method = *c;
+    if (auto w = choice<RowWeighting>(weighting, "profile.curvature.weighting")) p.curvature.weighting = *w;
     return p;
 }
 
-// The sampling options as the CLI's to_compare_options() sets them.
-SamplingOptions sampling_options(const std::optional<long long>& samples, const std::optional<double>& density,
-                                 const std::string& face_sampling, std::uint64_t seed, bool vertex_samples,
-                                 bool edge_samples, bool face_samples)
+// The sampling options, over the library's defaults.
+SamplingOptions sampling_options(Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples,
+                                 Obj edge_samples, Obj face_samples)
 {
     SamplingOptions s;
-    if (samples) {
-        if (*samples <= 0)
-            bad("samples: " + std::to_string(*samples) + " must be > 0 (None: 10 x the larger face count)");
-        s.samples = std::size_t(*samples);
-    }
-    if (density) {
-        if (!(*density > 0.0) || !std::isfinite(*density)) bad("density: must be finite and > 0");
-        s.density = *density;
-    }
-    if (s.samples && s.density) bad("samples and density exclude each other");
-    s.face_scheme = parse_enum<FaceSampling>(face_sampling);
-    s.seed = seed;
-    s.vertices = vertex_samples;
-    s.edges = edge_samples;
-    s.faces = face_samples;
+    if (auto n = whole(samples, "sampling.samples")) s.samples = std::size_t(*n);
+    if (auto d = number(density, "sampling.density")) s.density = *d;
+    if (auto f = choice<FaceSampling>(face_sampling, "sampling.face_scheme")) s.face_scheme = *f;
+    if (auto v = whole(seed, "sampling.seed")) s.seed = *v;
+    s.vertices = flag(vertex_samples, "sampling.vertices", s.vertices);
+    s.edges = flag(edge_samples, "sampling.edges", s.edges);
+    s.faces = flag(face_samples, "sampling.faces", s.faces);
     validate(s);
     return s;
 }
+
+// Sets the OpenMP thread count of the calling thread for one call (None or
+// 0: leave the default, all cores or OMP_NUM_THREADS, as the CLI does) and
+// restores it.
+class ThreadScope
+{
+public:
+    explicit ThreadScope(Obj threads) : saved_(omp_get_max_threads())
+    {
+        const std::uint64_t n = whole(threads, "threads").value_or(0);
+        validate_threads((long long)std::min<std::uint64_t>(n, std::uint64_t(LLONG_MAX)));
+        if (n > 0) omp_set_num_threads(int(n));
+    }
+    ~ThreadScope() { omp_set_num_threads(saved_); }
+    ThreadScope(const ThreadScope&) = delete;
+    ThreadScope& operator=(const ThreadScope&) = delete;
+
+private:
+    int saved_;
+};
 
 // ---------------------------------------------------------------- results out
 
@@ -470,140 +630,150 @@ py::object py_read_mesh(const py::object& path_obj, bool report)
     return py::make_tuple(vf[0], vf[1], input_report_dict(m));
 }
 
-CompareOptions compare_options(const py::object& levels, const py::object& radii, bool global_level,
-                               const std::string& curvature, const std::string& weighting, double k, bool roughness,
-                               bool distance, const std::optional<long long>& samples,
-                               const std::optional<double>& density, const std::string& face_sampling,
-                               std::uint64_t seed, bool vertex_samples, bool edge_samples, bool face_samples,
-                               const std::string& hausdorff, double hausdorff_tolerance,
-                               const std::optional<double>& hausdorff_abs_tolerance,
-                               const std::optional<std::vector<double>>& fscore, long long histogram)
+// The comparison options (compare(), compare_files()).
+struct CompareKeywords
+{
+    py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance, k, roughness, distance,
+        samples, density, face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff,
+        hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore, histogram;
+    py::object json, distance_map, distance_map_original, distance_maps, samples_out, color_range;
+    py::object threads;
+};
+
+CompareOptions compare_options(const CompareKeywords& a)
 {
     CompareOptions c;
-    if (fscore) c.summary.fscore_thresholds = *fscore;
-    if (histogram < 0 || histogram > (long long)kMaxHistogramBins)
-        bad(fmt::format("histogram: {} is outside [0, {}]", histogram, kMaxHistogramBins));
-    c.summary.histogram_bins = std::size_t(histogram);
-    try {
-        validate(c.summary);
-    } catch (const InvalidArgumentError& e) {
-        bad(fmt::format("fscore: {}", e.what()));
-    }
-    c.profile = profile_options(levels, global_level, curvature, weighting, false, radii_from(radii));
-    if (!(k > 0.0) || !std::isfinite(k)) bad(fmt::format("k: {} must be finite and > 0", k));
-    c.k = k;
-    c.roughness = roughness;
-    c.distance = distance;
-    if (!roughness && !distance) bad("roughness=False and distance=False: nothing to compare");
-    c.sampling = sampling_options(samples, density, face_sampling, seed, vertex_samples, edge_samples, face_samples);
-    if (hausdorff == "sampled") {
-        c.hausdorff.reset();
-    } else if (hausdorff == "certified") {
-        c.hausdorff->relative_tolerance = hausdorff_abs_tolerance ? 0.0 : hausdorff_tolerance;
-        c.hausdorff->absolute_tolerance = hausdorff_abs_tolerance.value_or(0.0);
-        if (!(hausdorff_tolerance >= 1e-12 && hausdorff_tolerance <= 0.5))
-            bad(fmt::format("hausdorff_tolerance: {} is outside [1e-12, 0.5]", hausdorff_tolerance));
-        if (hausdorff_abs_tolerance && !(*hausdorff_abs_tolerance > 0.0 && std::isfinite(*hausdorff_abs_tolerance)))
-            bad(fmt::format("hausdorff_abs_tolerance: {} must be finite and > 0", *hausdorff_abs_tolerance));
-    } else {
-        bad(fmt::format("hausdorff: '{}' is not certified or sampled", hausdorff));
-    }
+    c.profile = profile_options(a.levels, a.radii, a.global_level, a.curvature, a.weighting);
+    if (auto m = choice<RoughnessMeasure>(a.measure, "measure")) c.measure = *m;
+    c.corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", c.corsini_unbiased);
+    if (auto k = number(a.k, "k")) c.k = *k;
+    c.roughness = flag(a.roughness, "roughness", c.roughness);
+    c.distance = flag(a.distance, "distance", c.distance);
+    c.sampling = sampling_options(a.samples, a.density, a.face_sampling, a.seed, a.vertex_samples, a.edge_samples,
+                                  a.face_samples);
+    if (auto f = fscore_arg(a.fscore)) c.summary.fscore_thresholds = std::move(*f);
+    if (auto h = whole(a.histogram, "summary.histogram_bins")) c.summary.histogram_bins = std::size_t(*h);
+    HausdorffRequest h;
+    if (auto m = choice<HausdorffMethod>(a.hausdorff, "hausdorff")) h.method = *m;
+    h.relative_tolerance = number(a.hausdorff_tolerance, "hausdorff.relative_tolerance");
+    h.absolute_tolerance = number(a.hausdorff_abs_tolerance, "hausdorff.absolute_tolerance");
+    if (auto b = whole(a.hausdorff_budget, "hausdorff.max_evaluations")) h.budget = std::size_t(*b);
+    c.hausdorff = hausdorff_options(h);
+    validate(c);
     return c;
 }
 
-py::dict run_compare(const LoadedMesh& a, const LoadedMesh& b, const CompareOptions& options, int threads)
+CompareOutputs compare_outputs(const CompareKeywords& a)
 {
+    CompareOutputs o;
+    o.json = output_path(a.json, "outputs.json");
+    o.distance_map = output_path(a.distance_map, "outputs.distance_map");
+    o.distance_map_original = output_path(a.distance_map_original, "outputs.distance_map_original");
+    o.distance_maps = output_path(a.distance_maps, "outputs.distance_maps");
+    o.samples_out = output_path(a.samples_out, "outputs.samples_out");
+    if (!a.color_range.is_none()) {
+        const std::string expected = "a pair of numbers (MIN, MAX)";
+        const std::vector<double> r = numbers_arg(a.color_range, "outputs.color_range", expected, 3);
+        if (r.size() != 2) type_error("outputs.color_range", expected, a.color_range);
+        o.color_range = std::pair{r[0], r[1]};
+    }
+    return o;
+}
+
+// compare_meshes() with the outputs \p a asks for, as `meshdiff compare` runs it.
+py::dict run_compare(const CompareKeywords& a, const std::function<std::pair<LoadedMesh, LoadedMesh>()>& load,
+                     const std::string& original_name, const std::string& processed_name,
+                     const std::vector<std::string>& inputs)
+{
+    const CompareOutputs outputs = compare_outputs(a);
+    const CompareOptions checked = compare_options(a);
+    validate(outputs, checked, inputs);
+    const CompareOptions options = with_outputs(checked, outputs);
     nlohmann::json j;
     {
-        ThreadScope scope(threads);
+        ThreadScope scope(a.threads);
         py::gil_scoped_release release;
-        j = comparison_json(compare_meshes(a, b, options));
+        const auto [original, processed] = load();
+        const Comparison c = compare_meshes(original, processed, options);
+        write_outputs(c, original, processed, outputs, original_name, processed_name);
+        j = comparison_json(c);
+        if (!outputs.json.empty()) write_json_file(outputs.json, j);
     }
     return to_python(j);
 }
 
 py::dict py_compare(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V2, const ArrayLike& F2,
-                    const py::object& levels, const py::object& radii, bool global_level, const std::string& curvature,
-                    const std::string& weighting, double k, bool roughness, bool distance,
-                    const std::optional<long long>& samples, const std::optional<double>& density,
-                    const std::string& face_sampling, std::uint64_t seed, bool vertex_samples, bool edge_samples,
-                    bool face_samples, const std::string& hausdorff, double hausdorff_tolerance,
-                    const std::optional<double>& hausdorff_abs_tolerance,
-                    const std::optional<std::vector<double>>& fscore, long long histogram, int threads)
+                    const CompareKeywords& a)
 {
-    const CompareOptions options =
-        compare_options(levels, radii, global_level, curvature, weighting, k, roughness, distance, samples, density,
-                        face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance,
-                        hausdorff_abs_tolerance, fscore, histogram);
-    const LoadedMesh a = mesh_or_cloud_from(V1, F1, "V1", "F1");
-    const LoadedMesh b = mesh_or_cloud_from(V2, F2, "V2", "F2");
-    return run_compare(a, b, options, threads);
+    auto meshes = std::make_shared<std::pair<LoadedMesh, LoadedMesh>>(mesh_or_cloud_from(V1, F1, "V1", "F1"),
+                                                                      mesh_or_cloud_from(V2, F2, "V2", "F2"));
+    return run_compare(a, [meshes] { return std::move(*meshes); }, "<array V1>", "<array V2>", {});
 }
 
-py::dict py_compare_files(const py::object& original, const py::object& processed, const py::object& levels,
-                          const py::object& radii, bool global_level, const std::string& curvature,
-                          const std::string& weighting, double k, bool roughness, bool distance,
-                          const std::optional<long long>& samples, const std::optional<double>& density,
-                          const std::string& face_sampling, std::uint64_t seed, bool vertex_samples, bool edge_samples,
-                          bool face_samples, const std::string& hausdorff, double hausdorff_tolerance,
-                          const std::optional<double>& hausdorff_abs_tolerance,
-                          const std::optional<std::vector<double>>& fscore, long long histogram, int threads)
+py::dict py_compare_files(Obj original, Obj processed, const CompareKeywords& a)
 {
-    const CompareOptions options =
-        compare_options(levels, radii, global_level, curvature, weighting, k, roughness, distance, samples, density,
-                        face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance,
-                        hausdorff_abs_tolerance, fscore, histogram);
     const std::string pa = path_from(original, "original"), pb = path_from(processed, "processed");
-    LoadedMesh a, b;
-    {
-        py::gil_scoped_release release;
-        a = read_file(pa, true);
-        b = read_file(pb, true);
-    }
-    return run_compare(a, b, options, threads);
+    return run_compare(a, [&] { return std::pair{read_file(pa, true), read_file(pb, true)}; }, pa, pb, {pa, pb});
 }
 
-py::dict run_profile(const LoadedMesh& m, const ProfileOptions& options, int threads)
+// The profile options (profile(), profile_file()).
+struct ProfileKeywords
 {
+    py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance;
+    py::object json, vertex_data, color_range, exact, exact_property;
+    py::object threads;
+};
+
+ProfileRequest profile_request(const ProfileKeywords& a)
+{
+    ProfileRequest r;
+    r.profile = profile_options(a.levels, a.radii, a.global_level, a.curvature, a.weighting);
+    if (auto m = choice<RoughnessMeasure>(a.measure, "measure")) r.measure = *m;
+    r.corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", r.corsini_unbiased);
+    r.json = output_path(a.json, "outputs.json");
+    r.vertex_data = output_path(a.vertex_data, "outputs.vertex_data");
+    if (auto c = number(a.color_range, "outputs.color_range")) r.color_range = *c;
+    r.exact = flag(a.exact, "outputs.exact", r.exact);
+    if (auto p = text(a.exact_property, "outputs.exact_property")) r.exact_property = *p;
+    return r;
+}
+
+py::dict run_profile(const ProfileKeywords& a, const std::function<LoadedMesh()>& load,
+                     const std::vector<std::string>& inputs)
+{
+    const ProfileRequest r = profile_request(a);
+    validate(r, inputs);
     nlohmann::json j;
     {
-        ThreadScope scope(threads);
+        ThreadScope scope(a.threads);
         py::gil_scoped_release release;
-        const RoughnessProfile p = roughness_profile(m.mesh, options);
-        j = profile_json(mesh_facts(m), p);
+        const ProfileReport report = profile_report(load(), r);
+        if (!r.json.empty()) write_json_file(r.json, report.json);
+        j = report.json;
     }
     return to_python(j);
 }
 
-py::dict py_profile(const ArrayLike& V, const ArrayLike& F, const py::object& levels, const py::object& radii,
-                    bool global_level, const std::string& curvature, const std::string& weighting, int threads)
+py::dict py_profile(const ArrayLike& V, const ArrayLike& F, const ProfileKeywords& a)
 {
-    const ProfileOptions options =
-        profile_options(levels, global_level, curvature, weighting, false, radii_from(radii));
-    return run_profile(mesh_from(V, F, "V", "F"), options, threads);
+    auto mesh = std::make_shared<LoadedMesh>(mesh_from(V, F, "V", "F"));
+    return run_profile(a, [mesh] { return std::move(*mesh); }, {});
 }
 
-py::dict py_profile_file(const py::object& path_obj, const py::object& levels, const py::object& radii,
-                         bool global_level, const std::string& curvature, const std::string& weighting, int threads)
+py::dict py_profile_file(Obj path_obj, const ProfileKeywords& a)
 {
-    const ProfileOptions options =
-        profile_options(levels, global_level, curvature, weighting, false, radii_from(radii));
     const std::string path = path_from(path_obj, "path");
-    LoadedMesh m;
-    {
-        py::gil_scoped_release release;
-        m = read_file(path);
-    }
-    return run_profile(m, options, threads);
+    return run_profile(a, [&] { return read_file(path); }, {path});
 }
 
-py::dict py_corsini_profile(const ArrayLike& V, const ArrayLike& F, const py::object& levels, bool global_level,
-                            bool unbiased, int threads)
+py::dict py_corsini_profile(const ArrayLike& V, const ArrayLike& F, Obj levels, Obj global_level, Obj unbiased,
+                            Obj threads)
 {
     CorsiniOptions options;
-    options.levels = levels_from(levels);
-    options.global = global_level;
-    options.unbiased = unbiased;
+    if (auto l = levels_arg(levels)) options.levels = std::move(*l);
+    options.global = flag(global_level, "profile.global", options.global);
+    options.unbiased = flag(unbiased, "corsini_unbiased", options.unbiased);
+    validate(options);
     const LoadedMesh m = mesh_from(V, F, "V", "F");
     nlohmann::json j;
     {
@@ -614,15 +784,15 @@ py::dict py_corsini_profile(const ArrayLike& V, const ArrayLike& F, const py::ob
     return to_python(j);
 }
 
-py::array_t<double> py_mean_curvature(const ArrayLike& V, const ArrayLike& F, const std::string& method,
-                                      const std::string& weighting, int min_neighbors, double max_normal_angle_deg,
-                                      int threads)
+py::array_t<double> py_mean_curvature(const ArrayLike& V, const ArrayLike& F, Obj method, Obj weighting,
+                                      Obj min_neighbors, Obj max_normal_angle_deg, Obj threads)
 {
     CurvatureOptions o;
-    o.method = parse_enum<CurvatureMethod>(method);
-    o.weighting = parse_enum<RowWeighting>(weighting);
-    o.min_neighbors = min_neighbors;
-    o.max_normal_angle_deg = max_normal_angle_deg;
+    if (auto c = choice<CurvatureMethod>(method, "profile.curvature.method")) o.method = *c;
+    if (auto w = choice<RowWeighting>(weighting, "profile.curvature.weighting")) o.weighting = *w;
+    if (auto n = whole(min_neighbors, "min_neighbors"))
+        o.min_neighbors = int(std::min<std::uint64_t>(*n, std::uint64_t(INT_MAX)));
+    if (auto a = number(max_normal_angle_deg, "max_normal_angle_deg")) o.max_normal_angle_deg = *a;
     const LoadedMesh m = mesh_from(V, F, "V", "F");
     CurvatureField field;
     {
@@ -633,10 +803,14 @@ py::array_t<double> py_mean_curvature(const ArrayLike& V, const ArrayLike& F, co
     return vector_array(field.H);
 }
 
-py::tuple py_roughness(const ArrayLike& V, const ArrayLike& F, const py::object& levels, bool global_level,
-                       const std::string& curvature, const std::string& weighting, int threads)
+py::tuple py_roughness(const ArrayLike& V, const ArrayLike& F, Obj levels, Obj global_level, Obj curvature,
+                       Obj weighting, Obj threads)
 {
-    const ProfileOptions options = profile_options(levels, global_level, curvature, weighting, true);
+    ProfileOptions defaults;
+    defaults.global = false;  // roughness(): the global column only when asked for
+    ProfileOptions options = profile_options(levels, py::none(), global_level, curvature, weighting, defaults);
+    options.keep_vertex_data = true;
+    validate(options);
     const LoadedMesh m = mesh_from(V, F, "V", "F");
     RoughnessProfile p;
     {
@@ -658,12 +832,12 @@ py::tuple py_roughness(const ArrayLike& V, const ArrayLike& F, const py::object&
 }
 
 py::dict py_surface_distance(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V2, const ArrayLike& F2,
-                             const std::optional<long long>& samples, const std::optional<double>& density,
-                             const std::string& face_sampling, std::uint64_t seed, bool vertex_samples,
-                             bool edge_samples, bool face_samples, bool return_samples, int threads)
+                             Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples,
+                             Obj edge_samples, Obj face_samples, Obj return_samples, Obj threads)
 {
     const SamplingOptions o =
         sampling_options(samples, density, face_sampling, seed, vertex_samples, edge_samples, face_samples);
+    const bool with_samples = flag(return_samples, "return_samples", false);
     const LoadedMesh a = mesh_from(V1, F1, "V1", "F1");
     const LoadedMesh b = mesh_from(V2, F2, "V2", "F2");
     SampledSurfaceDistance r;
@@ -671,13 +845,13 @@ py::dict py_surface_distance(const ArrayLike& V1, const ArrayLike& F1, const Arr
     {
         ThreadScope scope(threads);
         py::gil_scoped_release release;
-        if (return_samples)
+        if (with_samples)
             r = surface_distance_samples(a.mesh, b.mesh, o);
         else
             r.distance = surface_distance(a.mesh, b.mesh, o);
         j = surface_distance_json(r.distance, o);
     }
-    if (!return_samples) return to_python(j);
+    if (!with_samples) return to_python(j);
     py::dict out = to_python(j);
     out["forward"] = direction_dict(j["forward"], r.forward);
     out["backward"] = direction_dict(j["backward"], r.backward);
@@ -685,7 +859,7 @@ py::dict py_surface_distance(const ArrayLike& V1, const ArrayLike& F1, const Arr
 }
 
 py::array_t<double> py_vertex_distances(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V2,
-                                        const ArrayLike& F2, int threads)
+                                        const ArrayLike& F2, Obj threads)
 {
     const LoadedMesh a = mesh_from(V1, F1, "V1", "F1");
     const LoadedMesh b = mesh_from(V2, F2, "V2", "F2");
@@ -710,7 +884,7 @@ public:
         index_ = std::make_unique<ClosestPointIndex>(m.mesh);
     }
 
-    py::tuple query(const ArrayLike& P, int threads) const
+    py::tuple query(const ArrayLike& P, const py::object& threads) const
     {
         const std::vector<Vec3> points = points_from(P.object, "P", true);
         std::vector<ClosestPoint> c;
@@ -936,62 +1110,207 @@ PYBIND11_MODULE(meshdiff, m)
     m.attr("__version__") = MESHDIFF_VERSION;
     m.attr("SAMPLE_KINDS") = py::make_tuple("vertex", "edge", "face", "point");
     py::register_exception_translator(translate_exceptions);
-
-    const py::object default_levels = py::module_::import("builtins").attr("range")(1, 21);
+    // The library's limits of the options (docs/python.md states them; a test checks them against these).
+    py::dict limits;
+    limits["levels"] = kMaxLevels;
+    limits["level"] = kMaxLevel;
+    limits["radii"] = kMaxRadii;
+    limits["radius"] = kMaxRadius;
+    limits["threads"] = kMaxThreads;
+    limits["samples"] = kMaxSamples;
+    limits["hausdorff_budget"] = kMaxHausdorffBudget;
+    limits["hausdorff_tolerance"] = py::make_tuple(kMinHausdorffTolerance, kMaxHausdorffTolerance);
+    limits["fscore"] = kMaxFscoreThresholds;
+    limits["fscore_threshold"] = kMaxFscoreThreshold;
+    limits["histogram"] = kMaxHistogramBins;
+    m.attr("LIMITS") = limits;
 
     m.def("read_mesh", &py_read_mesh, kReadMeshDoc, py::arg("path"), py::kw_only(), py::arg("report") = false);
 
     const std::string compare_doc = std::string(kCompareDoc) + kCompareOptionsDoc;
     const std::string compare_files_doc = std::string(kCompareFilesDoc) + kCompareOptionsDoc;
-    auto compare_options_args = [&](auto&& def) {
-        def(py::arg("levels") = default_levels, py::arg("radii") = py::none(), py::arg("global_level") = true,
-            py::arg("curvature") = "goldfeather", py::arg("weighting") = "none", py::arg("k") = 1e-4,
-            py::arg("roughness") = true, py::arg("distance") = true, py::arg("samples") = py::none(),
-            py::arg("density") = py::none(), py::arg("face_sampling") = "similar", py::arg("seed") = 1,
-            py::arg("vertex_samples") = true, py::arg("edge_samples") = true, py::arg("face_samples") = true,
-            py::arg("hausdorff") = "certified", py::arg("hausdorff_tolerance") = 1e-4,
-            py::arg("hausdorff_abs_tolerance") = py::none(), py::arg("fscore") = py::none(), py::arg("histogram") = 0,
-            py::arg("threads") = 0);
-    };
-    compare_options_args([&](auto... options) {
-        m.def("compare", &py_compare, compare_doc.c_str(), py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"),
-              py::kw_only(), options...);
-    });
-    compare_options_args([&](auto... options) {
-        m.def("compare_files", &py_compare_files, compare_files_doc.c_str(), py::arg("original"), py::arg("processed"),
-              py::kw_only(), options...);
-    });
-
     const std::string profile_doc = std::string(kProfileDoc) + kProfileOptionsDoc;
     const std::string profile_file_doc = std::string(kProfileFileDoc) + kProfileOptionsDoc;
-    m.def("profile", &py_profile, profile_doc.c_str(), py::arg("V"), py::arg("F"), py::kw_only(),
-          py::arg("levels") = default_levels, py::arg("radii") = py::none(), py::arg("global_level") = true,
-          py::arg("curvature") = "goldfeather", py::arg("weighting") = "none", py::arg("threads") = 0);
-    m.def("profile_file", &py_profile_file, profile_file_doc.c_str(), py::arg("path"), py::kw_only(),
-          py::arg("levels") = default_levels, py::arg("radii") = py::none(), py::arg("global_level") = true,
-          py::arg("curvature") = "goldfeather", py::arg("weighting") = "none", py::arg("threads") = 0);
+    const CompareOptions defaults;
+    const ProfileRequest pdefaults;
+    auto compare_keywords =
+        [](Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure, Obj unbiased_variance,
+           Obj k, Obj roughness, Obj distance, Obj samples, Obj density, Obj face_sampling, Obj seed,
+           Obj vertex_samples, Obj edge_samples, Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance,
+           Obj hausdorff_abs_tolerance, Obj hausdorff_budget, Obj fscore, Obj histogram, Obj json, Obj distance_map,
+           Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj color_range, Obj threads) {
+            CompareKeywords kw;
+            kw.levels = levels;
+            kw.radii = radii;
+            kw.global_level = global_level;
+            kw.curvature = curvature;
+            kw.weighting = weighting;
+            kw.measure = measure;
+            kw.unbiased_variance = unbiased_variance;
+            kw.k = k;
+            kw.roughness = roughness;
+            kw.distance = distance;
+            kw.samples = samples;
+            kw.density = density;
+            kw.face_sampling = face_sampling;
+            kw.seed = seed;
+            kw.vertex_samples = vertex_samples;
+            kw.edge_samples = edge_samples;
+            kw.face_samples = face_samples;
+            kw.hausdorff = hausdorff;
+            kw.hausdorff_tolerance = hausdorff_tolerance;
+            kw.hausdorff_abs_tolerance = hausdorff_abs_tolerance;
+            kw.hausdorff_budget = hausdorff_budget;
+            kw.fscore = fscore;
+            kw.histogram = histogram;
+            kw.json = json;
+            kw.distance_map = distance_map;
+            kw.distance_map_original = distance_map_original;
+            kw.distance_maps = distance_maps;
+            kw.samples_out = samples_out;
+            kw.color_range = color_range;
+            kw.threads = threads;
+            return kw;
+        };
+    m.def(
+        "compare",
+        [compare_keywords](const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V2, const ArrayLike& F2,
+                           Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
+                           Obj unbiased_variance, Obj k, Obj roughness, Obj distance, Obj samples, Obj density,
+                           Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples, Obj face_samples,
+                           Obj hausdorff, Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance, Obj hausdorff_budget,
+                           Obj fscore, Obj histogram, Obj json, Obj distance_map, Obj distance_map_original,
+                           Obj distance_maps, Obj samples_out, Obj color_range, Obj threads) {
+            return py_compare(
+                V1, F1, V2, F2,
+                compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance, k,
+                                 roughness, distance, samples, density, face_sampling, seed, vertex_samples,
+                                 edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
+                                 hausdorff_budget, fscore, histogram, json, distance_map, distance_map_original,
+                                 distance_maps, samples_out, color_range, threads));
+        },
+        compare_doc.c_str(), py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"), py::kw_only(),
+        py::arg("levels") = py::none(), py::arg("radii") = py::none(),
+        py::arg("global_level") = py::bool_(defaults.profile.global), py::arg("curvature") = py::none(),
+        py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
+        py::arg("unbiased_variance") = py::bool_(defaults.corsini_unbiased), py::arg("k") = py::none(),
+        py::arg("roughness") = py::bool_(defaults.roughness), py::arg("distance") = py::bool_(defaults.distance),
+        py::arg("samples") = py::none(), py::arg("density") = py::none(), py::arg("face_sampling") = py::none(),
+        py::arg("seed") = py::none(), py::arg("vertex_samples") = py::bool_(defaults.sampling.vertices),
+        py::arg("edge_samples") = py::bool_(defaults.sampling.edges),
+        py::arg("face_samples") = py::bool_(defaults.sampling.faces), py::arg("hausdorff") = py::none(),
+        py::arg("hausdorff_tolerance") = py::none(), py::arg("hausdorff_abs_tolerance") = py::none(),
+        py::arg("hausdorff_budget") = py::none(), py::arg("fscore") = py::none(), py::arg("histogram") = py::none(),
+        py::arg("json") = py::none(), py::arg("distance_map") = py::none(),
+        py::arg("distance_map_original") = py::none(), py::arg("distance_maps") = py::none(),
+        py::arg("samples_out") = py::none(), py::arg("color_range") = py::none(), py::arg("threads") = py::none());
+    m.def(
+        "compare_files",
+        [compare_keywords](Obj original, Obj processed, Obj levels, Obj radii, Obj global_level, Obj curvature,
+                           Obj weighting, Obj measure, Obj unbiased_variance, Obj k, Obj roughness, Obj distance,
+                           Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples,
+                           Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance,
+                           Obj hausdorff_budget, Obj fscore, Obj histogram, Obj json, Obj distance_map,
+                           Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj color_range,
+                           Obj threads) {
+            return py_compare_files(
+                original, processed,
+                compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance, k,
+                                 roughness, distance, samples, density, face_sampling, seed, vertex_samples,
+                                 edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
+                                 hausdorff_budget, fscore, histogram, json, distance_map, distance_map_original,
+                                 distance_maps, samples_out, color_range, threads));
+        },
+        compare_files_doc.c_str(), py::arg("original"), py::arg("processed"), py::kw_only(),
+        py::arg("levels") = py::none(), py::arg("radii") = py::none(),
+        py::arg("global_level") = py::bool_(defaults.profile.global), py::arg("curvature") = py::none(),
+        py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
+        py::arg("unbiased_variance") = py::bool_(defaults.corsini_unbiased), py::arg("k") = py::none(),
+        py::arg("roughness") = py::bool_(defaults.roughness), py::arg("distance") = py::bool_(defaults.distance),
+        py::arg("samples") = py::none(), py::arg("density") = py::none(), py::arg("face_sampling") = py::none(),
+        py::arg("seed") = py::none(), py::arg("vertex_samples") = py::bool_(defaults.sampling.vertices),
+        py::arg("edge_samples") = py::bool_(defaults.sampling.edges),
+        py::arg("face_samples") = py::bool_(defaults.sampling.faces), py::arg("hausdorff") = py::none(),
+        py::arg("hausdorff_tolerance") = py::none(), py::arg("hausdorff_abs_tolerance") = py::none(),
+        py::arg("hausdorff_budget") = py::none(), py::arg("fscore") = py::none(), py::arg("histogram") = py::none(),
+        py::arg("json") = py::none(), py::arg("distance_map") = py::none(),
+        py::arg("distance_map_original") = py::none(), py::arg("distance_maps") = py::none(),
+        py::arg("samples_out") = py::none(), py::arg("color_range") = py::none(), py::arg("threads") = py::none());
+    auto profile_keywords = [](Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
+                               Obj unbiased_variance, Obj json, Obj vertex_data, Obj color_range, Obj exact,
+                               Obj exact_property, Obj threads) {
+        ProfileKeywords kw;
+        kw.levels = levels;
+        kw.radii = radii;
+        kw.global_level = global_level;
+        kw.curvature = curvature;
+        kw.weighting = weighting;
+        kw.measure = measure;
+        kw.unbiased_variance = unbiased_variance;
+        kw.json = json;
+        kw.vertex_data = vertex_data;
+        kw.color_range = color_range;
+        kw.exact = exact;
+        kw.exact_property = exact_property;
+        kw.threads = threads;
+        return kw;
+    };
+    m.def(
+        "profile",
+        [profile_keywords](const ArrayLike& V, const ArrayLike& F, Obj levels, Obj radii, Obj global_level,
+                           Obj curvature, Obj weighting, Obj measure, Obj unbiased_variance, Obj json, Obj vertex_data,
+                           Obj color_range, Obj exact, Obj exact_property, Obj threads) {
+            return py_profile(
+                V, F,
+                profile_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance, json,
+                                 vertex_data, color_range, exact, exact_property, threads));
+        },
+        profile_doc.c_str(), py::arg("V"), py::arg("F"), py::kw_only(), py::arg("levels") = py::none(),
+        py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
+        py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
+        py::arg("unbiased_variance") = py::bool_(pdefaults.corsini_unbiased), py::arg("json") = py::none(),
+        py::arg("vertex_data") = py::none(), py::arg("color_range") = py::none(),
+        py::arg("exact") = py::bool_(pdefaults.exact), py::arg("exact_property") = py::none(),
+        py::arg("threads") = py::none());
+    m.def(
+        "profile_file",
+        [profile_keywords](Obj path, Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
+                           Obj unbiased_variance, Obj json, Obj vertex_data, Obj color_range, Obj exact,
+                           Obj exact_property, Obj threads) {
+            return py_profile_file(
+                path, profile_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
+                                       json, vertex_data, color_range, exact, exact_property, threads));
+        },
+        profile_file_doc.c_str(), py::arg("path"), py::kw_only(), py::arg("levels") = py::none(),
+        py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
+        py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
+        py::arg("unbiased_variance") = py::bool_(pdefaults.corsini_unbiased), py::arg("json") = py::none(),
+        py::arg("vertex_data") = py::none(), py::arg("color_range") = py::none(),
+        py::arg("exact") = py::bool_(pdefaults.exact), py::arg("exact_property") = py::none(),
+        py::arg("threads") = py::none());
 
     m.def("corsini_profile", &py_corsini_profile, kCorsiniProfileDoc, py::arg("V"), py::arg("F"), py::kw_only(),
-          py::arg("levels") = default_levels, py::arg("global_level") = true, py::arg("unbiased") = false,
-          py::arg("threads") = 0);
+          py::arg("levels") = py::none(), py::arg("global_level") = py::bool_(true),
+          py::arg("unbiased") = py::bool_(false), py::arg("threads") = py::none());
     m.def("mean_curvature", &py_mean_curvature, kMeanCurvatureDoc, py::arg("V"), py::arg("F"), py::kw_only(),
-          py::arg("method") = "goldfeather", py::arg("weighting") = "none", py::arg("min_neighbors") = 6,
-          py::arg("max_normal_angle_deg") = 60.0, py::arg("threads") = 0);
+          py::arg("method") = py::none(), py::arg("weighting") = py::none(), py::arg("min_neighbors") = py::none(),
+          py::arg("max_normal_angle_deg") = py::none(), py::arg("threads") = py::none());
     m.def("roughness", &py_roughness, kRoughnessDoc, py::arg("V"), py::arg("F"), py::kw_only(),
-          py::arg("levels") = default_levels, py::arg("global_level") = false, py::arg("curvature") = "goldfeather",
-          py::arg("weighting") = "none", py::arg("threads") = 0);
+          py::arg("levels") = py::none(), py::arg("global_level") = py::bool_(false), py::arg("curvature") = py::none(),
+          py::arg("weighting") = py::none(), py::arg("threads") = py::none());
 
     m.def("surface_distance", &py_surface_distance, kSurfaceDistanceDoc, py::arg("V1"), py::arg("F1"), py::arg("V2"),
           py::arg("F2"), py::kw_only(), py::arg("samples") = py::none(), py::arg("density") = py::none(),
-          py::arg("face_sampling") = "similar", py::arg("seed") = 1, py::arg("vertex_samples") = true,
-          py::arg("edge_samples") = true, py::arg("face_samples") = true, py::arg("return_samples") = false,
-          py::arg("threads") = 0);
+          py::arg("face_sampling") = py::none(), py::arg("seed") = py::none(),
+          py::arg("vertex_samples") = py::bool_(true), py::arg("edge_samples") = py::bool_(true),
+          py::arg("face_samples") = py::bool_(true), py::arg("return_samples") = py::bool_(false),
+          py::arg("threads") = py::none());
     m.def("vertex_distances", &py_vertex_distances, kVertexDistancesDoc, py::arg("V1"), py::arg("F1"), py::arg("V2"),
-          py::arg("F2"), py::kw_only(), py::arg("threads") = 0);
+          py::arg("F2"), py::kw_only(), py::arg("threads") = py::none());
 
     py::class_<DistanceIndex>(m, "DistanceIndex", kDistanceIndexDoc)
         .def(py::init<const ArrayLike&, const ArrayLike&>(), py::arg("V"), py::arg("F"))
-        .def("query", &DistanceIndex::query, kQueryDoc, py::arg("P"), py::kw_only(), py::arg("threads") = 0)
+        .def("query", &DistanceIndex::query, kQueryDoc, py::arg("P"), py::kw_only(), py::arg("threads") = py::none())
         .def_property_readonly("n_faces", &DistanceIndex::n_faces, "number of indexed triangles")
         .def_property_readonly("bounds", &DistanceIndex::bounds, "(min, max): the box of the indexed triangles")
         .def_property_readonly("memory_bytes", &DistanceIndex::memory_bytes, "approximate heap memory of the index")

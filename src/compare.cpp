@@ -65,15 +65,26 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
 
 }  // namespace
 
-Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const CompareOptions& options)
+void validate(const CompareOptions& options)
 {
     if (!options.roughness && !options.distance)
-        throw InvalidArgumentError("compare: both halves are switched off (--no-roughness and --no-distance)");
+        throw OptionError("roughness", "both halves are switched off ({distance} too): nothing to compare");
     if (!(options.k > 0.0) || !std::isfinite(options.k))
-        throw InvalidArgumentError(fmt::format("compare: k = {} must be > 0", options.k));
+        throw OptionError("k", fmt::format("{} must be finite and > 0", options.k));
+    if (!is_known(options.measure)) throw OptionError("measure", "not a known roughness measure");
+    if (options.corsini_unbiased && options.measure != RoughnessMeasure::Corsini)
+        throw OptionError("corsini_unbiased", "needs {measure} corsini");
+    if (options.measure == RoughnessMeasure::Corsini && !options.profile.radii.empty())
+        throw OptionError("profile.radii", "metric levels are not defined for {measure} corsini");
+    validate(options.profile);
     validate(options.sampling);
     if (options.hausdorff) validate(*options.hausdorff);
     validate(options.summary);
+}
+
+Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const CompareOptions& options)
+{
+    validate(options);
     const ProgressScope scope(options.progress ? options.progress : current_progress());
     check_cancelled(current_progress());
     if (is_point_cloud(a) || is_point_cloud(b)) return compare_with_cloud(a, b, options);
@@ -92,8 +103,6 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
     auto facts_a = std::async(policy, facts_of, std::cref(a));
     auto facts_b = std::async(policy, facts_of, std::cref(b));
     if (options.roughness && options.measure == RoughnessMeasure::Corsini) {
-        if (!options.profile.radii.empty())
-            throw InvalidArgumentError("compare: metric levels (radii) are not defined for the Corsini measure");
         CorsiniOptions co;
         co.levels = options.profile.levels;
         co.global = options.profile.global;

@@ -77,14 +77,18 @@ double variance(double n, double s1, double s2, bool unbiased)
     return ss / (unbiased ? n - 1.0 : n);
 }
 
-void check(const CorsiniOptions& o)
-{
-    for (int L : o.levels)
-        if (L < 1) throw InvalidArgumentError(fmt::format("corsini: level {} must be >= 1", L));
-    if (o.levels.empty() && !o.global) throw InvalidArgumentError("corsini: no level (no ring level and no global)");
-}
-
 }  // namespace
+
+void validate(const CorsiniOptions& o)
+{
+    if (o.levels.size() > kMaxLevels)
+        throw OptionError("profile.levels", fmt::format("more than the limit of {} levels", kMaxLevels));
+    for (int L : o.levels)
+        if (L < 1 || L > kMaxLevel)
+            throw OptionError("profile.levels", fmt::format("level {} is out of 1..{}", L, kMaxLevel));
+    if (o.levels.empty() && !o.global)
+        throw OptionError("profile.levels", "no level to compute: no ring level and no {profile.global} level");
+}
 
 std::vector<double> dihedral_angles(const Mesh& mesh)
 {
@@ -93,7 +97,7 @@ std::vector<double> dihedral_angles(const Mesh& mesh)
 
 CorsiniProfile corsini_profile(const Mesh& mesh, const CorsiniOptions& options)
 {
-    check(options);
+    validate(options);
     const std::size_t n = mesh.n_vertices();
     CorsiniProfile p;
     p.options = options;
@@ -228,7 +232,7 @@ CorsiniProfile corsini_profile(const Mesh& mesh, const CorsiniOptions& options)
 
 CorsiniDistance corsini_distance(const CorsiniProfile& a, const CorsiniProfile& b, double k)
 {
-    if (!(k > 0.0) || !std::isfinite(k)) throw InvalidArgumentError(fmt::format("corsini: k = {} must be > 0", k));
+    if (!(k > 0.0) || !std::isfinite(k)) throw OptionError("k", fmt::format("{} must be finite and > 0", k));
     CorsiniDistance d;
     d.k = k;
     for (const auto& la : a.levels)

@@ -361,17 +361,20 @@ double largest_coordinate(const Mesh& m)
 
 void validate(const HausdorffOptions& o)
 {
-    if (!(std::isfinite(o.relative_tolerance) && o.relative_tolerance >= 0.0 && o.relative_tolerance < 1.0))
-        throw InvalidArgumentError(
-            fmt::format("HausdorffOptions: relative_tolerance = {} must be in [0, 1)", o.relative_tolerance));
-    if (!(std::isfinite(o.absolute_tolerance) && o.absolute_tolerance >= 0.0))
-        throw InvalidArgumentError(
-            fmt::format("HausdorffOptions: absolute_tolerance = {} must be finite and >= 0", o.absolute_tolerance));
+    const double rel = o.relative_tolerance, abs = o.absolute_tolerance;
+    if (!(std::isfinite(rel) && (rel == 0.0 || (rel >= kMinHausdorffTolerance && rel <= kMaxHausdorffTolerance))))
+        throw OptionError("hausdorff.relative_tolerance", fmt::format("{} is outside [{}, {}] (0: none)", rel,
+                                                                      kMinHausdorffTolerance, kMaxHausdorffTolerance));
+    if (!(std::isfinite(abs) && abs >= 0.0))
+        throw OptionError("hausdorff.absolute_tolerance", fmt::format("{} must be finite and > 0 (0: none)", abs));
+    if (rel == 0.0 && abs == 0.0)
+        throw OptionError("hausdorff.relative_tolerance",
+                          "both tolerances are 0 ({hausdorff.absolute_tolerance} too): the interval would never stop");
+    if (o.max_evaluations > kMaxHausdorffBudget)
+        throw OptionError("hausdorff.max_evaluations",
+                          fmt::format("{} is outside 1..{} (0: the default)", o.max_evaluations, kMaxHausdorffBudget));
     if (o.max_round_triangles < 4)
-        throw InvalidArgumentError(
-            fmt::format("HausdorffOptions: max_round_triangles = {} must be >= 4", o.max_round_triangles));
-    if (o.relative_tolerance == 0.0 && o.absolute_tolerance == 0.0)
-        throw InvalidArgumentError("HausdorffOptions: relative_tolerance and absolute_tolerance are both 0");
+        throw OptionError("hausdorff.max_round_triangles", fmt::format("{} must be >= 4", o.max_round_triangles));
 }
 
 namespace {

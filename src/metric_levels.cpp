@@ -28,9 +28,11 @@ std::vector<double> default_radii()
 
 void check_radii(const std::vector<double>& radii)
 {
+    if (radii.size() > kMaxRadii)
+        throw OptionError("profile.radii", fmt::format("more than the limit of {} radii", kMaxRadii));
     for (double r : radii)
-        if (!(r > 0.0) || !std::isfinite(r))
-            throw InvalidArgumentError(fmt::format("profile: radius {} must be finite and > 0", r));
+        if (!(r > 0.0 && r <= kMaxRadius))
+            throw OptionError("profile.radii", fmt::format("radius {} is not in (0, {}]", r, kMaxRadius));
 }
 
 std::vector<double> vertex_areas(const Mesh& mesh)

@@ -59,4 +59,14 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b)
     return !ec && same;
 }
 
+void refuse_overwriting_inputs(const std::string& what, const std::string& output,
+                               const std::vector<std::string>& inputs)
+{
+    if (output.empty() || output == "-") return;
+    for (const auto& in : inputs)
+        if (same_file(output, in))
+            throw OptionError(
+                what, fmt::format("'{}' is the input file '{}'; meshdiff does not overwrite its inputs", output, in));
+}
+
 }  // namespace meshdiff

@@ -22,6 +22,25 @@ std::vector<int> default_levels()
     return l;
 }
 
+void validate(const ProfileOptions& options)
+{
+    if (options.levels.size() > kMaxLevels)
+        throw OptionError("profile.levels", fmt::format("more than the limit of {} levels", kMaxLevels));
+    for (int l : options.levels)
+        if (l < 1 || l > kMaxLevel)
+            throw OptionError("profile.levels", fmt::format("level {} is out of 1..{}", l, kMaxLevel));
+    check_radii(options.radii);
+    if (options.levels.empty() && options.radii.empty() && !options.global)
+        throw OptionError("profile.levels",
+                          "no level to compute: no ring level, no {profile.radii} and no {profile.global} level");
+    if (!is_known(options.curvature.method))
+        throw OptionError("profile.curvature.method", "not a known curvature method");
+    if (!is_known(options.curvature.weighting))
+        throw OptionError("profile.curvature.weighting", "not a known row weighting");
+    if (!(options.outlier_fraction > 0.0 && options.outlier_fraction <= 1.0))
+        throw OptionError("profile.outlier_fraction", "must be in (0, 1]");
+}
+
 LevelRoughness level_roughness(int level, const std::vector<double>& D, double outlier_fraction)
 {
     LevelRoughness r;
@@ -67,17 +86,6 @@ LevelRoughness level_roughness(int level, const std::vector<double>& D, double o
 }
 
 namespace {
-
-void check_options(const ProfileOptions& options)
-{
-    for (int l : options.levels)
-        if (l < 1) throw InvalidArgumentError(fmt::format("profile: level {} is < 1 (levels count rings)", l));
-    check_radii(options.radii);
-    if (options.levels.empty() && options.radii.empty() && !options.global)
-        throw InvalidArgumentError("profile: no level requested (empty level list and no global level)");
-    if (!(options.outlier_fraction > 0.0 && options.outlier_fraction <= 1.0))
-        throw InvalidArgumentError("profile: outlier_fraction must be in (0, 1]");
-}
 
 // Levels and global level from H on the normalised mesh; fills p.
 void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj, std::vector<double> H,
@@ -142,7 +150,7 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
 
 RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options)
 {
-    check_options(options);
+    validate(options);
     const ProgressScope scope(options.progress ? options.progress : current_progress());
     check_cancelled(current_progress());
     RoughnessProfile p;
@@ -169,7 +177,7 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
 RoughnessProfile roughness_profile_from_curvature(const Mesh& mesh, const std::vector<double>& H_in,
                                                   const ProfileOptions& options)
 {
-    check_options(options);
+    validate(options);
     const ProgressScope scope(options.progress ? options.progress : current_progress());
     if (H_in.size() != mesh.n_vertices())
         throw InvalidArgumentError(

@@ -10,8 +10,7 @@ namespace meshdiff {
 
 LevelDistance level_distance(int level, double s0, double s1, double k)
 {
-    if (!(k > 0.0) || !std::isfinite(k))
-        throw InvalidArgumentError(fmt::format("roughness distance: k = {} must be > 0", k));
+    if (!(k > 0.0) || !std::isfinite(k)) throw OptionError("k", fmt::format("{} must be finite and > 0", k));
     if (!(s0 >= 0.0) || !(s1 >= 0.0) || !std::isfinite(s0) || !std::isfinite(s1))
         throw InvalidArgumentError(fmt::format("roughness distance: sigmas {} and {} must be finite and >= 0", s0, s1));
     LevelDistance d;
@@ -31,8 +30,7 @@ LevelDistance level_distance(int level, double s0, double s1, double k)
 
 RoughnessDistance roughness_distance(const RoughnessProfile& a, const RoughnessProfile& b, double k)
 {
-    if (!(k > 0.0) || !std::isfinite(k))
-        throw InvalidArgumentError(fmt::format("roughness distance: k = {} must be > 0", k));
+    if (!(k > 0.0) || !std::isfinite(k)) throw OptionError("k", fmt::format("{} must be finite and > 0", k));
     RoughnessDistance r;
     r.k = k;
     for (const auto& la : a.levels)

@@ -40,17 +40,16 @@ std::size_t lattice_order(std::size_t n)
 void validate(const SamplingOptions& options)
 {
     if (!options.vertices && !options.edges && !options.faces)
-        throw InvalidArgumentError("SamplingOptions: vertices, edges and faces are all off; enable at least one");
+        throw OptionError("sampling.vertices",
+                          "vertex, edge and face samples are all off ({sampling.edges}, {sampling.faces} too); "
+                          "enable at least one");
     if (options.samples && options.density)
-        throw InvalidArgumentError("SamplingOptions: samples and density are both set; set at most one");
-    if (options.samples && *options.samples == 0)
-        throw InvalidArgumentError("SamplingOptions: samples must be positive, got 0");
-    if (options.samples && *options.samples > kMaxSamples)
-        throw InvalidArgumentError(fmt::format("SamplingOptions: samples = {} exceeds the limit of {} per surface",
-                                               *options.samples, kMaxSamples));
+        throw OptionError("sampling.samples", "excludes {sampling.density}; give at most one");
+    if (options.samples && (*options.samples == 0 || *options.samples > kMaxSamples))
+        throw OptionError("sampling.samples",
+                          fmt::format("{} is outside 1..{} per surface", *options.samples, kMaxSamples));
     if (options.density && !(std::isfinite(*options.density) && *options.density > 0.0))
-        throw InvalidArgumentError(
-            fmt::format("SamplingOptions: density must be finite and positive, got {}", *options.density));
+        throw OptionError("sampling.density", fmt::format("{} must be finite and > 0", *options.density));
 }
 
 std::size_t sample_target(const Mesh& mesh, const SamplingOptions& options, std::size_t default_target)

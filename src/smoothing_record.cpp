@@ -8,6 +8,13 @@
 
 namespace meshdiff {
 
+ProfileOptions record_profile_defaults()
+{
+    ProfileOptions p;
+    p.levels = {1, 5, 10, 20};
+    return p;
+}
+
 SmoothingRecord smooth_and_record(Mesh& mesh, const SmoothingOptions& options, const RecordOptions& record)
 {
     if (record.every < 0)

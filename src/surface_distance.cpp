@@ -70,15 +70,16 @@ std::optional<AreaWeightedStats> finish_area_weighted(std::size_t n_face, const 
 void validate(const SummaryOptions& options)
 {
     if (options.fscore_thresholds.size() > kMaxFscoreThresholds)
-        throw InvalidArgumentError(fmt::format("SummaryOptions: {} F-score thresholds, more than the limit of {}",
-                                               options.fscore_thresholds.size(), kMaxFscoreThresholds));
+        throw OptionError("summary.fscore_thresholds",
+                          fmt::format("more than the limit of {} thresholds", kMaxFscoreThresholds));
     for (double t : options.fscore_thresholds)
-        if (!(std::isfinite(t) && t > 0.0))
-            throw InvalidArgumentError(fmt::format(
-                "SummaryOptions: F-score threshold {} must be finite and > 0 (relative to the diagonal)", t));
+        if (!(std::isfinite(t) && t > 0.0 && t <= kMaxFscoreThreshold))
+            throw OptionError(
+                "summary.fscore_thresholds",
+                fmt::format("threshold {} is not in (0, {:g}] (relative to the diagonal)", t, kMaxFscoreThreshold));
     if (options.histogram_bins > kMaxHistogramBins)
-        throw InvalidArgumentError(fmt::format("SummaryOptions: histogram_bins = {} exceeds the limit of {}",
-                                               options.histogram_bins, kMaxHistogramBins));
+        throw OptionError("summary.histogram_bins",
+                          fmt::format("{} is outside 0..{} (0: none)", options.histogram_bins, kMaxHistogramBins));
 }
 
 std::optional<AreaWeightedStats> area_weighted_stats(const Mesh& from, const SurfaceSamples& samples,

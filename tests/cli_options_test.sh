@@ -46,7 +46,9 @@ expect_range "--fscore" "$h" "$h" --no-roughness -n 2000 --fscore 0
 expect_range "--fscore" "$h" "$h" --no-roughness -n 2000 --fscore 0.001,-0.2
 expect_range "--fscore" "$h" "$h" --no-roughness -n 2000 --fscore nan
 expect_range "--fscore" "$h" "$h" --no-roughness -n 2000 --fscore abc
-expect_range "--histogram" "$h" "$h" --no-roughness -n 2000 --histogram 0
+# --histogram 0 is no histogram, as the library's default (and Python's histogram=0)
+if "$bin" "$h" "$h" --no-roughness -n 2000 --histogram 0 --json "$tmp/h0.json" >/dev/null 2>&1 &&
+    ! grep -q '"histogram"' "$tmp/h0.json"; then pass; else fail "--histogram 0: want exit 0 and no histogram"; fi
 expect_range "--histogram" "$h" "$h" --no-roughness -n 2000 --histogram 1e9
 expect_range "limit of 64" profile "$h" --radii "$(seq -s, 1 70)"
 expect_range "--color-range" "$h" "$h" --no-roughness --distance-map "$tmp/m.ply" --color-range 0 inf

@@ -3,7 +3,9 @@
 #include "commands.h"
 #include "interrupt.h"
 #include "meshdiff/error.h"
+#include "meshdiff/options.h"
 #include "meshdiff/version.h"
+#include "options.h"
 
 #include <fmt/format.h>
 
@@ -29,6 +31,7 @@ bool is_subcommand(const std::string& word)
 
 Failure failure_of(const std::exception& e)
 {
+    if (const auto* o = dynamic_cast<const OptionError*>(&e)) return {kUsage, worded(*o, cli_spelling)};
     if (dynamic_cast<const InvalidArgumentError*>(&e)) return {kUsage, e.what()};
     if (dynamic_cast<const IoError*>(&e)) return {kIoError, e.what()};
     if (dynamic_cast<const InvalidMeshError*>(&e)) return {kInvalidMesh, e.what()};

@@ -5,7 +5,9 @@
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
+#include "meshdiff/output_file.h"
 #include "meshdiff/report/json.h"
+#include "meshdiff/report/outputs.h"
 #include "meshdiff/version.h"
 #include "options.h"
 #include "subprocess.h"
@@ -17,6 +19,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
@@ -42,8 +45,10 @@ struct BatchArgs
     std::string out;
     std::string shard = "0/1";
     CompareCliOptions compare;
-    int threads = 0;
+    CompareOutputCliOptions outputs;  // --color-range only: the maps of --maps-dir
+    Given threads;
     bool quiet = false;
+    bool progress = false;
     double pair_timeout = 0.0;  // seconds; 0: none
     std::string maps_dir;       // distance maps of every pair, when set
     CLI::App* app = nullptr;    // the parsed subcommand (its options are passed on to each pair)
@@ -74,17 +79,23 @@ std::string map_prefix(const std::string& dir, const std::string& id)
 std::vector<std::string> compare_args(const BatchArgs& a, const Pair& p)
 {
     std::vector<std::string> args{"meshdiff", "compare", p.original, p.processed};
-    static const std::set<std::string> batch_only = {"out", "shard", "quiet", "pair-timeout", "maps-dir", "help"};
+    static const std::set<std::string> batch_only = {"out",          "shard",    "quiet", "progress",
+                                                     "pair-timeout", "maps-dir", "help"};
     for (const CLI::Option* o : a.app->get_options()) {
         if (o->count() == 0 || o->get_lnames().empty() || batch_only.count(o->get_lnames()[0])) continue;
         const std::string name = "--" + o->get_lnames()[0];
-        if (o->get_type_size() == 0) {
-            args.push_back(name);  // a flag
+        const std::vector<std::string>& values = o->results();
+        // A flag or a one-value option as --NAME=VALUE, so that a value that
+        // starts with '-' stays a value (and --flag=false stays false); an
+        // option of N values (--color-range MIN MAX) as --NAME V1 .. VN.
+        const auto n = std::size_t(std::max(1, o->get_expected_max()));
+        if (n == 1) {
+            for (const auto& value : values) args.push_back(name + "=" + value);
             continue;
         }
-        for (const auto& value : o->results()) {
+        for (std::size_t i = 0; i < values.size(); i += n) {
             args.push_back(name);
-            args.push_back(value);
+            for (std::size_t j = i; j < std::min(values.size(), i + n); ++j) args.push_back(values[j]);
         }
     }
     if (!a.maps_dir.empty()) args.insert(args.end(), {"--distance-maps", map_prefix(a.maps_dir, p.id)});
@@ -159,7 +170,12 @@ int run_batch(const BatchArgs& a)
     if (std::filesystem::is_directory(a.pairs))
         throw IoError(fmt::format("{}: is a directory, not a pair list", a.pairs));
     const auto [shard, n_shards] = parse_shard(a.shard);
-    to_compare_options(a.compare);  // every option checked here, before any pair runs
+    {
+        // Every option checked here, before any pair runs, as each pair's compare will check it.
+        CompareOutputs outputs = to_compare_outputs(a.outputs);
+        if (!a.maps_dir.empty()) outputs.distance_maps = map_prefix(a.maps_dir, "pair");
+        validate(outputs, to_compare_options(a.compare), {});
+    }
     if (!a.maps_dir.empty()) {
         std::error_code ec;
         std::filesystem::create_directories(a.maps_dir, ec);
@@ -246,8 +262,14 @@ void add_batch_command(CLI::App& app, Action& action)
                     "job array, 'auto/N' takes I from Slurm or GNU parallel ($PARALLEL_SEQ - 1)")
         ->capture_default_str();
     add_compare_options(sub, args->compare);
-    sub->add_option("--threads", args->threads, "worker threads per comparison (0: all cores)");
-    sub->add_flag("-q,--quiet", args->quiet, "no per-pair progress on stderr");
+    sub->add_option("--color-range", args->outputs.color_range,
+                    "with --maps-dir: one distance colour range MIN MAX for the maps of every pair")
+        ->expected(2);
+    add_threads_option(sub, args->threads);
+    auto* progress = sub->add_flag("--progress", args->progress,
+                                   "show the progress (one line per pair on stderr; the default, as for compare "
+                                   "when stderr is not a terminal with --progress)");
+    sub->add_flag("-q,--quiet", args->quiet, "no per-pair progress on stderr")->excludes(progress);
     sub->add_option("--pair-timeout", args->pair_timeout,
                     "seconds one pair may take before it is stopped and recorded as an error (exit_code 124); 0: "
                     "no limit")

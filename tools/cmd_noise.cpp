@@ -1,6 +1,7 @@
 #include "commands.h"
 #include "meshdiff/io.h"
 #include "meshdiff/noise.h"
+#include "meshdiff/output_file.h"
 #include "meshdiff/report/text.h"
 #include "options.h"
 

@@ -1,7 +1,9 @@
 #include "commands.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
+#include "meshdiff/output_file.h"
 #include "meshdiff/report/json.h"
+#include "meshdiff/report/outputs.h"
 #include "meshdiff/report/text.h"
 #include "meshdiff/smoothing.h"
 #include "meshdiff/smoothing_record.h"
@@ -29,7 +31,7 @@ struct SmoothArgs
     int profile_every = 0;     // 0: no profile recording
     std::string json;          // profile recording target ("-" for stdout)
     ProfileCliOptions profile;
-    int threads = 0;
+    Given threads;
     bool no_distance = false;          // do not record the surface distance to the input
     std::size_t distance_samples = 0;  // samples per direction of the recorded distance; 0: compare's default
 };
@@ -50,7 +52,7 @@ int run_smooth(const SmoothArgs& a)
     RecordOptions record_options;
     if (record) {
         record_options.every = a.profile_every;
-        record_options.profile = to_profile_options(a.profile, false);
+        record_options.profile = to_profile_options(a.profile, record_profile_defaults());
         record_options.distance = !a.no_distance;
         if (a.distance_samples > 0) record_options.sampling.samples = a.distance_samples;
     }
@@ -61,7 +63,7 @@ int run_smooth(const SmoothArgs& a)
     else
         recording.report = smooth(loaded.mesh, options);
     write_mesh(a.out, loaded.mesh);
-    if (record) write_json(a.json, smoothing_json(recording, options, record_options, a.in, a.out));
+    if (record) write_json_file(a.json, smoothing_json(recording, options, record_options, a.in, a.out));
     if (a.json != "-") {
         std::cout << smoothing_text(a.out, options, loaded.mesh.n_vertices(), recording.report);
         if (const auto warning = smoothing_warning(a.in, options, recording.report)) std::cerr << *warning;
@@ -121,10 +123,8 @@ void add_smooth_command(CLI::App& app, Action& action)
     sub->add_option("--json", args->json,
                     "write the recorded profiles (schema meshdiff.smoothing/1) to FILE, or '-' for stdout; "
                     "without --profile-every only the first and last iterations are recorded");
-    args->profile.levels = "1,5,10,20";
-    add_profile_options(sub, args->profile, false);
-    sub->add_option("--threads", args->threads, "worker threads of the smoothing and the profile (0: all cores)")
-        ->capture_default_str();
+    add_profile_options(sub, args->profile, false, false, record_profile_defaults());
+    add_threads_option(sub, args->threads);
     sub->callback([args, &action] { action = [args] { return run_smooth(*args); }; });
 }
 

@@ -1,114 +1,94 @@
 //! \file options.h
-//! \brief Option parsing helpers shared by the subcommands.
+//! \brief The command line's names for the library's options. Every rule,
+//! limit and default lives in the library (meshdiff/options.h and the options
+//! structs' validate()); here each option is only registered under its
+//! spelling, kept as the text the user gave, and handed to the library's
+//! parsers. cli_spelling() is the one table from options field to flag, used
+//! to word the library's OptionErrors.
 #pragma once
 
 #include "meshdiff/compare.h"
-#include "meshdiff/corsini.h"
-#include "meshdiff/curvature.h"
-#include "meshdiff/roughness.h"
+#include "meshdiff/report/outputs.h"
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
 
 namespace meshdiff::cli {
 
-//! Parses a level list such as "1,2,5,10,20" or "1-20" or "1-5,10".
-//! \throw InvalidArgumentError on a malformed list or a level < 1.
-std::vector<int> parse_levels(const std::string& text);
+//! The flag of an options field (meshdiff/options.h: option_fields()), e.g.
+//! "profile.levels" -> "--levels"; "" for a field the command line does not
+//! offer.
+std::string cli_spelling(const std::string& field);
 
-//! Parses a radius list such as "0.05,0.1,0.2", or "default" (default_radii()),
-//! or "" (none).
-//! \throw InvalidArgumentError on a malformed list, a radius not finite, <= 0
-//!        or > kMaxRadius, or more than kMaxRadii radii.
-std::vector<double> parse_radii(const std::string& text);
-
-//! Parses F-score thresholds such as "0.001,0.005" (relative to the diagonal),
-//! or "" (none).
-//! \throw InvalidArgumentError on a malformed list, a threshold not in (0, 1e6]
-//!        or more than kMaxFscoreThresholds thresholds.
-std::vector<double> parse_fscore(const std::string& text);
+//! An option's text as given, and whether it was given.
+struct Given
+{
+    std::string text;
+    CLI::Option* option = nullptr;
+    bool given() const { return option != nullptr && option->count() > 0; }
+};
 
 //! Options of the roughness profile shared by profile, compare and batch.
 struct ProfileCliOptions
 {
-    std::string levels = "1-20";
-    std::string radii;  // empty: no metric level
+    Given levels, radii, curvature, weighting, measure;
     bool no_global = false;
-    std::string curvature = "goldfeather";
-    std::string weighting = "none";
-    std::string measure = "sigma";  // only profile and compare offer --measure
     bool unbiased_variance = false;
 };
 //! \param with_radii also offer --radii (not for smooth, whose records hold ring levels only)
-void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii = true);
+//! \param with_measure also offer --measure and --unbiased-variance (not for smooth)
+//! \param defaults the options an option not given keeps (shown in --help)
+void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii = true, bool with_measure = true,
+                         const ProfileOptions& defaults = {});
 
-//! --measure and --unbiased-variance (profile and compare only).
-void add_measure_options(CLI::App* sub, ProfileCliOptions& o);
+//! The library options for the parsed options (\p defaults, the library's,
+//! where an option was not given), validated.
+//! \throw OptionError as validate(ProfileOptions).
+ProfileOptions to_profile_options(const ProfileCliOptions& o, ProfileOptions defaults = {});
 
-//! The library options for the parsed command-line options.
-ProfileOptions to_profile_options(const ProfileCliOptions& o, bool keep_vertex_data);
-
-//! The Corsini options (levels, global, variance) for the parsed options.
-//! \throw InvalidArgumentError if --radii was given, or --unbiased-variance
-//!        without --measure corsini.
-CorsiniOptions to_corsini_options(const ProfileCliOptions& o);
+//! The measure and its variance flag.
+RoughnessMeasure to_measure(const ProfileCliOptions& o);
 
 //! Options of a comparison shared by compare and batch.
 struct CompareCliOptions
 {
     ProfileCliOptions profile;
-    double k = 1e-4;
+    Given k, samples, density, face_sampling, seed, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
+        hausdorff_budget, fscore, histogram;
     bool no_roughness = false;
     bool no_distance = false;
-    std::size_t samples = 0;  // 0: Metro's default budget
-    double density = 0.0;     // 0: unset
-    std::string face_sampling = "similar";
-    std::uint64_t seed = 1;
     bool no_vertex_samples = false, no_edge_samples = false, no_face_samples = false;
-    std::string hausdorff = "certified";
-    double hausdorff_tolerance = 0.0;  // 0: 1e-4, or none when an absolute tolerance is given
-    double hausdorff_abs_tolerance = 0.0;
-    std::size_t hausdorff_budget = 0;  // 0: the library's default
-    std::string fscore;                // F-score thresholds, relative; empty: none
-    std::size_t histogram = 0;         // histogram bins; 0: none
 };
 void add_compare_options(CLI::App* sub, CompareCliOptions& o);
+
+//! \throw OptionError as validate(CompareOptions).
 CompareOptions to_compare_options(const CompareCliOptions& o);
 
-//! A validator for a numeric option: the value must parse as a finite number
-//! in [lo, hi] (and be a whole number if \p integer); the message states the range.
+//! The outputs of compare (and, per pair, of batch).
+struct CompareOutputCliOptions
+{
+    CompareOutputs outputs;
+    std::vector<std::string> color_range;  // MIN MAX as given
+};
+void add_compare_output_options(CLI::App* sub, CompareOutputCliOptions& o);
+//! \throw OptionError for a colour range that is not two numbers.
+CompareOutputs to_compare_outputs(const CompareOutputCliOptions& o);
+
+//! A validator for a numeric option of generate, smooth, noise and batch's
+//! own options: the value must parse as a finite number in [lo, hi] (and be
+//! a whole number if \p integer), the bounds being the library's constants;
+//! the message states the range.
 CLI::Validator in_range(double lo, double hi, bool integer = false);
-//! A validator: a finite number > 0 (up to \p hi).
-CLI::Validator positive(double hi = 1e300);
+//! A validator: a finite number > 0.
+CLI::Validator positive();
 
-//! The largest thread count accepted by --threads.
-constexpr int kMaxThreads = 1024;
-//! The largest --hausdorff-budget (bounds of triangles; each costs some 100
-//! bytes while open).
-constexpr double kMaxHausdorffBudget = 1e9;
-//! The most levels a --levels list may hold (each level keeps a value per vertex).
-constexpr std::size_t kMaxLevels = 200;
+//! --threads, kept as given (0: all cores).
+void add_threads_option(CLI::App* sub, Given& threads);
 
-//! The most radii a --radii list may hold.
-constexpr std::size_t kMaxRadii = 64;
-//! The largest radius --radii accepts (on the unit-scaled mesh, whose mean
-//! vertex distance to the centroid is 1: far larger than any mesh).
-constexpr double kMaxRadius = 1000.0;
-
-//! Sets the OpenMP thread count when \p threads > 0.
-void set_threads(int threads);
-
-//! Refuses to write the output \p output of option \p what (e.g. "--json")
-//! onto one of \p inputs: the same file, also through links.
-//! \throw InvalidArgumentError naming both.
-void refuse_overwriting_inputs(const std::string& what, const std::string& output,
-                               const std::vector<std::string>& inputs);
-
-//! Writes \p j to FILE (atomically: output_file.h), or to stdout for "-".
-//! \throw IoError if the file cannot be written.
-void write_json(const std::string& target, const nlohmann::json& j);
+//! Sets the OpenMP thread count when --threads N > 0.
+//! \throw OptionError if N is outside the library's limit.
+void set_threads(const Given& threads);
 
 }  // namespace meshdiff::cli

@@ -22,7 +22,7 @@ void add_progress_options(CLI::App* sub, ProgressCliOptions& o)
                                    "show the progress of each stage on stderr from the start, also when stderr is "
                                    "not a terminal (then as plain lines, for logs); by default it shows only on a "
                                    "terminal and once the run has taken 2 s");
-    sub->add_flag("--quiet", o.quiet, "no progress display")->excludes(progress);
+    sub->add_flag("-q,--quiet", o.quiet, "no progress display")->excludes(progress);
 }
 
 ProgressMode progress_mode(const ProgressCliOptions& o, bool stderr_is_terminal)

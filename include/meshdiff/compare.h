@@ -95,6 +95,13 @@ struct Comparison
     std::string roughness_unavailable;
 };
 
+//! The rules of CompareOptions, each refusal an OptionError naming the field
+//! (error.h, options.h): not both halves off; k finite and > 0; a known
+//! measure; corsini_unbiased only with the Corsini measure, which takes no
+//! radii; and validate() of the profile, sampling, Hausdorff and summary
+//! options.
+void validate(const CompareOptions& options);
+
 //! Runs the halves asked for in \p options.
 //! Either input may be a point cloud (a mesh without faces, as
 //! read_mesh_or_cloud() returns it): the surface distance is then
@@ -102,9 +109,8 @@ struct Comparison
 //! need faces on both sides and are skipped with the reason
 //! (Comparison::roughness_unavailable, same_connectivity_unavailable). The
 //! facts of a cloud are its point count and bounding box (area 0, no topology).
-//! \throw InvalidArgumentError for bad options (k <= 0, both halves off, bad
-//!        sampling, radii with the Corsini measure; a cloud with --no-distance:
-//!        nothing left to compare).
+//! \throw OptionError for bad options (validate()); InvalidArgumentError for
+//!        a cloud with distance off (nothing left to compare).
 Comparison compare_meshes(const LoadedMesh& original, const LoadedMesh& processed, const CompareOptions& options = {});
 
 }  // namespace meshdiff

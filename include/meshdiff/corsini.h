@@ -66,6 +66,10 @@ struct CorsiniOptions
     bool keep_vertex_data = false;  //!< keep R_L(v) per vertex in the result
 };
 
+//! \throw OptionError naming the field for a level outside 1..kMaxLevel, more
+//!        than kMaxLevels levels, or no level at all.
+void validate(const CorsiniOptions& options);
+
 //! The roughness at one scale.
 struct CorsiniLevel
 {

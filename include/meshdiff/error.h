@@ -5,6 +5,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace meshdiff {
 
@@ -35,6 +36,27 @@ class InvalidArgumentError : public Error
 {
 public:
     using Error::Error;
+};
+
+//! An option of the library's options structs (ProfileOptions, CompareOptions,
+//! ...) outside its domain or in a combination that is refused; field() names
+//! it as a path in those structs ("levels", "sampling.samples",
+//! "hausdorff.relative_tolerance": docs/library.md lists them), problem() says
+//! what is wrong without naming it. what() is "field: problem". The front ends
+//! (CLI, batch, Python) word the message with their own spelling of the field
+//! (`--samples`, `samples=`), so every rule and limit lives in one place.
+class OptionError : public InvalidArgumentError
+{
+public:
+    OptionError(std::string field, std::string problem)
+        : InvalidArgumentError(field + ": " + problem), field_(std::move(field)), problem_(std::move(problem))
+    {}
+    const std::string& field() const noexcept { return field_; }
+    const std::string& problem() const noexcept { return problem_; }
+
+private:
+    std::string field_;
+    std::string problem_;
 };
 
 //! A numerical solve failed where no fallback exists (exit code 5).

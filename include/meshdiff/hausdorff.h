@@ -70,12 +70,15 @@
 
 namespace meshdiff {
 
+//! The default relative width of the certified interval: four certain digits.
+constexpr double kDefaultHausdorffTolerance = 1e-4;
+
 struct HausdorffOptions
 {
     //! Width of the interval asked for, relative to the lower bound: 1e-4
     //! gives four certain digits. The larger of this (times the lower bound)
     //! and absolute_tolerance is used.
-    double relative_tolerance = 1e-4;
+    double relative_tolerance = kDefaultHausdorffTolerance;
     //! Width asked for in the meshes' length unit (0: relative only).
     double absolute_tolerance = 0.0;
     //! Budget of upper-bound evaluations (triangles of A bounded); 0 means
@@ -88,8 +91,19 @@ struct HausdorffOptions
     std::size_t max_round_triangles = std::size_t(1) << 23;
 };
 
-//! \throw InvalidArgumentError unless both tolerances are finite and >= 0
-//! (relative below 1) and at least one is > 0.
+//! The limits of HausdorffOptions: relative_tolerance 0 (none) or in
+//! [kMinHausdorffTolerance, kMaxHausdorffTolerance] (below 1e-12 the rounding
+//! of the distances decides; above 0.5 not one digit is certain), and
+//! max_evaluations at most kMaxHausdorffBudget (each open triangle holds about
+//! 130 bytes).
+constexpr double kMinHausdorffTolerance = 1e-12;
+constexpr double kMaxHausdorffTolerance = 0.5;
+constexpr std::size_t kMaxHausdorffBudget = 1'000'000'000;
+
+//! \throw OptionError naming the field unless relative_tolerance is 0 or
+//! within its limits, absolute_tolerance is finite and >= 0, at least one
+//! of them is > 0, max_evaluations <= kMaxHausdorffBudget and
+//! max_round_triangles >= 4.
 void validate(const HausdorffOptions& options);
 
 //! Where a one-sided Hausdorff distance is attained: a point of the sampled

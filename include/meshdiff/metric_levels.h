@@ -25,7 +25,14 @@ namespace meshdiff {
 //! choice and its upper bound, set by the cost).
 std::vector<double> default_radii();
 
-//! Throws InvalidArgumentError unless every radius is finite and > 0.
+//! The most radii one profile takes (each keeps a value per vertex), and the
+//! largest radius (on the unit-scaled mesh, whose mean vertex distance to the
+//! centroid is 1: far larger than any mesh).
+constexpr std::size_t kMaxRadii = 64;
+constexpr double kMaxRadius = 1000.0;
+
+//! Throws OptionError("profile.radii") unless every radius is finite, > 0 and
+//! <= kMaxRadius, and there are at most kMaxRadii.
 void check_radii(const std::vector<double>& radii);
 
 //! The area share of each vertex: one third of the area of each incident

@@ -8,6 +8,8 @@
 
 #include <filesystem>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace meshdiff {
 
@@ -26,5 +28,12 @@ void write_atomically(const std::filesystem::path& path,
 //! True if \p a and \p b are the same existing file, also through symbolic or
 //! hard links (std::filesystem::equivalent); false if either does not exist.
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
+
+//! Refuses to write the output \p output of \p what (e.g. "--json", or an
+//! options field such as "outputs.json") onto one of \p inputs: the same
+//! file, also through links; "" and "-" (standard output) are no file.
+//! \throw OptionError(\p what) naming both.
+void refuse_overwriting_inputs(const std::string& what, const std::string& output,
+                               const std::vector<std::string>& inputs);
 
 }  // namespace meshdiff

@@ -25,6 +25,11 @@ namespace meshdiff {
 //! Levels 1..20, the default of the paper's plots.
 std::vector<int> default_levels();
 
+//! The most levels one profile takes (each keeps a value per vertex), and the
+//! largest level.
+constexpr std::size_t kMaxLevels = 200;
+constexpr int kMaxLevel = 100'000;
+
 struct ProfileOptions
 {
     std::vector<int> levels = default_levels();  //!< ring levels, each >= 1, in the order reported
@@ -84,10 +89,16 @@ struct RoughnessProfile
     std::vector<std::vector<double>> D_radii;  //!< D_r per metric level, in the order of radii
 };
 
+//! \throw OptionError naming the field for a level outside 1..kMaxLevel, more
+//!        than kMaxLevels levels, a radius outside (0, kMaxRadius] or more
+//!        than kMaxRadii (check_radii()), no level at all (no ring level, no
+//!        radius, no global), an unknown curvature method or weighting, or an
+//!        outlier_fraction outside (0, 1].
+void validate(const ProfileOptions& options);
+
 //! The roughness profile of \p mesh (any position and scale: it is
 //! normalised first).
-//! \throw InvalidArgumentError for a level < 1, a radius not finite and > 0,
-//!        or no level at all (no ring level, no radius, no global).
+//! \throw OptionError as validate().
 //! \throw InvalidMeshError for a mesh without extent.
 RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options = {});
 

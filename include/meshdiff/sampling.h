@@ -95,7 +95,7 @@ struct SamplingOptions
 //! budget above it is an InvalidArgumentError, not a run that exhausts memory.
 constexpr std::size_t kMaxSamples = 250'000'000;
 
-//! Throws InvalidArgumentError naming the field if: no kind is enabled;
+//! Throws OptionError naming the field if: no kind is enabled;
 //! `samples` is 0 or above kMaxSamples; `density` is not finite and > 0; both `samples` and
 //! `density` are set.
 void validate(const SamplingOptions& options);

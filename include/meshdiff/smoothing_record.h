@@ -18,6 +18,10 @@
 namespace meshdiff {
 
 //! What to record while smoothing.
+//! The profile `meshdiff smooth` records unless told otherwise: ring levels
+//! 1, 5, 10, 20 and the global level (the paper's smoothing plots).
+ProfileOptions record_profile_defaults();
+
 struct RecordOptions
 {
     //! Record at iteration 0, every `every` iterations and at the last; 0:

@@ -137,9 +137,11 @@ struct SummaryOptions
 //! The most --fscore thresholds and histogram bins accepted.
 constexpr std::size_t kMaxFscoreThresholds = 64;
 constexpr std::size_t kMaxHistogramBins = 100'000;
+//! The largest F-score threshold (relative to the diagonal).
+constexpr double kMaxFscoreThreshold = 1e6;
 
-//! Throws InvalidArgumentError naming the field if a threshold is not finite
-//! and > 0, or there are more than kMaxFscoreThresholds thresholds or
+//! Throws OptionError naming the field if a threshold is not finite, > 0 and
+//! <= kMaxFscoreThreshold, or there are more than kMaxFscoreThresholds thresholds or
 //! kMaxHistogramBins bins.
 void validate(const SummaryOptions& options);
 

@@ -54,7 +54,7 @@ def test_bad_arrays_raise_value_error_naming_the_argument(mesh, make, name):
 
 
 @pytest.mark.parametrize("options", [
-    dict(levels=[0]), dict(levels="1-20"), dict(levels=[1.5]), dict(levels=[], global_level=False),
+    dict(levels=[0]), dict(levels="1-0"), dict(levels="a-b"), dict(levels=[], global_level=False),
     dict(curvature="nope"), dict(weighting="heavy"), dict(face_sampling="random"), dict(k=0.0), dict(k=-1.0),
     dict(samples=0), dict(samples=-5), dict(density=0.0), dict(samples=100, density=1.0),
     dict(vertex_samples=False, edge_samples=False, face_samples=False), dict(roughness=False, distance=False),
@@ -72,6 +72,12 @@ def test_options_are_keyword_only_and_typed(mesh):
         meshdiff.compare(V, F, V, F, [1, 2])
     with pytest.raises(TypeError):
         meshdiff.compare(V, F, V, F, samples=1.5)
+    with pytest.raises(TypeError, match="levels"):
+        meshdiff.compare(V, F, V, F, levels=[1.5])
+    with pytest.raises(TypeError, match="roughness"):
+        meshdiff.compare(V, F, V, F, roughness="no")
+    with pytest.raises(TypeError, match="k: expected a number"):
+        meshdiff.compare(V, F, V, F, k="1e-4")
     with pytest.raises(TypeError):
         meshdiff.compare(V, F, V, F, no_such_option=1)
 

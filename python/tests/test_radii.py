@@ -26,11 +26,28 @@ def test_profile_radii_match_cli(data, cli):
     assert json.loads(out)["sigma_radii"] == p["sigma_radii"]
 
 
-@pytest.mark.parametrize("radii", [[0.0], [-1.0], [float("nan")], [float("inf")], "abc", [0.1, "x"], 3.0])
+@pytest.mark.parametrize("radii", [[0.0], [-1.0], [float("nan")], [float("inf")], "abc", [5000.0], [0.1] * 65])
 def test_bad_radii(data, radii):
     V, F = meshdiff.read_mesh(data / "fandisk.ply")
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="radii"):
         meshdiff.profile(V, F, radii=radii)
+
+
+@pytest.mark.parametrize("radii", [[0.1, "x"], 3.0, [True]])
+def test_radii_of_the_wrong_type(data, radii):
+    V, F = meshdiff.read_mesh(data / "fandisk.ply")
+    with pytest.raises(TypeError, match="radii"):
+        meshdiff.profile(V, F, radii=radii)
+
+
+def test_radii_of_any_float_dtype(data):
+    """A float32 array of radii gives the profile of the same radii as float64 (issue 26)."""
+    import numpy as np
+    V, F = meshdiff.read_mesh(data / "fandisk.ply")
+    r32 = np.array([0.05, 0.1], dtype=np.float32)
+    got = meshdiff.profile(V, F, radii=r32)
+    want = meshdiff.profile(V, F, radii=[float(r) for r in r32])
+    assert got == want
 
 
 def test_compare_files_radii_match_cli(data, cli):

@@ -1,0 +1,103 @@
+//! \file report/outputs.h
+//! \brief The files a comparison or a profile writes beside its result (the
+//! JSON report, distance maps, sample clouds, vertex data), and their rules:
+//! which outputs exclude or need which options, that no output is an input
+//! or another output. `meshdiff compare`, `meshdiff profile`, each pair of
+//! `meshdiff batch` and Python's compare_files() / profile_file() all go
+//! through these, so an output means the same in every front end. Refusals are
+//! OptionErrors naming the field ("outputs.distance_maps", ...: options.h).
+#pragma once
+
+#include "meshdiff/compare.h"
+#include "meshdiff/corsini.h"
+#include "meshdiff/io.h"
+#include "meshdiff/roughness.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace meshdiff {
+
+//! The outputs of a comparison; an empty path is no output.
+struct CompareOutputs
+{
+    std::string json;                   //!< the JSON report; "-": standard output
+    std::string distance_map;           //!< the processed mesh with its distances to the original (PLY)
+    std::string distance_map_original;  //!< the original with its distances to the processed mesh (PLY)
+    std::string distance_maps;          //!< prefix of both: PREFIX_original.ply, PREFIX_processed.ply
+    std::string samples_out;            //!< both directions' samples with their distances (PLY point cloud)
+    //! The colour range [MIN, MAX] of the distance maps, MIN < MAX, both
+    //! finite; unset: [0, the largest distance] (of both maps when both are
+    //! written).
+    std::optional<std::pair<double, double>> color_range;
+};
+
+//! The two map paths \p o asks for (distance_maps expanded): original, processed.
+std::pair<std::string, std::string> map_paths(const CompareOutputs& o);
+
+//! The rules of \p o with \p options: distance_maps excludes the two single
+//! map options; a colour range needs MIN < MAX, both finite; samples_out and
+//! the maps need the surface distance; no two outputs name one file and no
+//! output is one of \p inputs (also through links).
+//! \throw OptionError naming the field.
+void validate(const CompareOutputs& o, const CompareOptions& options, const std::vector<std::string>& inputs);
+
+//! \p options with what \p o needs computed (vertex distances for maps, the
+//! samples for samples_out).
+CompareOptions with_outputs(CompareOptions options, const CompareOutputs& o);
+
+//! Writes the maps and the sample cloud of \p c (made with with_outputs())
+//! named in \p o, and returns the lines that name them for the text report.
+//! \p original_name / \p processed_name name the inputs in the files' comments.
+//! Not the JSON (write_json_file()).
+std::string write_outputs(const Comparison& c, const LoadedMesh& original, const LoadedMesh& processed,
+                          const CompareOutputs& o, const std::string& original_name, const std::string& processed_name);
+
+//! What `meshdiff profile` asks: the options of the measure chosen and the outputs.
+struct ProfileRequest
+{
+    ProfileOptions
+        profile{};  //!< levels, global, radii, curvature (the sigma measure; levels and global also Corsini's)
+    RoughnessMeasure measure = RoughnessMeasure::Sigma;
+    bool corsini_unbiased = false;  //!< CorsiniOptions::unbiased
+    std::string json;               //!< the JSON report; "-": standard output; empty: none
+    std::string vertex_data;        //!< the normalised mesh with H and D per vertex (PLY); empty: none
+    double color_range = 0.0;       //!< the H colour range [-R, R] of vertex_data; 0: robust_symmetric_range(H)
+    bool exact = false;             //!< also the profile of the exact H stored in the input, and the error of H
+    std::string exact_property = "exact_H";  //!< the PLY vertex property holding it
+};
+
+//! The rules of \p r: validate() of its profile options; corsini_unbiased
+//! only with the Corsini measure, which takes no radii, vertex data, exact
+//! profile or colour range; color_range finite and >= 0; exact_property not
+//! empty; no output is one of \p inputs, nor the other output.
+//! \throw OptionError naming the field.
+void validate(const ProfileRequest& r, const std::vector<std::string>& inputs);
+
+//! The JSON and text reports of a profile.
+struct ProfileReport
+{
+    nlohmann::json json;
+    std::string text;
+};
+
+//! The profile \p r asks for of \p mesh (the sigma profile with its exact
+//! twin, or Corsini's), its reports, and the vertex data file if asked for
+//! (written here; the JSON is not: write_json_file()). The mesh's topology
+//! report runs beside the profile, on a thread of its own unless OpenMP is
+//! limited to one thread.
+//! \throw OptionError as validate(); InvalidArgumentError if the exact
+//!        property is not in the input.
+ProfileReport profile_report(const LoadedMesh& mesh, const ProfileRequest& r);
+
+//! Writes \p j (2-space indented, with a final newline; bytes that are not
+//! UTF-8 as U+FFFD) to \p target atomically (output_file.h), or to standard
+//! output for "-".
+//! \throw IoError if the file cannot be written.
+void write_json_file(const std::string& target, const nlohmann::json& j);
+
+}  // namespace meshdiff
