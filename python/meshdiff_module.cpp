@@ -940,7 +940,7 @@ Conventions (METHOD.md):
 - H > 0 where the surface is convex with outward normals (unit sphere: +1);
   roughness is computed on the mesh scaled to mean vertex distance 1 from the
   centroid, so sigma and D_L are dimensionless.
-- threads=0 uses all cores (or OMP_NUM_THREADS), as the CLI's --threads 0;
+- threads=None or 0 uses all cores (or OMP_NUM_THREADS), as the CLI's --threads 0;
   results do not depend on the thread count. The GIL is released while
   computing.
 
@@ -963,30 +963,43 @@ read or parsed, ValueError if it is not a usable mesh (no faces, NaN/Inf
 coordinates, index out of range).)doc";
 
 constexpr const char* kCompareOptionsDoc = R"doc(
-Options (keyword-only, named like the CLI flags of `meshdiff compare`):
-  levels=range(1, 21)   ring levels L (ints >= 1), in the order reported  [--levels]
+Options (keyword-only, named like the CLI flags of `meshdiff compare`; None:
+not given, the library's default, as a flag left out). The rules and limits
+are the library's, the CLI's too (docs/cli.md states the limits; LIMITS holds
+them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword.
+  levels=None           ring levels L (ints >= 1, or "1-5,10"); None: 1..20  [--levels]
   radii=None            metric levels: radii > 0 on the unit-scaled mesh, or "default";
                         adds d_r per radius (METHOD.md 5a)                 [--radii]
   global_level=True     also the global level                              [--no-global]
-  curvature="goldfeather"  H estimator: goldfeather, quadric, meyer        [--curvature]
-  weighting="none"      row weighting of the fits: none, inverse-square    [--weighting]
-  k=1e-4                the constant of d_L = ln(|s'-s|/s + k) - ln(k)     [-k]
+  curvature=None        H estimator: goldfeather (default), quadric, meyer [--curvature]
+  weighting=None        row weighting of the fits: none (default), inverse-square  [--weighting]
+  measure=None          sigma (default) or corsini (METHOD.md 6a)          [--measure]
+  unbiased_variance=False  corsini: variance with divisor n - 1            [--unbiased-variance]
+  k=None                the constant of d_L = ln(|s'-s|/s + k) - ln(k); 1e-4  [-k]
   roughness=True        compute both profiles and d_L                      [--no-roughness]
   distance=True         compute the surface distance                       [--no-distance]
   samples=None          samples per direction (None: 10 x the larger face count, as Metro)  [-n]
   density=None          samples per unit area instead of a count           [--density]
-  face_sampling="similar"  face sampling: similar (Metro's lattice) or montecarlo  [--face-sampling]
-  seed=1                seed of montecarlo sampling                        [--seed]
+  face_sampling=None    similar (Metro's lattice, default) or montecarlo   [--face-sampling]
+  seed=None             seed of montecarlo sampling (default 1)            [--seed]
   vertex_samples=True, edge_samples=True, face_samples=True   sample kinds [--no-*-samples]
-  hausdorff="certified" certified: an interval [lower, upper] holding each one-sided Hausdorff
-                        distance, with where it is attained; sampled: the sampled maxima only
-                                                                           [--hausdorff]
-  hausdorff_tolerance=1e-4  width of that interval relative to the value   [--hausdorff-tolerance]
-  hausdorff_abs_tolerance=None  the width in the meshes' unit instead      [--hausdorff-abs-tolerance]
+  hausdorff=None        certified (default): an interval [lower, upper] holding each one-sided
+                        Hausdorff distance, with where it is attained; sampled: the sampled
+                        maxima only                                        [--hausdorff]
+  hausdorff_tolerance=None  width of that interval relative to the value; 1e-4 unless only
+                        the absolute one is given                          [--hausdorff-tolerance]
+  hausdorff_abs_tolerance=None  the width in the meshes' unit; with both, the interval stops
+                        at max(relative x value, absolute), as math.isclose [--hausdorff-abs-tolerance]
+  hausdorff_budget=None most triangle bounds per direction                 [--hausdorff-budget]
   fscore=None           F-score thresholds relative to the original's diagonal,
                         e.g. [0.001, 0.005] -> surface_distance["fscore"]  [--fscore]
-  histogram=0           bins of each direction's histogram, 0: none         [--histogram]
-  threads=0             OpenMP threads, 0: all cores                        [--threads]
+  histogram=None        bins of each direction's histogram, 0 or None: none [--histogram]
+  json=None             also write the JSON report to this path            [--json]
+  distance_map=None, distance_map_original=None, distance_maps=None
+                        write distance maps (PLY), as the CLI              [--distance-map, ...]
+  samples_out=None      write both directions' samples (PLY point cloud)   [--samples-out]
+  color_range=None      (MIN, MAX) of the maps' colours                    [--color-range]
+  threads=None          OpenMP threads; None or 0: all cores               [--threads]
 )doc";
 
 constexpr const char* kCompareDoc = R"doc(Compares the original mesh (V1, F1) with the processed mesh (V2, F2): both
@@ -1018,12 +1031,18 @@ Raises FileNotFoundError / OSError for missing or unreadable files.
 )doc";
 
 constexpr const char* kProfileOptionsDoc = R"doc(
-Options (keyword-only, as `meshdiff profile`):
-  levels=range(1, 21), global_level=True, curvature="goldfeather",
-  weighting="none", threads=0   (see compare())
-  radii=None     metric levels [--radii]: a sequence of radii > 0 on the unit-scaled
-                 mesh, or "default" (0.0125 * 2**(k/2), k = 0..8); adds "radii",
-                 "sigma_radii" and "radius_details" to the dict (METHOD.md 5a)
+Options (keyword-only, as `meshdiff profile`; None: the library's default):
+  levels=None, radii=None, global_level=True, curvature=None, weighting=None,
+  measure=None, unbiased_variance=False, threads=None   (see compare());
+  with radii (or "default": 0.0125 * 2**(k/2), k = 0..8) the dict also holds
+  "radii", "sigma_radii" and "radius_details" (METHOD.md 5a); with
+  measure="corsini" it is the dict of `meshdiff profile --measure corsini`.
+  json=None          also write the JSON report to this path          [--json]
+  vertex_data=None   write the normalised mesh with H, D_L per vertex [--vertex-data]
+  color_range=None   R of the symmetric H colour range of vertex_data [--color-range]
+  exact=False        also the profile of the exact H stored in the input
+                     (under "exact"), and the error of the estimate   [--exact]
+  exact_property=None  the vertex property holding it ("exact_H")     [--exact-property]
 )doc";
 
 constexpr const char* kProfileDoc = R"doc(The roughness profile of one mesh: the dict of `meshdiff profile MESH --json`

@@ -68,9 +68,9 @@ std::string choices()
 
 // Registers --NAME as a text option of \p g, with \p default_text as the default shown in --help.
 void add(CLI::App* sub, const std::string& name, Given& g, const std::string& help,
-         const std::string& default_text = "")
+         const std::string& default_text = "", const char* type = "TEXT")
 {
-    g.option = sub->add_option(name, g.text, help);
+    g.option = sub->add_option(name, g.text, help)->type_name(type);
     if (!default_text.empty()) g.option->default_str(default_text);
 }
 
@@ -104,6 +104,8 @@ void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii, b
         to_string(defaults.curvature.method));
     add(sub, "--weighting", o.weighting, "row weighting of the fitting estimators: " + choices<RowWeighting>(),
         to_string(defaults.curvature.weighting));
+    o.levels.option->type_name("LIST");
+    if (with_radii) o.radii.option->type_name("LIST");
     if (!with_measure) return;
     add(sub, "--measure", o.measure,
         "sigma: the paper's curvature-deviation profile; corsini: Corsini et al.'s dihedral-angle roughness "
@@ -169,6 +171,10 @@ void add_compare_options(CLI::App* sub, CompareCliOptions& o)
         "face samples; in the JSON and the text report)");
     add(sub, "--histogram", o.histogram,
         "N bins over [0, max] of each direction's sample distances, in the JSON report (0: none)");
+    for (Given* g : {&o.k, &o.density, &o.hausdorff_tolerance, &o.hausdorff_abs_tolerance})
+        g->option->type_name("NUMBER");
+    for (Given* g : {&o.samples, &o.seed, &o.hausdorff_budget, &o.histogram}) g->option->type_name("UINT");
+    o.fscore.option->type_name("LIST");
 }
 
 CompareOptions to_compare_options(const CompareCliOptions& o)
@@ -260,7 +266,7 @@ CLI::Validator positive()
 
 void add_threads_option(CLI::App* sub, Given& threads)
 {
-    add(sub, "--threads", threads, "worker threads (0: all cores)", "0");
+    add(sub, "--threads", threads, "worker threads (0: all cores)", "0", "UINT");
 }
 
 void set_threads(const Given& threads)

@@ -176,7 +176,7 @@ ProfileReport profile_report(const LoadedMesh& loaded, const ProfileRequest& r)
         try {
             H = &vertex_scalar(loaded, r.exact_property);
         } catch (const InvalidArgumentError& e) {
-            throw OptionError("outputs.exact", fmt::format("{} (meshdiff generate writes exact_H)", e.what()));
+            throw OptionError("outputs.exact_property", fmt::format("{} (meshdiff generate writes exact_H)", e.what()));
         }
         const ExactProfile e = exact_profile(loaded.mesh, H->values, options, profile);
         out.text += exact_profile_text(profile, e, r.exact_property);
