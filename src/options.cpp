@@ -225,4 +225,17 @@ void validate_threads(long long threads)
         throw OptionError("threads", fmt::format("{} is outside 0..{} (0: all cores)", threads, kMaxThreads));
 }
 
+void validate_shard(std::size_t index, std::size_t count, const std::string& text)
+{
+    if (count == 0 || index >= count || count > kMaxShards)
+        throw OptionError("batch.shard", fmt::format("'{}' needs 0 <= I < N <= {}", text, kMaxShards));
+}
+
+void validate_pair_timeout(double seconds)
+{
+    if (!(seconds >= 0.0 && seconds <= kMaxPairTimeout))
+        throw OptionError("batch.pair_timeout",
+                          fmt::format("{} is outside 0..{:g} seconds (0: no limit)", seconds, kMaxPairTimeout));
+}
+
 }  // namespace meshdiff

@@ -22,16 +22,19 @@ namespace {
 
 void require(bool ok, const char* field, const std::string& what)
 {
-    if (!ok) throw InvalidArgumentError(fmt::format("smooth: {} {}", field, what));
+    if (!ok) throw OptionError(std::string("smooth.") + field, what);
 }
 
-void validate_options(const SmoothingOptions& o)
+}  // namespace
+
+void validate(const SmoothingOptions& o)
 {
     require(is_known(o.method), "method", fmt::format("is not a SmoothingMethod (got {})", int(o.method)));
     require(is_known(o.update), "update", fmt::format("is not a SmoothingUpdate (got {})", int(o.update)));
     require(is_known(o.step_control), "step_control",
             fmt::format("is not a StepControl (got {})", int(o.step_control)));
-    require(o.iterations >= 0, "iterations", fmt::format("must be >= 0 (got {})", o.iterations));
+    require(o.iterations >= 0 && o.iterations <= kMaxIterations, "iterations",
+            fmt::format("{} is outside 0..{}", o.iterations, kMaxIterations));
     const bool flow =
         o.method == SmoothingMethod::MeanCurvatureFlow || o.method == SmoothingMethod::ModifiedMeanCurvatureFlow;
     require(!o.implicit || o.method == SmoothingMethod::MeanCurvatureFlow, "implicit",
@@ -58,6 +61,8 @@ void validate_options(const SmoothingOptions& o)
                 fmt::format("must be in (0, {}] (got {})", max_step, o.step));
     }
 }
+
+namespace {
 
 // Umbrella vector of vertex i from the positions p.
 Vec3 umbrella(const Adjacency& adj, const std::vector<Vec3>& p, std::size_t i)
@@ -301,7 +306,7 @@ bool all_finite(const std::vector<Vec3>& p)
 
 SmoothingReport smooth(Mesh& mesh, const SmoothingOptions& options)
 {
-    validate_options(options);
+    validate(options);
     validate(mesh, "smooth");
     SmoothingReport report;
     if (options.callback) options.callback(0, mesh);

@@ -15,10 +15,17 @@ ProfileOptions record_profile_defaults()
     return p;
 }
 
+void check_recording(int every, bool has_output)
+{
+    if (every < 0 || every > kMaxRecordEvery)
+        throw OptionError("record.every",
+                          fmt::format("{} is outside 1..{} (0: first and last only)", every, kMaxRecordEvery));
+    if (every > 0 && !has_output) throw OptionError("record.every", "needs {record.output}: where to write the record");
+}
+
 SmoothingRecord smooth_and_record(Mesh& mesh, const SmoothingOptions& options, const RecordOptions& record)
 {
-    if (record.every < 0)
-        throw InvalidArgumentError(fmt::format("smoothing record: every must be >= 0 (got {})", record.every));
+    check_recording(record.every, true);
     const int every = record.every > 0 ? record.every : std::max(1, options.iterations);
     const int last = options.iterations;
     SmoothingRecord r;

@@ -1,6 +1,7 @@
 #include "batch_list.h"
 
 #include "meshdiff/error.h"
+#include "meshdiff/options.h"
 
 #include <fmt/format.h>
 
@@ -83,8 +84,6 @@ std::vector<Pair> read_pairs(const std::string& path)
     return pairs;
 }
 
-constexpr std::size_t kMaxShards = 1000000;
-
 namespace {
 
 std::pair<std::size_t, std::size_t> parse_numeric_shard(const std::string& s)
@@ -103,8 +102,7 @@ std::pair<std::size_t, std::size_t> parse_numeric_shard(const std::string& s)
     } catch (const std::exception&) {
         throw InvalidArgumentError(fmt::format("--shard: '{}' is not I/N (0 <= I < N)", s));
     }
-    if (n == 0 || i >= n || n > kMaxShards)
-        throw InvalidArgumentError(fmt::format("--shard: '{}' needs 0 <= I < N <= {}", s, kMaxShards));
+    validate_shard(i, n, s);
     return {i, n};
 }
 

@@ -5,6 +5,7 @@
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
+#include "meshdiff/options.h"
 #include "meshdiff/output_file.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/outputs.h"
@@ -167,6 +168,7 @@ int run_batch(const BatchArgs& a)
     set_threads(a.threads);
     install_interrupt_handlers();
     refuse_overwriting_inputs("--out", a.out, {a.pairs});
+    validate_pair_timeout(a.pair_timeout);
     if (std::filesystem::is_directory(a.pairs))
         throw IoError(fmt::format("{}: is a directory, not a pair list", a.pairs));
     const auto [shard, n_shards] = parse_shard(a.shard);
@@ -273,7 +275,6 @@ void add_batch_command(CLI::App& app, Action& action)
     sub->add_option("--pair-timeout", args->pair_timeout,
                     "seconds one pair may take before it is stopped and recorded as an error (exit_code 124); 0: "
                     "no limit")
-        ->check(in_range(0, 1e7))
         ->capture_default_str();
     sub->add_option("--maps-dir", args->maps_dir,
                     "write both distance maps of every pair into this folder: ID_original.ply and ID_processed.ply "

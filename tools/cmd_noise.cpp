@@ -1,9 +1,12 @@
 #include "commands.h"
 #include "meshdiff/io.h"
 #include "meshdiff/noise.h"
+#include "meshdiff/options.h"
 #include "meshdiff/output_file.h"
 #include "meshdiff/report/text.h"
 #include "options.h"
+
+#include <fmt/format.h>
 
 #include <iostream>
 #include <memory>
@@ -20,7 +23,8 @@ struct NoiseArgs
     std::string unit = "edge";
     std::string direction = "normal";
     std::string distribution = "uniform";
-    NoiseOptions options;  // amplitude, seed and move_boundary bound to the options below
+    NoiseOptions options;  // amplitude and move_boundary bound to the options below
+    Given seed;
 };
 
 int run_noise(const NoiseArgs& a)
@@ -30,6 +34,7 @@ int run_noise(const NoiseArgs& a)
     options.unit = parse_enum<NoiseUnit>(a.unit);
     options.direction = parse_enum<NoiseDirection>(a.direction);
     options.distribution = parse_enum<NoiseDistribution>(a.distribution);
+    if (a.seed.given()) options.seed = parse_whole_number("noise.seed", a.seed.text);
     LoadedMesh loaded = read_mesh(a.in);
     const NoiseReport r = add_noise(loaded.mesh, options);
     write_mesh(a.out, loaded.mesh, {}, {noise_comment(a.in, options, r)});
@@ -61,9 +66,9 @@ void add_noise_command(CLI::App& app, Action& action)
     sub->add_option("--distribution", args->distribution, "uniform | gaussian")
         ->check(CLI::IsMember(enum_names<NoiseDistribution>()))
         ->capture_default_str();
-    sub->add_option("--seed", o.seed, "random seed (std::mt19937_64)")
-        ->check(in_range(0, 1.8e19, true))
-        ->capture_default_str();
+    args->seed.option = sub->add_option("--seed", args->seed.text, "random seed (std::mt19937_64)")
+                            ->type_name("UINT")
+                            ->default_str(fmt::format("{}", NoiseOptions{}.seed));
     sub->add_flag("--move-boundary", o.move_boundary, "also move boundary and non-manifold-edge vertices");
     sub->callback([args, &action] { action = [args] { return run_noise(*args); }; });
 }

@@ -1,6 +1,7 @@
 #include "commands.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
+#include "meshdiff/options.h"
 #include "meshdiff/output_file.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/outputs.h"
@@ -32,19 +33,18 @@ struct SmoothArgs
     std::string json;          // profile recording target ("-" for stdout)
     ProfileCliOptions profile;
     Given threads;
-    bool no_distance = false;          // do not record the surface distance to the input
-    std::size_t distance_samples = 0;  // samples per direction of the recorded distance; 0: compare's default
+    bool no_distance = false;  // do not record the surface distance to the input
+    Given distance_samples;    // samples per direction of the recorded distance; not given: compare's default
 };
 
 int run_smooth(const SmoothArgs& a)
 {
     SmoothingOptions options = a.options;
-    options.method = parse_enum<SmoothingMethod>(a.method);
-    options.update = parse_enum<SmoothingUpdate>(a.update);
-    options.step_control = parse_enum<StepControl>(a.step_control);
-    if (a.profile_every < 0)
-        throw InvalidArgumentError(fmt::format("--profile-every must be >= 1 (got {})", a.profile_every));
-    if (a.profile_every > 0 && a.json.empty()) throw InvalidArgumentError("--profile-every needs --json FILE");
+    options.method = parse_enum_option<SmoothingMethod>("smooth.method", a.method);
+    options.update = parse_enum_option<SmoothingUpdate>("smooth.update", a.update);
+    options.step_control = parse_enum_option<StepControl>("smooth.step_control", a.step_control);
+    validate(options);
+    check_recording(a.profile_every, !a.json.empty());
     refuse_overwriting_inputs("OUT", a.out, {a.in});
     refuse_overwriting_inputs("--json", a.json, {a.in, a.out});
     const bool record = !a.json.empty();
@@ -54,7 +54,14 @@ int run_smooth(const SmoothArgs& a)
         record_options.every = a.profile_every;
         record_options.profile = to_profile_options(a.profile, record_profile_defaults());
         record_options.distance = !a.no_distance;
-        if (a.distance_samples > 0) record_options.sampling.samples = a.distance_samples;
+        if (a.distance_samples.given()) {
+            record_options.sampling.samples = parse_whole_number("record.sampling.samples", a.distance_samples.text);
+            try {
+                validate(record_options.sampling);
+            } catch (const OptionError& e) {
+                throw OptionError("record.sampling.samples", e.problem());
+            }
+        }
     }
     LoadedMesh loaded = read_mesh(a.in);
     SmoothingRecord recording;
@@ -90,7 +97,6 @@ void add_smooth_command(CLI::App& app, Action& action)
         ->capture_default_str();
     SmoothingOptions& o = args->options;
     sub->add_option("--iterations", o.iterations, "iterations (a Taubin iteration is a lambda and a mu step)")
-        ->check(in_range(0, 1e6, true))
         ->capture_default_str();
     sub->add_option("--lambda", o.lambda, "Laplacian / Taubin step, in (0, 1]")->capture_default_str();
     sub->add_option("--mu", o.mu, "Taubin negative step, < -lambda")->capture_default_str();
@@ -113,13 +119,14 @@ void add_smooth_command(CLI::App& app, Action& action)
         ->capture_default_str();
     sub->add_flag("--no-distance", args->no_distance,
                   "do not record the surface distance to the input beside each recorded profile");
-    sub->add_option("--distance-samples", args->distance_samples,
-                    "samples per direction of the recorded surface distance (default: 10 x the face count, as "
-                    "compare)")
-        ->check(in_range(1, double(kMaxSamples), true));
+    args->distance_samples.option =
+        sub->add_option("--distance-samples", args->distance_samples.text,
+                        "samples per direction of the recorded surface distance (default: 10 x the face count, as "
+                        "compare)")
+            ->type_name("UINT");
     sub->add_option("--profile-every", args->profile_every,
                     "record the roughness profile at iteration 0 and every K iterations (and the last); needs --json")
-        ->check(in_range(1, 1e6, true));
+        ->capture_default_str();
     sub->add_option("--json", args->json,
                     "write the recorded profiles (schema meshdiff.smoothing/1) to FILE, or '-' for stdout; "
                     "without --profile-every only the first and last iterations are recorded");

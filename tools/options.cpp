@@ -50,6 +50,36 @@ std::string cli_spelling(const std::string& field)
         {"outputs.vertex_data", "--vertex-data"},
         {"outputs.exact", "--exact"},
         {"outputs.exact_property", "--exact-property"},
+        {"batch.shard", "--shard"},
+        {"batch.pair_timeout", "--pair-timeout"},
+        {"generate.kind", "SHAPE"},
+        {"generate.subdivisions", "--subdivisions"},
+        {"generate.frequency", "--frequency"},
+        {"generate.radius", "--radius"},
+        {"generate.noise", "--noise"},
+        {"generate.axes", "--axes"},
+        {"generate.major", "--major"},
+        {"generate.minor", "--minor"},
+        {"generate.n", "--n"},
+        {"generate.vertices", "--vertices"},
+        {"generate.amplitude", "--amplitude"},
+        {"generate.spacing", "--spacing"},
+        {"generate.seed", "--seed"},
+        {"smooth.method", "--method"},
+        {"smooth.update", "--update"},
+        {"smooth.step_control", "--step-control"},
+        {"smooth.iterations", "--iterations"},
+        {"smooth.lambda", "--lambda"},
+        {"smooth.mu", "--mu"},
+        {"smooth.step", "--step"},
+        {"smooth.implicit", "--implicit"},
+        {"smooth.damping", "--damping"},
+        {"smooth.epsilon", "--epsilon"},
+        {"smooth.stability", "--stability"},
+        {"record.every", "--profile-every"},
+        {"record.output", "--json"},
+        {"record.sampling.samples", "--distance-samples"},
+        {"noise.seed", "--seed"},
     };
     const auto it = spelling.find(field);
     return it == spelling.end() ? std::string() : it->second;
@@ -232,36 +262,6 @@ CompareOutputs to_compare_outputs(const CompareOutputCliOptions& o)
         out.color_range = std::pair{parse_number("outputs.color_range", o.color_range.at(0)),
                                     parse_number("outputs.color_range", o.color_range.at(1))};
     return out;
-}
-
-CLI::Validator in_range(double lo, double hi, bool integer)
-{
-    const std::string range = fmt::format("{} {} to {}", integer ? "a whole number from" : "a number from", lo, hi);
-    return CLI::Validator(
-        [lo, hi, integer, range](std::string& text) -> std::string {
-            const char* end = nullptr;
-            char* e = nullptr;
-            const double v = text.empty() ? 0.0 : std::strtod(text.c_str(), &e);
-            end = e;
-            if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v) || v < lo || v > hi ||
-                (integer && v != std::floor(v)))
-                return fmt::format("'{}' is not {}", text, range);
-            return std::string();
-        },
-        range);
-}
-
-CLI::Validator positive()
-{
-    return CLI::Validator(
-        [](std::string& text) -> std::string {
-            char* end = nullptr;
-            const double v = text.empty() ? 0.0 : std::strtod(text.c_str(), &end);
-            if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v) || !(v > 0.0))
-                return fmt::format("'{}' is not a finite number > 0", text);
-            return std::string();
-        },
-        "a number > 0");
 }
 
 void add_threads_option(CLI::App* sub, Given& threads)

@@ -76,14 +76,6 @@ void add_compare_output_options(CLI::App* sub, CompareOutputCliOptions& o);
 //! \throw OptionError for a colour range that is not two numbers.
 CompareOutputs to_compare_outputs(const CompareOutputCliOptions& o);
 
-//! A validator for a numeric option of generate, smooth, noise and batch's
-//! own options: the value must parse as a finite number in [lo, hi] (and be
-//! a whole number if \p integer), the bounds being the library's constants;
-//! the message states the range.
-CLI::Validator in_range(double lo, double hi, bool integer = false);
-//! A validator: a finite number > 0.
-CLI::Validator positive();
-
 //! --threads, kept as given (0: all cores).
 void add_threads_option(CLI::App* sub, Given& threads);
 

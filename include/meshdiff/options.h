@@ -135,4 +135,15 @@ constexpr int kMaxThreads = 1024;
 //! \throw OptionError("threads") unless 0 <= \p threads <= kMaxThreads.
 void validate_threads(long long threads);
 
+//! The batch front end's own options (`meshdiff batch`): the most shards a
+//! pair list is split into, and the longest time one pair may take.
+constexpr std::size_t kMaxShards = 1'000'000;
+constexpr double kMaxPairTimeout = 1e7;  //!< seconds (115 days)
+
+//! \throw OptionError("batch.shard") unless 0 <= \p index < \p count <= kMaxShards.
+void validate_shard(std::size_t index, std::size_t count, const std::string& text);
+
+//! \throw OptionError("batch.pair_timeout") unless 0 <= \p seconds <= kMaxPairTimeout (0: none).
+void validate_pair_timeout(double seconds);
+
 }  // namespace meshdiff

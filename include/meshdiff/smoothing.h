@@ -106,6 +106,9 @@ enum class StepControl
 };
 
 //! Options of smooth(). Only the fields of the chosen method are validated.
+//! The most iterations one smoothing takes.
+constexpr int kMaxIterations = 1'000'000;
+
 struct SmoothingOptions
 {
     SmoothingMethod method = SmoothingMethod::Laplacian;
@@ -145,7 +148,11 @@ struct SmoothingReport
 
 //! Smooths \p mesh in place (positions only; faces are untouched) with the
 //! method, update scheme and parameters of \p options.
-//! \throw InvalidArgumentError naming the field if an option of the chosen
+//! The rules of \p options for its method (the ranges in the field comments).
+//! \throw OptionError naming the field ("smooth.<field>").
+void validate(const SmoothingOptions& options);
+
+//! \throw OptionError naming the field ("smooth.<field>") if an option of the chosen
 //!        method is out of range.
 //! \throw InvalidMeshError if the mesh fails meshdiff::validate().
 //! \throw SolverError if an iteration produces a non-finite coordinate (an

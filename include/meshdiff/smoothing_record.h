@@ -36,6 +36,14 @@ struct RecordOptions
     SamplingOptions sampling{};
 };
 
+//! The largest RecordOptions::every.
+constexpr int kMaxRecordEvery = 1'000'000;
+
+//! The rules of a recording: \p every in 0..kMaxRecordEvery, and a record
+//! every K iterations only when it is written somewhere (\p has_output).
+//! \throw OptionError("record.every").
+void check_recording(int every, bool has_output);
+
 //! The record of smooth_and_record(), one entry per recorded iteration.
 struct SmoothingRecord
 {

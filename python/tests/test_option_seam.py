@@ -451,3 +451,20 @@ def test_regression_limits(meshes, cli, tmp_path):
     with pytest.raises(ValueError, match="radii"):
         meshdiff.profile_file(a, radii=[5000.0])
     assert meshdiff.LIMITS["levels"] == 200 and meshdiff.LIMITS["radius"] == 1000.0
+
+
+def test_tools_hold_no_limit_or_rule():
+    """Issue 26: the command line only maps names. No numeric limit is defined in tools/ (the
+    library's constants are used by name), and no CLI11 range check is left there; only the
+    exit-code constants are numbers."""
+    tools = pathlib.Path(__file__).resolve().parents[2] / "tools"
+    # An exit code (as coreutils' timeout), and how the terminal display and batch-summary's text
+    # look (no option sets them; they change no result): not limits or defaults of an option.
+    allowed = {"kPairTimeout", "kShown", "kTerminalDelay", "kRedraw"}
+    for path in sorted(tools.glob("*.[ch]*")):
+        text = path.read_text()
+        for name in re.findall(r"constexpr\s+[\w:<>]+\s+(\w+)\s*(?:=\s*|\{)[\d.]", text):
+            assert name in allowed, f"{path.name}: constexpr {name} is a number defined in tools/"
+        for check in re.findall(r"->check\(([^)]*)\)", text):
+            assert check.startswith("CLI::IsMember(enum_names<"), f"{path.name}: ->check({check}) in tools/"
+        assert "in_range(" not in text and "1.8e19" not in text, path.name
