@@ -13,6 +13,7 @@
 #include "meshdiff/io.h"
 #include "meshdiff/metric_levels.h"
 #include "meshdiff/options.h"
+#include "meshdiff/output_file.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/outputs.h"
 #include "meshdiff/roughness.h"
@@ -214,6 +215,10 @@ std::vector<Vec3> points_from(const py::handle& obj, const char* name, bool allo
             if (!std::isfinite(v))
                 bad(std::string(name) + ": coordinate " + std::to_string(c) + " of row " + std::to_string(i) + " is " +
                     (std::isnan(v) ? "NaN" : "infinite"));
+            // The limit of the file readers (mesh.h): beyond it products of coordinates overflow.
+            if (std::abs(v) > max_coordinate)
+                bad(fmt::format("{}: coordinate {} of row {} is {}, beyond meshdiff's limit of +-{}", name, c, i, v,
+                                max_coordinate));
         }
         p[i] = Vec3(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
     }
@@ -392,11 +397,14 @@ std::optional<std::string> text(Obj v, const char* field)
 std::string output_path(Obj v, const char* field)
 {
     if (v.is_none()) return {};
+    std::string path;
     try {
-        return py::module_::import("os").attr("fsdecode")(v).cast<std::string>();
+        path = py::module_::import("os").attr("fsdecode")(v).cast<std::string>();
     } catch (const py::error_already_set&) {
         type_error(field, "a path (str, bytes or os.PathLike) or None", v);
     }
+    if (path.empty()) throw OptionError(field, "an empty path (None: no output)");
+    return path;
 }
 
 template <class E>
@@ -695,9 +703,11 @@ py::dict run_compare(const CompareKeywords& a, const std::function<std::pair<Loa
         py::gil_scoped_release release;
         const auto [original, processed] = load();
         const Comparison c = compare_meshes(original, processed, options);
+        StagedOutputs staged;  // every output file, or none
         write_outputs(c, original, processed, outputs, original_name, processed_name);
         j = comparison_json(c);
         if (!outputs.json.empty()) write_json_file(outputs.json, j);
+        staged.commit();
     }
     return to_python(j);
 }
@@ -747,8 +757,10 @@ py::dict run_profile(const ProfileKeywords& a, const std::function<LoadedMesh()>
     {
         ThreadScope scope(a.threads);
         py::gil_scoped_release release;
+        StagedOutputs staged;  // every output file, or none
         const ProfileReport report = profile_report(load(), r);
         if (!r.json.empty()) write_json_file(r.json, report.json);
+        staged.commit();
         j = report.json;
     }
     return to_python(j);

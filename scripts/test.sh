@@ -6,7 +6,8 @@
 #  2. the Python module: pytest (python/tests) with the interpreter CMake chose,
 #     and an import of the module installed by cmake --install;
 #  3. a Debug build with AddressSanitizer + UndefinedBehaviorSanitizer, and ctest;
-#  4. the fuzzing of the readers (scripts/fuzz.sh: libFuzzer with clang, ASan + UBSan, 45 s per format);
+#  4. the fuzzing of the readers (scripts/fuzz.sh: libFuzzer with clang, ASan + UBSan, 45 s per format) and of
+#     the Python array path (scripts/fuzz_arrays.py, 45 s: no crash, no hang, only ValueError/TypeError);
 #  5. the clang-format check of include/ src/ tools/ tests/ bench/ examples/ python/.
 # Usage: scripts/test.sh            (from anywhere; builds into build/ and build-asan/)
 set -euo pipefail
@@ -61,6 +62,9 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
 
 echo "== fuzz the mesh readers (libFuzzer, ASan + UBSan, 45 s per format)"
 scripts/fuzz.sh "${FUZZ_SECONDS:-45}"
+
+echo "== fuzz the Python array path (${FUZZ_SECONDS:-45} s; the trials that ever failed first)"
+MESHDIFF_BUILD_DIR="$PWD/build" "$py" scripts/fuzz_arrays.py "${FUZZ_SECONDS:-45}"
 
 echo "== clang-format"
 find include src tools tests bench examples python \( -name '*.h' -o -name '*.cpp' \) -print0 |

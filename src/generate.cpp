@@ -154,6 +154,36 @@ GeneratedShape generate_shape(const GenerateOptions& o)
             break;
         }
     }
+    // A surface meshdiff would not read back (non-finite or beyond the readers'
+    // limit), or an exact H that is not a number, is refused: name the option
+    // that sizes the kind.
+    const char* size_field = "generate.radius";
+    switch (o.kind) {
+        case ShapeKind::Ellipsoid:
+            size_field = "generate.axes";
+            break;
+        case ShapeKind::Torus:
+        case ShapeKind::TorusIrregular:
+            size_field = "generate.major";
+            break;
+        case ShapeKind::Heightfield:
+        case ShapeKind::HeightfieldIrregular:
+            size_field = "generate.amplitude";
+            break;
+        case ShapeKind::Plane:
+            size_field = "generate.spacing";
+            break;
+        default:
+            break;
+    }
+    for (std::size_t i = 0; i < g.shape.mesh.n_vertices(); ++i) {
+        const Vec3& p = g.shape.mesh.points[i];
+        if (!p.allFinite() || p.cwiseAbs().maxCoeff() > max_coordinate || !std::isfinite(g.shape.exact_H[i]))
+            throw OptionError(size_field,
+                              fmt::format("makes vertex {} ({}, {}, {}; exact H {}) non-finite or beyond meshdiff's "
+                                          "limit of +-{}: meshdiff could not read the surface back",
+                                          i, p.x(), p.y(), p.z(), g.shape.exact_H[i], max_coordinate));
+    }
     return g;
 }
 

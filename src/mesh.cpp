@@ -19,10 +19,16 @@ void validate(const Mesh& mesh, const std::string& what)
             if (v < 0 || v >= n)
                 throw InvalidMeshError(
                     fmt::format("{}: face {} refers to vertex {}, but there are {} vertices", what, f, v, n));
-    for (std::size_t i = 0; i < mesh.n_vertices(); ++i)
-        if (!mesh.points[i].allFinite())
-            throw InvalidMeshError(fmt::format("{}: vertex {} has a non-finite coordinate ({}, {}, {})", what, i,
-                                               mesh.points[i].x(), mesh.points[i].y(), mesh.points[i].z()));
+    for (std::size_t i = 0; i < mesh.n_vertices(); ++i) {
+        const Vec3& p = mesh.points[i];
+        if (!p.allFinite())
+            throw InvalidMeshError(
+                fmt::format("{}: vertex {} has a non-finite coordinate ({}, {}, {})", what, i, p.x(), p.y(), p.z()));
+        if (p.cwiseAbs().maxCoeff() > max_coordinate)
+            throw InvalidMeshError(
+                fmt::format("{}: vertex {} has a coordinate beyond meshdiff's limit of +-{} ({}, {}, {})", what, i,
+                            max_coordinate, p.x(), p.y(), p.z()));
+    }
 }
 
 BoundingBox bounding_box(const Mesh& mesh)

@@ -18,7 +18,7 @@ namespace {
 
 void require(bool ok, const char* field, const std::string& what)
 {
-    if (!ok) throw InvalidArgumentError(fmt::format("noise: {} {}", field, what));
+    if (!ok) throw OptionError(std::string("noise.") + field, what);
 }
 
 void validate_options(const NoiseOptions& o)
@@ -97,6 +97,11 @@ NoiseReport add_noise(Mesh& mesh, const NoiseOptions& options)
             report.max_displacement = std::max(report.max_displacement, std::abs(t));
         }
     }
+    // A result meshdiff would not read back (non-finite, or beyond the readers' limit) is refused.
+    for (std::size_t i = 0; i < mesh.n_vertices(); ++i)
+        require(mesh.points[i].allFinite() && mesh.points[i].cwiseAbs().maxCoeff() <= max_coordinate, "amplitude",
+                fmt::format("moves vertex {} to ({}, {}, {}), beyond meshdiff's limit of +-{} (no output is written)",
+                            i, mesh.points[i].x(), mesh.points[i].y(), mesh.points[i].z(), max_coordinate));
     return report;
 }
 

@@ -20,7 +20,46 @@ std::filesystem::path temporary_for(const std::filesystem::path& path)
     return path.has_parent_path() ? path.parent_path() / name : std::filesystem::path(name);
 }
 
+thread_local StagedOutputs* current_stage = nullptr;
+
+void rename_onto(const std::filesystem::path& tmp, const std::filesystem::path& path)
+{
+    std::error_code ec, ignored;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::filesystem::remove(tmp, ignored);
+        throw IoError(fmt::format("{}: cannot write ({})", path.string(), ec.message()));
+    }
+}
+
 }  // namespace
+
+StagedOutputs::StagedOutputs() : previous_(current_stage)
+{
+    current_stage = this;
+}
+
+StagedOutputs::~StagedOutputs()
+{
+    current_stage = previous_;
+    std::error_code ignored;
+    for (const auto& [tmp, target] : staged_) std::filesystem::remove(tmp, ignored);
+}
+
+void StagedOutputs::commit()
+{
+    auto staged = std::move(staged_);
+    staged_.clear();
+    for (std::size_t i = 0; i < staged.size(); ++i) {
+        try {
+            rename_onto(staged[i].first, staged[i].second);
+        } catch (...) {
+            std::error_code ignored;
+            for (std::size_t j = i + 1; j < staged.size(); ++j) std::filesystem::remove(staged[j].first, ignored);
+            throw;
+        }
+    }
+}
 
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(const std::filesystem::path& temporary)>& write)
@@ -44,12 +83,11 @@ void write_atomically(const std::filesystem::path& path,
         std::filesystem::remove(tmp, ignored);
         throw;
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp, ignored);
-        throw IoError(fmt::format("{}: cannot write ({})", path.string(), ec.message()));
+    if (current_stage) {
+        current_stage->staged_.emplace_back(tmp, path);
+        return;
     }
+    rename_onto(tmp, path);
 }
 
 bool same_file(const std::filesystem::path& a, const std::filesystem::path& b)

@@ -91,6 +91,14 @@ SamplePlan plan_samples(const Mesh& mesh, const SamplingOptions& options)
     double area = 0.0;
     for (std::size_t f = 0; f < mesh.n_faces(); ++f)
         if (!degenerate[f]) area += face_area[f] = 0.5 * face_cross(mesh, f).norm();
+    // Coordinates near 1e80 make the squared norms overflow: the area is inf,
+    // the face density 0, inf x 0 a NaN count, and the lattice order of a NaN
+    // cast to an integer a loop without end. validate() refuses such meshes
+    // (max_coordinate); this keeps the plan finite whatever the caller passes.
+    if (!std::isfinite(area))
+        throw InvalidMeshError(
+            fmt::format("sample_surface: the surface area is not finite (coordinates beyond meshdiff's limit of +-{}?)",
+                        max_coordinate));
 
     // Counts are decided sequentially (carry-over); SampleMaker then fills
     // positions in parallel into disjoint ranges: the result does not depend
@@ -118,6 +126,10 @@ SamplePlan plan_samples(const Mesh& mesh, const SamplingOptions& options)
         double length = 0.0;
         for (std::size_t i = 0; i < edges.size(); ++i)
             length += len[i] = (mesh.points[edges[i].b] - mesh.points[edges[i].a]).norm();
+        if (!std::isfinite(length))
+            throw InvalidMeshError(fmt::format(
+                "sample_surface: the edge length is not finite (coordinates beyond meshdiff's limit of +-{}?)",
+                max_coordinate));
         // Never more than the remaining budget (Metro would overshoot here).
         const double cap = length > 0.0 ? remaining / length : 0.0;
         s.edge_density = options.faces && area > 0.0 ? std::min(std::sqrt(remaining / area), cap) : cap;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace meshdiff {
 
@@ -29,8 +30,10 @@ VertexMap distance_map(const Comparison& c, MapSide side, std::optional<std::pai
         throw InvalidArgumentError("distance_map: the comparison was made without vertex distances");
     double lo = 0.0, hi = 0.0;
     if (color_range) {
-        if (!(color_range->first < color_range->second))
-            throw InvalidArgumentError("distance_map: the colour range needs MIN < MAX");
+        // A degenerate range (a mesh compared with itself: [0, 0]) is a valid range: every colour its low end.
+        if (!(std::isfinite(color_range->first) && std::isfinite(color_range->second) &&
+              color_range->first <= color_range->second))
+            throw InvalidArgumentError("distance_map: the colour range needs finite MIN <= MAX");
         lo = color_range->first;
         hi = color_range->second;
     } else {

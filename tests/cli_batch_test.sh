@@ -27,7 +27,7 @@ grep '"id":"fast"' "$tmp/r1.jsonl" | grep -q '"status":"ok"' && pass || fail "th
 batch_pid=$!
 child=""
 for _ in $(seq 100); do
-    child=$(pgrep -f "compare $tmp/slow.ply" | head -1)
+    child=$(pgrep -f "compare .*-- $tmp/slow.ply" | head -1)
     [ -n "$child" ] && break
     sleep 0.05
 done

@@ -178,14 +178,31 @@ TEST(DistanceMap, AGivenRangeColoursAndIsStatedInAComment)
     EXPECT_NE(m.comments[1].find("[0, 0.25]"), std::string::npos) << m.comments[1];
 }
 
-TEST(DistanceMap, ThrowsWithoutVertexDistancesOrForMinNotBelowMax)
+TEST(DistanceMap, ThrowsWithoutVertexDistancesOrForMinAboveMax)
 {
     CompareOptions o;
     o.roughness = false;
     o.sampling.samples = 5000;
     EXPECT_THROW(distance_map(compare_meshes(sphere(), ellipsoid(), o)), InvalidArgumentError);
-    EXPECT_THROW(distance_map(distance_comparison(), std::make_pair(0.1, 0.1)), InvalidArgumentError);
     EXPECT_THROW(distance_map(distance_comparison(), std::make_pair(0.2, 0.1)), InvalidArgumentError);
+    EXPECT_THROW(distance_map(distance_comparison(), std::make_pair(0.0, HUGE_VAL)), InvalidArgumentError);
+}
+
+// Issue 33 (4): a mesh compared with itself has the range [0, 0]; it is a
+// valid range, every vertex coloured as its low end.
+TEST(DistanceMap, ADegenerateRangeIsValid)
+{
+    CompareOptions o;
+    o.roughness = false;
+    o.sampling.samples = 5000;
+    o.vertex_distances = true;
+    const Comparison c = compare_meshes(sphere(), sphere(), o);
+    const auto range = distance_map_range(c);
+    EXPECT_EQ(range, std::make_pair(0.0, 0.0));
+    const VertexMap m = distance_map(c, MapSide::Processed, range);
+    ASSERT_FALSE(m.colors.empty());
+    for (const auto& rgb : m.colors) EXPECT_EQ(rgb, m.colors.front());
+    EXPECT_NO_THROW(distance_map(distance_comparison(), std::make_pair(0.1, 0.1)));
 }
 
 TEST(DistanceMap, SameVertexDistancesWithoutTheSurfaceDistance)

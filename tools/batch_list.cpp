@@ -47,6 +47,15 @@ std::vector<std::string> split_csv(const std::string& line)
 
 std::vector<Pair> read_pairs(const std::string& path)
 {
+    // Only a regular file is read as a list (a directory, a device such as
+    // /dev/zero or a FIFO is refused before it is opened: no read without end, no block).
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (ec || !std::filesystem::exists(status))
+        throw IoError(fmt::format("{}: cannot open the pair list: {}", path, ec ? ec.message() : "no such file"));
+    if (std::filesystem::is_directory(status)) throw IoError(fmt::format("{}: is a directory, not a pair list", path));
+    if (!std::filesystem::is_regular_file(status))
+        throw IoError(fmt::format("{}: is not a regular file (a device, FIFO or socket), not a pair list", path));
     std::ifstream in(path);
     if (!in) throw IoError(fmt::format("{}: cannot open the pair list", path));
     const auto base = std::filesystem::path(path).parent_path();
@@ -62,9 +71,11 @@ std::vector<Pair> read_pairs(const std::string& path)
         ++lineno;
         // A UTF-8 byte-order mark (spreadsheet exports) is not part of the first field.
         if (lineno == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+        // A comment starts with '#' as written; a quoted "#x.ply" is a file name.
+        const auto first = line.find_first_not_of(" \t");
+        if (first != std::string::npos && line[first] == '#') continue;
         const auto fields = split_csv(line);
         if (fields.size() == 1 && fields[0].empty()) continue;
-        if (!fields[0].empty() && fields[0][0] == '#') continue;
         if (lineno == 1 && fields[0] == "original") continue;  // header
         if (fields.size() < 2 || fields[0].empty() || fields[1].empty())
             throw InvalidArgumentError(
@@ -81,6 +92,7 @@ std::vector<Pair> read_pairs(const std::string& path)
                 fmt::format("{}:{}: the id '{}' is already used on line {}", path, lineno, p.id, it->second));
         pairs.push_back(std::move(p));
     }
+    if (in.bad()) throw IoError(fmt::format("{}: read failed", path));
     return pairs;
 }
 

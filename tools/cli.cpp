@@ -15,6 +15,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <set>
 
 namespace meshdiff::cli {
 
@@ -39,7 +40,8 @@ Failure failure_of(const std::exception& e)
     if (dynamic_cast<const Cancelled*>(&e))
         return {kInterrupted, fmt::format("interrupted by {}: stopped, no output file written",
                                           interrupt_signal() == SIGTERM ? "SIGTERM" : "SIGINT")};
-    if (dynamic_cast<const std::bad_alloc*>(&e)) return {kInternal, "out of memory"};
+    if (dynamic_cast<const std::bad_alloc*>(&e))
+        return {kOutOfMemory, "out of memory: the meshes or the options ask for more than this machine has"};
     return {kInternal, std::string("internal error: ") + e.what()};
 }
 
@@ -55,7 +57,7 @@ int run(const std::vector<std::string>& raw_args)
         "meshdiff: how much a processed triangle mesh differs from its original, and at which scale.\n"
         "  meshdiff ORIGINAL PROCESSED [options]   (same as: meshdiff compare ...)\n"
         "Exit codes: 0 ok, 2 usage, 3 unreadable input or unwritable output, 4 invalid mesh,\n"
-        "5 numerical failure, 6 batch finished with failed pairs, 70 internal error,\n"
+        "5 numerical failure, 6 batch finished with failed pairs, 7 out of memory, 70 internal error,\n"
         "130 interrupted (Ctrl-C, SIGTERM).",
         "meshdiff"};
     app.set_version_flag("--version", std::string("meshdiff ") + MESHDIFF_VERSION);
@@ -86,6 +88,16 @@ int run(const std::vector<std::string>& raw_args)
         std::cerr << "meshdiff: " << f.message << "\n";
         return f.code;
     }
+    // An option given an empty value ('--json ""', '--threads ""') is refused, not taken as "none" or 0;
+    // only a list may be empty ('--levels ""': no ring level).
+    static const std::set<std::string> lists = {"--levels", "--radii", "--fscore"};
+    for (const CLI::App* sub : app.get_subcommands())
+        for (const CLI::Option* o : sub->get_options())
+            for (const std::string& value : o->results())
+                if (value.empty() && !lists.count(o->get_name())) {
+                    std::cerr << "meshdiff: " << o->get_name() << ": an empty value\n";
+                    return kUsage;
+                }
     if (!action) return kOk;
     try {
         return action();

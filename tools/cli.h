@@ -19,6 +19,7 @@ enum ExitCode : int
     kSolverError = 5,    //!< a numerical step failed
     kInternal = 70,      //!< a bug: please report
     kBatchFailures = 6,  //!< batch finished, but some pairs failed
+    kOutOfMemory = 7,    //!< memory ran out (a mesh or an option too large for this machine)
     kInterrupted = 130   //!< stopped by SIGINT (Ctrl-C) or SIGTERM; no output written (128 + SIGINT)
 };
 

@@ -18,6 +18,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -79,7 +80,7 @@ std::string map_prefix(const std::string& dir, const std::string& id)
 // PROCESSED --json -` with the batch's comparison options as they were given.
 std::vector<std::string> compare_args(const BatchArgs& a, const Pair& p)
 {
-    std::vector<std::string> args{"meshdiff", "compare", p.original, p.processed};
+    std::vector<std::string> args{"meshdiff", "compare"};
     static const std::set<std::string> batch_only = {"out",          "shard",    "quiet", "progress",
                                                      "pair-timeout", "maps-dir", "help"};
     for (const CLI::Option* o : a.app->get_options()) {
@@ -100,7 +101,8 @@ std::vector<std::string> compare_args(const BatchArgs& a, const Pair& p)
         }
     }
     if (!a.maps_dir.empty()) args.insert(args.end(), {"--distance-maps", map_prefix(a.maps_dir, p.id)});
-    args.insert(args.end(), {"--json", "-"});
+    // The files after "--": a name that starts with '-' stays a file name.
+    args.insert(args.end(), {"--json", "-", "--", p.original, p.processed});
     return args;
 }
 
@@ -132,33 +134,48 @@ nlohmann::json compare_pair(const BatchArgs& a, const std::string& self, const P
     return batch_error_json(p.id, p.original, p.processed, error, code);
 }
 
-// The ids recorded as ok in an existing output. A last line without its
-// newline is a record torn by a killed run: it is cut off the file (the pair
-// runs again). Any other line that is not a batch record is an error.
+// The ids recorded as ok in an existing output. Every whole line must be a
+// batch record, else the file is not one batch writes and it is refused
+// (exit 3) untouched. A last line without its newline that starts as a record
+// does is one torn by a killed run: once every other line is known to be a
+// record, it is cut off the file (the pair runs again). A target that is not
+// a regular file (a device such as /dev/null or /dev/full, a FIFO) has no
+// records and is never read.
 std::set<std::string> finished_ids(int fd, const std::string& path)
 {
+    struct stat st
+    {};
+    if (fstat(fd, &st) != 0) throw IoError(fmt::format("{}: cannot stat: {}", path, std::strerror(errno)));
+    if (!S_ISREG(st.st_mode)) return {};
     std::string text;
     char buf[1 << 16];
     ssize_t got = 0;
     while ((got = pread(fd, buf, sizeof buf, off_t(text.size()))) > 0) text.append(buf, std::size_t(got));
-    if (!text.empty() && text.back() != '\n') {
-        const auto keep = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
-        if (ftruncate(fd, off_t(keep)) != 0) throw IoError(fmt::format("{}: cannot cut a torn last line", path));
-        std::cerr << fmt::format("batch: {}: dropped a torn last line (a killed run's record)\n", path);
-        text.resize(keep);
-    }
+    if (got < 0) throw IoError(fmt::format("{}: read failed: {}", path, std::strerror(errno)));
+    const auto last_newline = text.rfind('\n');
+    const std::size_t whole = last_newline == std::string::npos ? 0 : last_newline + 1;
     std::set<std::string> done;
     std::size_t lineno = 0, start = 0;
-    while (start < text.size()) {
+    while (start < whole) {
         const auto end = text.find('\n', start);
         const std::string line = text.substr(start, end - start);
         start = end + 1;
         ++lineno;
         const auto j = nlohmann::json::parse(line, nullptr, false);
         if (j.is_discarded() || !j.is_object() || !j.contains("id") || !j["id"].is_string() || !j.contains("status"))
-            throw IoError(fmt::format("{}:{}: not a meshdiff batch record; --out must be a file that only batch writes",
-                                      path, lineno));
+            throw IoError(fmt::format(
+                "{}:{}: not a meshdiff batch record; --out must be a file that only batch writes (left as it was)",
+                path, lineno));
         if (j["status"] == "ok") done.insert(j["id"].get<std::string>());
+    }
+    if (whole < text.size()) {
+        // Every record batch writes starts with {" (an object with its keys in order).
+        if (text.compare(whole, 2, "{\"") != 0)
+            throw IoError(fmt::format(
+                "{}:{}: not a meshdiff batch record; --out must be a file that only batch writes (left as it was)",
+                path, lineno + 1));
+        if (ftruncate(fd, off_t(whole)) != 0) throw IoError(fmt::format("{}: cannot cut a torn last line", path));
+        std::cerr << fmt::format("batch: {}: dropped a torn last line (a killed run's record)\n", path);
     }
     return done;
 }
@@ -169,8 +186,6 @@ int run_batch(const BatchArgs& a)
     install_interrupt_handlers();
     refuse_overwriting_inputs("--out", a.out, {a.pairs});
     validate_pair_timeout(a.pair_timeout);
-    if (std::filesystem::is_directory(a.pairs))
-        throw IoError(fmt::format("{}: is a directory, not a pair list", a.pairs));
     const auto [shard, n_shards] = parse_shard(a.shard);
     {
         // Every option checked here, before any pair runs, as each pair's compare will check it.
@@ -186,6 +201,8 @@ int run_batch(const BatchArgs& a)
                                       ec ? ec.message() : "not a directory"));
     }
     const std::vector<Pair> pairs = read_pairs(a.pairs);
+    // No pair's mesh is the output either (exit 2, before --out is opened).
+    for (const Pair& p : pairs) refuse_overwriting_inputs("--out", a.out, {p.original, p.processed});
     const std::string self = self_executable();
 
     // One writer per output: a second batch on the same --out is refused.

@@ -3,6 +3,7 @@
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
+#include "meshdiff/output_file.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/outputs.h"
 #include "meshdiff/report/text.h"
@@ -54,9 +55,16 @@ int run_compare(const CompareArgs& a)
     const Comparison c = compare_meshes(original, processed, options);
     check_cancelled(&progress);  // once interrupted, nothing is written
     progress.finish();
+    // Every output file at once at the end, or none (a failing run leaves nothing behind).
+    StagedOutputs staged;
     const std::string legend = write_outputs(c, original, processed, outputs, a.original, a.processed);
-    if (!outputs.json.empty()) write_json_file(outputs.json, comparison_json(c));
-    if (outputs.json != "-") std::cout << comparison_text(c) << legend;
+    const nlohmann::json j = comparison_json(c);
+    if (!outputs.json.empty() && outputs.json != "-") write_json_file(outputs.json, j);
+    staged.commit();
+    if (outputs.json == "-")
+        write_json_file("-", j);
+    else
+        std::cout << comparison_text(c) << legend;
     return 0;
 }
 

@@ -3,6 +3,7 @@
 #include "meshdiff/error.h"
 #include "meshdiff/io.h"
 #include "meshdiff/options.h"
+#include "meshdiff/output_file.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/outputs.h"
 #include "meshdiff/report/text.h"
@@ -47,11 +48,17 @@ int run_profile(const ProfileArgs& a)
     const LoadedMesh loaded = read_mesh(a.mesh);
     progress.advance(1);
     check_cancelled(&progress);
+    // Every output file at once at the end, or none (a failing run leaves nothing behind).
+    StagedOutputs staged;
     const ProfileReport report = profile_report(loaded, r);
     check_cancelled(&progress);  // once interrupted, nothing is written
     progress.finish();
-    if (!r.json.empty()) write_json_file(r.json, report.json);
-    if (r.json != "-") std::cout << report.text;
+    if (!r.json.empty() && r.json != "-") write_json_file(r.json, report.json);
+    staged.commit();
+    if (r.json == "-")
+        write_json_file("-", report.json);
+    else
+        std::cout << report.text;
     return 0;
 }
 

@@ -69,8 +69,14 @@ int run_smooth(const SmoothArgs& a)
         recording = smooth_and_record(loaded.mesh, options, record_options);
     else
         recording.report = smooth(loaded.mesh, options);
+    // Both outputs at once at the end, or none (a failing run leaves nothing behind).
+    StagedOutputs staged;
     write_mesh(a.out, loaded.mesh);
-    if (record) write_json_file(a.json, smoothing_json(recording, options, record_options, a.in, a.out));
+    nlohmann::json j;
+    if (record) j = smoothing_json(recording, options, record_options, a.in, a.out);
+    if (record && a.json != "-") write_json_file(a.json, j);
+    staged.commit();
+    if (record && a.json == "-") write_json_file("-", j);
     if (a.json != "-") {
         std::cout << smoothing_text(a.out, options, loaded.mesh.n_vertices(), recording.report);
         if (const auto warning = smoothing_warning(a.in, options, recording.report)) std::cerr << *warning;

@@ -80,6 +80,10 @@ std::string cli_spelling(const std::string& field)
         {"record.output", "--json"},
         {"record.sampling.samples", "--distance-samples"},
         {"noise.seed", "--seed"},
+        {"noise.amplitude", "--amplitude"},
+        {"noise.unit", "--unit"},
+        {"noise.direction", "--direction"},
+        {"noise.distribution", "--distribution"},
     };
     const auto it = spelling.find(field);
     return it == spelling.end() ? std::string() : it->second;

@@ -14,14 +14,7 @@
 
 namespace meshdiff {
 
-//! The largest coordinate magnitude read_mesh() accepts (a larger one is an
-//! InvalidMeshError naming the vertex). Squared lengths alone would allow
-//! ~1e150, but face areas (the norm of a cross product) and the closest-point
-//! tests multiply four coordinate differences, which overflows near 1e76 (a
-//! sphere of radius 1e78 made the comparison loop forever). 1e30 keeps products
-//! of eight differences finite, and lies inside float range, so that the limit
-//! is the same for every format. Real meshes stay many decades below it.
-inline constexpr double max_coordinate = 1e30;
+//! max_coordinate (mesh.h): the largest coordinate magnitude read_mesh() accepts.
 
 //! What reading did to the file's contents before anything else.
 struct InputReport

@@ -34,8 +34,19 @@ struct Mesh
     std::size_t n_faces() const { return faces.size(); }
 };
 
+//! The largest coordinate magnitude meshdiff accepts, from a file (read_mesh())
+//! or from arrays (validate()): a larger one is an InvalidMeshError naming the
+//! vertex. Squared lengths alone would allow
+//! ~1e150, but face areas (the norm of a cross product) and the closest-point
+//! tests multiply four coordinate differences, which overflows near 1e76 (a
+//! sphere of radius 1e78 made the comparison loop forever). 1e30 keeps products
+//! of eight differences finite, and lies inside float range, so that the limit
+//! is the same for every format. Real meshes stay many decades below it.
+inline constexpr double max_coordinate = 1e30;
+
 //! Throws InvalidMeshError (with \p what in the message) if a face index is out
-//! of range, a coordinate is not finite, or the mesh has no face.
+//! of range, a coordinate is not finite or beyond max_coordinate, or the mesh
+//! has no face.
 void validate(const Mesh& mesh, const std::string& what = "mesh");
 
 //! Axis-aligned bounding box.

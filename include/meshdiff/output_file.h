@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace meshdiff {
@@ -24,6 +25,31 @@ namespace meshdiff {
 //! \throw IoError if the rename fails; whatever \p write throws.
 void write_atomically(const std::filesystem::path& path,
                       const std::function<void(const std::filesystem::path& temporary)>& write);
+
+//! Stages every write_atomically() made on this thread while it lives: the
+//! temporary file is written as usual, but renamed onto its target only by
+//! commit(). Destroyed without commit() (an exception on the way), it removes
+//! the temporaries it holds, so a run that fails leaves none of its outputs,
+//! not only none torn. Scopes nest: an inner one stages into itself.
+//! (Targets that are not regular files, such as /dev/null, are written at once.)
+class StagedOutputs
+{
+public:
+    StagedOutputs();
+    ~StagedOutputs();
+    StagedOutputs(const StagedOutputs&) = delete;
+    StagedOutputs& operator=(const StagedOutputs&) = delete;
+
+    //! Renames every staged file onto its target, in the order written.
+    //! \throw IoError if a rename fails (the files not yet renamed are removed).
+    void commit();
+
+private:
+    friend void write_atomically(const std::filesystem::path&,
+                                 const std::function<void(const std::filesystem::path&)>&);
+    std::vector<std::pair<std::filesystem::path, std::filesystem::path>> staged_;  // temporary, target
+    StagedOutputs* previous_;
+};
 
 //! True if \p a and \p b are the same existing file, also through symbolic or
 //! hard links (std::filesystem::equivalent); false if either does not exist.

@@ -32,7 +32,7 @@ struct VertexMap
 //! distances, two comments mark where they are attained on the processed
 //! mesh (point and face).
 //! \throw InvalidArgumentError if the comparison has no vertex distances or
-//!        the range is not MIN < MAX.
+//!        the range is not finite MIN <= MAX (a degenerate range is valid).
 VertexMap distance_map(const Comparison& comparison, std::optional<std::pair<double, double>> color_range = {});
 
 //! Which mesh of a comparison a distance map shows.
