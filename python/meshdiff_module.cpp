@@ -518,8 +518,13 @@ public:
     explicit ThreadScope(Obj threads) : saved_(omp_get_max_threads())
     {
         const std::uint64_t n = whole(threads, "threads").value_or(0);
-        validate_threads((long long)std::min<std::uint64_t>(n, std::uint64_t(LLONG_MAX)));
-        if (n > 0) omp_set_num_threads(int(n));
+        std::string warning;
+        const int use = usable_threads((long long)std::min<std::uint64_t>(n, std::uint64_t(LLONG_MAX)), warning);
+        // A RuntimeWarning (an exception only where warnings are made errors).
+        if (!warning.empty() &&
+            PyErr_WarnEx(PyExc_RuntimeWarning, (py_spelling("threads") + ": " + warning).c_str(), 2) < 0)
+            throw py::error_already_set();
+        if (use > 0) omp_set_num_threads(use);
     }
     ~ThreadScope() { omp_set_num_threads(saved_); }
     ThreadScope(const ThreadScope&) = delete;
@@ -1147,6 +1152,7 @@ PYBIND11_MODULE(meshdiff, m)
     limits["level"] = kMaxLevel;
     limits["radii"] = kMaxRadii;
     limits["radius"] = kMaxRadius;
+    limits["mean_ball_vertices"] = kMaxMeanBallVertices;
     limits["threads"] = kMaxThreads;
     limits["samples"] = kMaxSamples;
     limits["hausdorff_budget"] = kMaxHausdorffBudget;

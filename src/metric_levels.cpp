@@ -332,6 +332,26 @@ void check_sizes(const Mesh& mesh, const Adjacency& adj)
 
 }  // namespace
 
+void check_ball_work(const Mesh& mesh, const Adjacency& adj, const std::vector<double>& radii)
+{
+    if (radii.empty() || mesh.n_vertices() <= kMaxMeanBallVertices) return;  // no ball can hold more
+    const double r = *std::max_element(radii.begin(), radii.end());
+    const std::size_t n = mesh.n_vertices(), centres = 64;
+    double total = 0.0;
+    for (std::size_t i = 0; i < centres; ++i) {
+        check_cancelled(current_progress());
+        total += double(ball_patch(mesh, adj, i * n / centres, r).size());
+    }
+    const double mean = total / double(centres);
+    if (mean > double(kMaxMeanBallVertices))
+        throw OptionError(
+            "profile.radii",
+            fmt::format(
+                "radius {} holds about {:.0f} of the {} vertices per ball, above the limit of {} (the work grows "
+                "as vertices x ball size): give a smaller radius",
+                r, mean, n, kMaxMeanBallVertices));
+}
+
 std::vector<std::uint32_t> ball_patch(const Mesh& mesh, const Adjacency& adj, std::size_t centre, double radius)
 {
     check_radii({radius});

@@ -5,15 +5,20 @@
 #include "meshdiff/surface_distance.h"
 
 #include <fmt/format.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <condition_variable>
 #include <cstdlib>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <sstream>
+#include <system_error>
+#include <thread>
 
 namespace meshdiff {
 
@@ -217,6 +222,41 @@ std::optional<HausdorffOptions> hausdorff_options(const HausdorffRequest& r)
     o.max_evaluations = r.budget.value_or(0);
     validate(o);
     return o;
+}
+
+int usable_threads(long long threads, std::string& warning)
+{
+    validate_threads(threads);
+    warning.clear();
+    const int want = int(threads);
+    if (want <= 1 || want <= omp_get_num_procs()) return want;
+    // Start want - 1 threads (OpenMP's team besides the calling thread), with the
+    // default stack size OpenMP uses too, and stop them again.
+    std::vector<std::thread> probe;
+    probe.reserve(std::size_t(want - 1));
+    std::mutex m;
+    std::condition_variable cv;
+    bool go = false;
+    try {
+        for (int i = 1; i < want; ++i)
+            probe.emplace_back([&] {
+                std::unique_lock<std::mutex> lock(m);
+                cv.wait(lock, [&] { return go; });
+            });
+    } catch (const std::system_error&) {}
+    {
+        const std::lock_guard<std::mutex> lock(m);
+        go = true;
+    }
+    cv.notify_all();
+    for (auto& t : probe) t.join();
+    const int started = int(probe.size()) + 1;
+    if (started < want) {
+        const int use = std::max(1, started / 2);  // leave room for the rest of the run
+        warning = fmt::format("only {} of the {} threads asked for could be started; using {}", started, want, use);
+        return use;
+    }
+    return want;
 }
 
 void validate_threads(long long threads)

@@ -159,6 +159,7 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
     const Mesh unit = apply_normalization(mesh, p.normalization);
     check_cancelled(current_progress());  // the serial steps are checked in between
     const Adjacency adj = vertex_adjacency(unit);
+    check_ball_work(unit, adj, options.radii);  // before any long work
     check_cancelled(current_progress());
     const std::vector<Vec3> normals = vertex_normals(unit);
 
@@ -197,7 +198,9 @@ RoughnessProfile roughness_profile_from_curvature(const Mesh& mesh, const std::v
         }
     }
     p.curvature_undefined = undefined;
-    profile_from_H(p, unit, vertex_adjacency(unit), std::move(H), undefined, options);
+    const Adjacency adj = vertex_adjacency(unit);
+    check_ball_work(unit, adj, options.radii);
+    profile_from_H(p, unit, adj, std::move(H), undefined, options);
     return p;
 }
 

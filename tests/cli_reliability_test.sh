@@ -2,9 +2,11 @@
 # Issue 33: an output never destroys an input, nothing hangs, every failure
 # leaves nothing behind. One check per case of the issue (numbered as there);
 # each failed on edfd398.
-# Usage: cli_reliability_test.sh MESHDIFF_BINARY DATA_DIR
+# Usage: cli_reliability_test.sh MESHDIFF_BINARY DATA_DIR [MEMORY_LIMITS=yes|no]
+# (no: leave out the cases run under ulimit -v, which AddressSanitizer cannot start under)
 bin="$1"
 data=$(cd "$2" && pwd)
+memory_limits="${3:-yes}"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 . "$(dirname "$0")/cli_lib.sh"
@@ -71,6 +73,16 @@ expect 4 compare one.ply one.ply && grep -q "no extent" "$tmp/stderr" && pass ||
 expect 4 compare one.ply one.ply --json -
 grep -q "nan\|inf" "$tmp/stdout" && fail "8: NaN or inf printed" || pass
 
+# 9. More threads than the system can start (a memory limit): a warning and fewer threads, the same
+#    numbers; not libgomp's exit 1 from inside the library.
+if [ "$memory_limits" = yes ]; then
+"$bin" compare a.ply b.ply --threads 1 --json t1.json >/dev/null
+(ulimit -v 3000000 && "$bin" compare a.ply b.ply --threads 1000 --json t1000.json >/dev/null 2>"$tmp/stderr")
+got=$?
+[ "$got" -eq 0 ] && grep -q "warning: --threads: only" "$tmp/stderr" && cmp -s t1.json t1000.json && pass ||
+    fail "9: --threads 1000 under a memory limit exited $got: $(cat "$tmp/stderr")"
+fi
+
 # 10. kill -9 of batch: the running pair's process dies with it.
 "$bin" generate sphere --subdivisions 6 big.ply >/dev/null
 printf 'big.ply,big.ply,slow\n' >slow.csv
@@ -107,14 +119,23 @@ expect 0 batch odd.csv --out odd.jsonl -q && [ "$(grep -c '"status":"ok"' odd.js
     fail "12: names starting with - or #: $(cat odd.jsonl | head -c 300)"
 
 # 14. Out of memory has its own exit code (7), not the internal error's (70).
+if [ "$memory_limits" = yes ]; then
 (ulimit -v 1500000 && "$bin" compare a.ply b.ply --no-roughness -n 200000000 >"$tmp/stdout" 2>"$tmp/stderr")
 got=$?
 [ "$got" -eq 7 ] && grep -q "out of memory" "$tmp/stderr" && pass || fail "14: out of memory exited $got: $(cat "$tmp/stderr")"
+fi
 
 # 15. An empty value is refused, not taken as "none" or 0.
 expect 2 compare a.ply b.ply --threads ''
 expect 2 compare a.ply b.ply --json ''
 expect 2 noise a.ply n2.ply --amplitude ''
 [ ! -e n2.ply ] && pass || fail "15: noise wrote with an empty amplitude"
+
+# 16. A radius whose balls hold (nearly) the whole mesh is refused up front, with the reason: the work
+#     of the metric levels stays proportional to the mesh (--radii 1000 took minutes at 200K vertices).
+"$bin" generate sphere --subdivisions 7 s7.ply >/dev/null
+expect_within 120 2 profile s7.ply --radii 1000 && grep -q -- "--radii: radius 1000 holds about" "$tmp/stderr" &&
+    pass || fail "16: --radii 1000 on 164K vertices"
+expect_within 120 0 profile s7.ply --levels 1 --no-global --radii 0.2
 
 finish

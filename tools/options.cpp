@@ -10,6 +10,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <map>
 
 namespace meshdiff::cli {
@@ -277,8 +278,10 @@ void set_threads(const Given& threads)
 {
     if (!threads.given()) return;
     const std::uint64_t n = parse_whole_number("threads", threads.text);
-    validate_threads((long long)std::min<std::uint64_t>(n, std::uint64_t(LLONG_MAX)));
-    if (n > 0) omp_set_num_threads(int(n));
+    std::string warning;
+    const int use = usable_threads((long long)std::min<std::uint64_t>(n, std::uint64_t(LLONG_MAX)), warning);
+    if (!warning.empty()) std::cerr << "meshdiff: warning: " << cli_spelling("threads") << ": " << warning << "\n";
+    if (use > 0) omp_set_num_threads(use);
 }
 
 }  // namespace meshdiff::cli

@@ -31,6 +31,17 @@ std::vector<double> default_radii();
 constexpr std::size_t kMaxRadii = 64;
 constexpr double kMaxRadius = 1000.0;
 
+//! The most vertices a ball of the largest radius may hold on average: the
+//! metric levels' work, about n times that, stays proportional to the mesh
+//! (a radius far beyond the mesh, such as 1000, makes every ball the whole
+//! mesh: n^2). The default radii hold about 1% of a closed unit-scaled mesh.
+constexpr std::size_t kMaxMeanBallVertices = 100'000;
+
+//! Estimates the mean ball size of the largest of \p radii on the unit-scaled
+//! \p mesh from 64 centres spread evenly over the vertex ids (deterministic).
+//! \throw OptionError("profile.radii") if it is above kMaxMeanBallVertices.
+void check_ball_work(const Mesh& mesh, const Adjacency& adjacency, const std::vector<double>& radii);
+
 //! Throws OptionError("profile.radii") unless every radius is finite, > 0 and
 //! <= kMaxRadius, and there are at most kMaxRadii.
 void check_radii(const std::vector<double>& radii);

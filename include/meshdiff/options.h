@@ -135,6 +135,15 @@ constexpr int kMaxThreads = 1024;
 //! \throw OptionError("threads") unless 0 <= \p threads <= kMaxThreads.
 void validate_threads(long long threads);
 
+//! The thread count to give OpenMP for a request of \p threads (0: leave the
+//! default, returned as 0). More threads than cores are first tried: if the
+//! system cannot start that many (a memory limit, a process limit), the count
+//! that could be started is returned and \p warning says so (without the
+//! option's name, which the front end adds), instead of
+//! OpenMP ending the process when it fails to create them.
+//! \throw OptionError as validate_threads().
+int usable_threads(long long threads, std::string& warning);
+
 //! The batch front end's own options (`meshdiff batch`): the most shards a
 //! pair list is split into, and the longest time one pair may take.
 constexpr std::size_t kMaxShards = 1'000'000;

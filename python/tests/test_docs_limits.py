@@ -32,7 +32,7 @@ def test_the_table_states_the_library_limits():
     assert numbers(row("`--samples`"))[:2] == [1, L["samples"]]
     assert numbers(row("`--threads`"))[:2] == [0, L["threads"]]
     assert numbers(row("`--levels`"))[:3] == [L["levels"], 1, L["level"]]
-    assert numbers(row("`--radii`"))[:3] == [L["radii"], 0, L["radius"]]
+    assert numbers(row("`--radii`"))[:4] == [L["radii"], 0, L["radius"], L["mean_ball_vertices"]]
     assert numbers(row("`--hausdorff-tolerance`"))[:2] == list(L["hausdorff_tolerance"])
     assert numbers(row("`--hausdorff-budget`"))[:2] == [1, L["hausdorff_budget"]]
     assert numbers(row("`--fscore`"))[:3] == [L["fscore"], 0, L["fscore_threshold"]]

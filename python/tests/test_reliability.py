@@ -85,6 +85,23 @@ def test_a_cloud_without_extent_is_an_error():
         meshdiff.compare(P, None, P, None)
 
 
+def test_threads_that_cannot_start_warn_not_kill(data):
+    """9. Under a memory limit 1000 threads cannot all start: a RuntimeWarning and fewer threads, the same
+    numbers (libgomp ended the interpreter before)."""
+    r = run_isolated(f"""
+        import resource, warnings, meshdiff
+        V, F = meshdiff.read_mesh({str(data / "sphere_ico_2562.ply")!r})
+        one = meshdiff.profile(V, F, threads=1)
+        resource.setrlimit(resource.RLIMIT_AS, (3_000_000_000, 3_000_000_000))
+        with warnings.catch_warnings(record=True) as w:
+            warnings.simplefilter("always")
+            many = meshdiff.profile(V, F, threads=1000)
+        print(many == one, [str(x.message) for x in w])
+    """)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.startswith("True ['threads: only "), r.stdout
+
+
 def test_threads_beyond_the_limit(sphere):
     """9. The CLI's thread limit holds in Python (2000 threads killed the interpreter under a memory cap)."""
     V, F = sphere
