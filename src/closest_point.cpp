@@ -286,9 +286,14 @@ void ClosestPointIndex::Impl::build(const Mesh& mesh)
         if (ext[axis] > 0.0) {
             std::array<Box, kBins> bin_box;
             std::array<std::uint32_t, kBins> bin_count{};
+            // With subnormal extents kBins / ext overflows to infinity and a
+            // centroid at cbox.lo gives 0 * inf = NaN: such bins go to 0, the
+            // others to kBins - 1 (the finite case is untouched).
             const double scale = kBins / ext[axis];
             auto bin_of = [&](std::uint32_t f) {
-                return std::min(kBins - 1, int((centroid[f][axis] - cbox.lo[axis]) * scale));
+                const double x = (centroid[f][axis] - cbox.lo[axis]) * scale;
+                if (!(x >= 0.0)) return 0;
+                return x < double(kBins) ? std::min(kBins - 1, int(x)) : kBins - 1;
             };
             for (std::uint32_t i = task.begin; i < task.end; ++i) {
                 const int b = bin_of(order[i]);

@@ -4,6 +4,7 @@
 #include "meshdiff/error.h"
 
 #include "detail/compensated_sum.h"
+#include "detail/surface_distance.h"
 
 #include <fmt/format.h>
 #include <nanoflann.hpp>
@@ -164,14 +165,9 @@ SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const Sampl
     if (!opt.samples && !opt.density)
         opt.samples = 10 * std::max(cloud_a ? a.n_vertices() : a.n_faces(), cloud_b ? b.n_vertices() : b.n_faces());
 
-    const double diagonal = bounding_box(a).diagonal();
-    // The relative distances divide by A's diagonal: a cloud of one point (or
-    // of equal points) has none, an input error like a mesh without extent.
-    if (!(diagonal > 0.0))
-        throw InvalidMeshError(fmt::format(
-            "surface_distance: A (the original) has no extent: all its {} points lie at one place, so the distances "
-            "relative to its bounding-box diagonal are undefined",
-            a.n_vertices()));
+    // A cloud of one point (or of equal points) has no diagonal: an input
+    // error like a mesh without extent.
+    const double diagonal = detail::reference_diagonal(a, a.faces.empty() ? "points" : "vertices");
     std::vector<double> thresholds;  // absolute
     for (double t : summary.fscore_thresholds) thresholds.push_back(t * diagonal);
     std::vector<double> recall, precision;

@@ -211,6 +211,17 @@ std::optional<SummaryMetrics> summary_metrics(const SurfaceDistance& d, std::str
     return m;
 }
 
+double detail::reference_diagonal(const Mesh& a, const char* what)
+{
+    const double diagonal = bounding_box(a).diagonal();
+    if (!(diagonal > 0.0 && std::isfinite(diagonal)))
+        throw InvalidMeshError(fmt::format(
+            "surface_distance: A (the original) has no extent: its {} {} lie at one place (bounding-box diagonal "
+            "{}), so the distances relative to its diagonal are undefined",
+            a.n_vertices(), what, diagonal));
+    return diagonal;
+}
+
 DistanceStats relative_to(const DistanceStats& stats, double diagonal)
 {
     if (!(std::isfinite(diagonal) && diagonal > 0.0))
@@ -610,7 +621,7 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
     SamplingOptions opt = options;
     if (!opt.samples && !opt.density) opt.samples = 10 * std::max(a.n_faces(), b.n_faces());
 
-    const double diagonal = bounding_box(a).diagonal();
+    const double diagonal = detail::reference_diagonal(a, "vertices");
     std::vector<double> thresholds;  // absolute
     for (double t : summary.fscore_thresholds) thresholds.push_back(t * diagonal);
     // The sums over the samples beside the statistics of one direction.

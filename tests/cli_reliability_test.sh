@@ -72,6 +72,15 @@ printf 'ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty floa
 expect 4 compare one.ply one.ply && grep -q "no extent" "$tmp/stderr" && pass || fail "8: one-point cloud"
 expect 4 compare one.ply one.ply --json -
 grep -q "nan\|inf" "$tmp/stdout" && fail "8: NaN or inf printed" || pass
+# ... and a mesh without extent (coordinates that underflow the diagonal) as the original: exit 4, text and
+# JSON alike (was exit 2, "relative_to: diagonal must be ..."); as the processed mesh it is a valid input
+# (its index build read out of bounds: subnormal coordinates, scripts/fuzz_arrays.py trial 143).
+sub="$data/hostile/off_subnormal.off"
+expect 4 compare "$sub" "$sub" --no-roughness && grep -q "no extent" "$tmp/stderr" && pass || fail "8: mesh without extent"
+expect 4 compare "$sub" "$sub" --no-roughness --json -
+expect 0 compare a.ply "$sub" --no-roughness --json sub.json &&
+    python3 -c "import json,sys; j=json.load(open('sub.json')); h = j['surface_distance']['hausdorff']; sys.exit(0 if 0.99 < h['lower'] <= h['upper'] < 1.01 else 1)" &&
+    pass || fail "8: a processed mesh of subnormal coordinates"
 
 # 9. More threads than the system can start (a memory limit): a warning and fewer threads, the same
 #    numbers; not libgomp's exit 1 from inside the library.

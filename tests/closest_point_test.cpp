@@ -103,6 +103,24 @@ TEST(ClosestPoint, IndexAgreesWithBruteForceOnTheTeapot)
     expect_index_matches_brute_force(read_mesh(kData + "/teapot.obj").mesh, 200);
 }
 
+// Regression (scripts/fuzz_arrays.py trial 143): a mesh scaled to subnormal
+// coordinates made the build's bin scale kBins / extent infinite, a centroid
+// at the box's low end binned NaN and the partition wrote out of bounds.
+TEST(ClosestPoint, SubnormalCoordinatesBuildAndAnswerAsBruteForce)
+{
+    for (const double scale : {5e-324, 1e-320, 1e-310}) {
+        Mesh m = icosphere(1, 1.0).mesh;
+        for (Vec3& p : m.points) p *= scale;
+        const ClosestPointIndex index(m);
+        for (const Vec3& p : {Vec3(1, 0, 0), Vec3(0, 0, 0), Vec3(-2e-300, 3e-300, 0), Vec3(0.3, -0.4, 1e3)}) {
+            const ClosestPoint bf = closest_point_brute_force(m, p);
+            const ClosestPoint ix = index.closest_point(p);
+            EXPECT_EQ(ix.distance, bf.distance) << scale << " " << p.transpose();
+            EXPECT_TRUE(std::isfinite(ix.distance));
+        }
+    }
+}
+
 TEST(ClosestPoint, FarQueryHasItsTrueDistance)
 {
     const Mesh m = icosphere(2, 1.0).mesh;

@@ -368,6 +368,16 @@ TEST(SurfaceDistance, InvalidOptionsAndMeshesThrow)
     EXPECT_THROW(surface_distance(m, m, o), InvalidArgumentError);
     EXPECT_THROW(surface_distance(m, Mesh{}), InvalidMeshError);
     EXPECT_THROW(relative_to(DistanceStats{}, 0.0), InvalidArgumentError);
+    // An original without extent (all vertices at one place, or a diagonal
+    // that underflows) is an input error, as for a point cloud; the processed
+    // mesh may be so (the relative distances divide by A's diagonal only).
+    for (const double scale : {0.0, 1e-200, 5e-324}) {
+        Mesh point = icosphere(1, 1.0).mesh;
+        for (Vec3& p : point.points) p = scale == 0.0 ? Vec3(1, 2, 3) : Vec3(scale * p);
+        EXPECT_THROW(surface_distance(point, point), InvalidMeshError) << scale;
+        const SurfaceDistance r = surface_distance(icosphere(2, 1.0).mesh, point);
+        EXPECT_TRUE(std::isfinite(r.hausdorff)) << scale;
+    }
     // Faces only, on a mesh whose only face is degenerate: no sample at all.
     Mesh flat;
     flat.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0)};

@@ -85,6 +85,29 @@ def test_a_cloud_without_extent_is_an_error():
         meshdiff.compare(P, None, P, None)
 
 
+def test_subnormal_coordinates_do_not_crash(data):
+    """A mesh scaled to subnormal coordinates (scripts/fuzz_arrays.py trial 143): the closest-point index of
+    it crashed the interpreter (SIGSEGV). As the processed mesh or a cloud's target it is measured; as the
+    original it has no extent, a ValueError."""
+    r = run_isolated(f"""
+        import numpy as np, meshdiff
+        V, F = meshdiff.read_mesh({str(data / "sphere_ico_2562.ply")!r})
+        tiny = V * 5e-324
+        for A, FA in [(V, None), (V, F)]:
+            h = meshdiff.compare(A, FA, tiny, F, samples=3000, roughness=False)["surface_distance"]["hausdorff"]
+            print(round(h["lower"], 6))
+        try:
+            meshdiff.compare(tiny, F, tiny, F, roughness=False)
+        except ValueError as e:
+            print("no extent" in str(e))
+    """)
+    assert r.returncode == 0, r.stderr
+    radius = float(np.linalg.norm(meshdiff.read_mesh(str(data / "sphere_ico_2562.ply"))[0], axis=1).max())
+    lines = r.stdout.split()
+    assert [float(x) for x in lines[:2]] == [round(radius, 6)] * 2
+    assert lines[2] == "True"
+
+
 def test_threads_that_cannot_start_warn_not_kill(data):
     """9. Under a memory limit 1000 threads cannot all start: a RuntimeWarning and fewer threads, the same
     numbers (libgomp ended the interpreter before)."""
