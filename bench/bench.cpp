@@ -4,15 +4,15 @@
 // machine is noisy: compare medians and ratios, not single runs. --kernels
 // both alternates runs with the AVX-512 kernels (where the CPU has them) and
 // with the baseline ones, and prints both medians and their ratio.
-#include "meshdiff/curvature.h"
-#include "meshdiff/facts.h"
-#include "meshdiff/io.h"
-#include "meshdiff/neighborhood.h"
-#include "meshdiff/normals.h"
-#include "meshdiff/roughness.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/geometry/normals.h"
+#include "meshdiff/io/facts.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/roughness/curvature.h"
+#include "meshdiff/roughness/neighborhood.h"
+#include "meshdiff/roughness/roughness.h"
+#include "meshdiff/studies/shapes.h"
 
-#include "detail/simd.h"
+#include "geometry/simd.h"
 
 #include <fmt/format.h>
 #include <omp.h>

@@ -27,9 +27,9 @@
 //                                 mean X rms X time_s T cpu_s C threads N
 //                                 peak_rss_mib M" for scripts (T: median wall
 //                                 time, C: median CPU time of all threads)
-#include "meshdiff/closest_point.h"
-#include "meshdiff/io.h"
-#include "meshdiff/surface_distance.h"
+#include "meshdiff/distance/surface_distance.h"
+#include "meshdiff/geometry/closest_point.h"
+#include "meshdiff/io/io.h"
 
 #include <fmt/format.h>
 #include <omp.h>

@@ -14,10 +14,10 @@
 //     reference/cgal_hausdorff times with CGAL's bounded_error_Hausdorff_distance.
 // Each line gives the intervals, their widths, the evaluations and rounds.
 // --certified-only runs case 3 alone (for CPU-time measurements with time(1)).
-#include "meshdiff/closest_point.h"
-#include "meshdiff/hausdorff.h"
-#include "meshdiff/io.h"
-#include "meshdiff/surface_distance.h"
+#include "meshdiff/distance/hausdorff.h"
+#include "meshdiff/distance/surface_distance.h"
+#include "meshdiff/geometry/closest_point.h"
+#include "meshdiff/io/io.h"
 
 #include <fmt/format.h>
 #include <omp.h>

@@ -1,10 +1,10 @@
 // Prints the accuracy table of the mean curvature estimators (METHOD.md
 // section 4) on analytic surfaces, and their stability on real meshes.
 // Usage: meshdiff_curvature_table [MESH_DIR]   (MESH_DIR: ../shared/data/meshes)
-#include "meshdiff/curvature.h"
-#include "meshdiff/io.h"
-#include "meshdiff/roughness.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/roughness/curvature.h"
+#include "meshdiff/roughness/roughness.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <fmt/format.h>
 

@@ -1,5 +1,5 @@
 // The speed-up from 1 to 2 threads (or any list) of each stage of a compare,
-// timed through the library's Progress interface (meshdiff/progress.h): a
+// timed through the library's Progress interface (meshdiff/core/progress.h): a
 // stage runs from its Progress::stage() call to the next one, so the serial
 // steps between stages count in the stage before them ("setup" is the time
 // from the call to the first stage: normalisation, adjacency, normals).
@@ -9,8 +9,8 @@
 // them alike.
 // Usage: meshdiff_bench_speedup A.ply B.ply [--repeat 3] [--threads 1,2] [--radii 0.05 | none]
 #include "meshdiff/compare.h"
-#include "meshdiff/io.h"
-#include "meshdiff/progress.h"
+#include "meshdiff/core/progress.h"
+#include "meshdiff/io/io.h"
 
 #include <fmt/format.h>
 #include <omp.h>

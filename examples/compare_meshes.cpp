@@ -1,11 +1,11 @@
 // Compares a processed mesh with its original through the meshdiff library:
 // the roughness profiles, the per-level roughness distance d_L and the
 // Metro-style surface distance. Usage: compare_meshes ORIGINAL PROCESSED
+#include "meshdiff/distance/surface_distance.h"
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/roughness.h"
-#include "meshdiff/roughness_distance.h"
-#include "meshdiff/surface_distance.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/roughness/roughness.h"
+#include "meshdiff/roughness/roughness_distance.h"
 #include "meshdiff/version.h"
 
 #include <cstdio>

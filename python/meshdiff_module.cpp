@@ -4,20 +4,20 @@
 // GIL for the computation and builds the Python result with the GIL held again.
 // The dicts are the CLI's JSON reports (report/json.h) converted value by value,
 // so the numbers are bit for bit those of `meshdiff ... --json`.
-#include "meshdiff/closest_point.h"
 #include "meshdiff/compare.h"
-#include "meshdiff/corsini.h"
-#include "meshdiff/curvature.h"
+#include "meshdiff/distance/surface_distance.h"
 #include "meshdiff/error.h"
-#include "meshdiff/facts.h"
-#include "meshdiff/io.h"
-#include "meshdiff/metric_levels.h"
+#include "meshdiff/geometry/closest_point.h"
+#include "meshdiff/io/facts.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/io/output_file.h"
 #include "meshdiff/options.h"
-#include "meshdiff/output_file.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/outputs.h"
-#include "meshdiff/roughness.h"
-#include "meshdiff/surface_distance.h"
+#include "meshdiff/roughness/corsini.h"
+#include "meshdiff/roughness/curvature.h"
+#include "meshdiff/roughness/metric_levels.h"
+#include "meshdiff/roughness/roughness.h"
 #include "meshdiff/version.h"
 
 #include <fmt/format.h>

@@ -1,8 +1,8 @@
 #include "meshdiff/options.h"
 
-#include "meshdiff/metric_levels.h"
-#include "meshdiff/roughness.h"
-#include "meshdiff/surface_distance.h"
+#include "meshdiff/distance/surface_distance.h"
+#include "meshdiff/roughness/metric_levels.h"
+#include "meshdiff/roughness/roughness.h"
 
 #include <fmt/format.h>
 #include <omp.h>

@@ -1,10 +1,10 @@
-#include "meshdiff/closest_point.h"
+#include "meshdiff/geometry/closest_point.h"
 
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
-#include "detail/simd.h"
+#include "geometry/simd.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>

@@ -1,13 +1,13 @@
 // Point clouds as inputs of compare (issue 11): the k-d tree against brute
 // force, cloud-to-mesh distances against closed forms, the reading of a
 // faceless file, and the comparison and its reports.
-#include "meshdiff/cloud_distance.h"
+#include "meshdiff/distance/cloud_distance.h"
 
 #include <gtest/gtest.h>
 
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
+#include "meshdiff/io/io.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/text.h"
 

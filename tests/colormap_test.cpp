@@ -1,4 +1,4 @@
-#include "meshdiff/colormap.h"
+#include "meshdiff/report/colormap.h"
 
 #include <gtest/gtest.h>
 

@@ -20,7 +20,7 @@ fail() {
 echo "-- install $build into $prefix"
 cmake --install "$build" --prefix "$prefix" >"$tmp/install.log" || { cat "$tmp/install.log" >&2; fail "install"; }
 [[ -f "$prefix/include/meshdiff/version.h" ]] || fail "no include/meshdiff/version.h"
-[[ -f "$prefix/include/meshdiff/surface_distance.h" ]] || fail "no include/meshdiff/surface_distance.h"
+[[ -f "$prefix/include/meshdiff/distance/surface_distance.h" ]] || fail "no include/meshdiff/distance/surface_distance.h"
 grep -q '^#define MESHDIFF_VERSION "' "$prefix/include/meshdiff/version.h" || fail "version.h has no MESHDIFF_VERSION"
 cfg=""
 for d in "$prefix"/lib*/cmake/meshdiff; do [[ -f "$d/meshdiffConfig.cmake" ]] && cfg="$d"; done
@@ -67,6 +67,14 @@ json_out="$("$tmp/consumer/compare_json" "$data/bunny_res3.ply" "$data/bunny_res
     fail "compare_json exited with $?"
 echo "$json_out"
 grep -Eq '^meshdiff.compare/2 hausdorff [0-9.e-]+$' <<<"$json_out" || fail "compare_json output"
+
+echo "-- the 0.2 include paths forward to the subsystem folders"
+for f in "$root"/include/compat/meshdiff/*.h; do
+    h="meshdiff/$(basename "$f")"
+    [[ -f "$prefix/include/$h" ]] || fail "$h is not installed"
+    grep -q "^#include \"$h\"" "$root/tests/consumer/old_paths.cpp" || fail "tests/consumer/old_paths.cpp misses $h"
+done
+"$tmp/consumer/old_paths" || fail "old_paths exited with $?"
 
 echo "-- a missing file: nonzero exit and a message"
 set +e

@@ -1,10 +1,10 @@
-#include "meshdiff/corsini.h"
+#include "meshdiff/roughness/corsini.h"
 
 #include <gtest/gtest.h>
 
 #include "meshdiff/error.h"
-#include "meshdiff/metric_levels.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/roughness/metric_levels.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <omp.h>
 

@@ -1,9 +1,9 @@
-#include "meshdiff/cotangent.h"
+#include "meshdiff/geometry/cotangent.h"
 
-#include "meshdiff/curvature.h"
-#include "meshdiff/io.h"
-#include "meshdiff/normals.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/geometry/normals.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/roughness/curvature.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-#include "meshdiff/curvature.h"
+#include "meshdiff/roughness/curvature.h"
 
 #include <gtest/gtest.h>
 
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/normals.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/geometry/normals.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,13 +2,13 @@
 
 #include <gtest/gtest.h>
 
-#include "meshdiff/curvature.h"
-#include "meshdiff/distance_kind.h"
+#include "meshdiff/distance/distance_kind.h"
 #include "meshdiff/error.h"
-#include "meshdiff/facts.h"
-#include "meshdiff/noise.h"
-#include "meshdiff/sampling.h"
-#include "meshdiff/smoothing.h"
+#include "meshdiff/geometry/sampling.h"
+#include "meshdiff/io/facts.h"
+#include "meshdiff/roughness/curvature.h"
+#include "meshdiff/studies/noise.h"
+#include "meshdiff/studies/smoothing.h"
 
 #include <cctype>
 #include <set>

@@ -1,8 +1,9 @@
-#include "meshdiff/facts.h"
+#include "meshdiff/io/facts.h"
+#include "meshdiff/roughness/roughness.h"
 
 #include <gtest/gtest.h>
 
-#include "meshdiff/shapes.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <unistd.h>
 

@@ -1,11 +1,11 @@
-#include "meshdiff/hausdorff.h"
+#include "meshdiff/distance/hausdorff.h"
 
+#include "meshdiff/distance/surface_distance.h"
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/shapes.h"
-#include "meshdiff/surface_distance.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
-#include "detail/simd.h"
+#include "geometry/simd.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>

@@ -1,7 +1,7 @@
 // Hostile input (issue 13): malformed and extreme files must give one clear
 // error naming the file, never a hang, a crash or a silently mangled mesh.
 // The files are in tests/data/hostile/ (README.md there says what each is).
-#include "meshdiff/io.h"
+#include "meshdiff/io/io.h"
 
 #include <gtest/gtest.h>
 

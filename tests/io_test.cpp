@@ -1,9 +1,9 @@
-#include "meshdiff/io.h"
+#include "meshdiff/io/io.h"
 
 #include <gtest/gtest.h>
 
 #include "meshdiff/error.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <cmath>
 #include <filesystem>

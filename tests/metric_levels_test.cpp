@@ -1,12 +1,12 @@
-#include "meshdiff/metric_levels.h"
+#include "meshdiff/roughness/metric_levels.h"
 
 #include <gtest/gtest.h>
 
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/roughness.h"
-#include "meshdiff/roughness_distance.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/roughness/roughness.h"
+#include "meshdiff/roughness/roughness_distance.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <omp.h>
 

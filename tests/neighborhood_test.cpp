@@ -1,12 +1,12 @@
-#include "meshdiff/neighborhood.h"
+#include "meshdiff/roughness/neighborhood.h"
 
 #include <gtest/gtest.h>
 
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
-#include "detail/simd.h"
+#include "geometry/simd.h"
 
 #include <omp.h>
 
@@ -322,7 +322,7 @@ double hashed_value(std::uint64_t i)
     return 1.0 + double(x >> 12) * 0x1p-52;
 }
 
-// Allows or forbids the vector kernels for the scope (detail/simd.h).
+// Allows or forbids the vector kernels for the scope (geometry/simd.h).
 class KernelChoice
 {
 public:

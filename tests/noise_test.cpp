@@ -1,8 +1,8 @@
-#include "meshdiff/noise.h"
+#include "meshdiff/studies/noise.h"
 
 #include "meshdiff/error.h"
-#include "meshdiff/normals.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/geometry/normals.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>

@@ -1,9 +1,9 @@
-#include "meshdiff/normalize.h"
+#include "meshdiff/geometry/normalize.h"
 
 #include <gtest/gtest.h>
 
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
+#include "meshdiff/io/io.h"
 
 using namespace meshdiff;
 

@@ -1,9 +1,9 @@
-#include "meshdiff/normals.h"
+#include "meshdiff/geometry/normals.h"
 
 #include <gtest/gtest.h>
 
-#include "meshdiff/io.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "meshdiff/output_file.h"
+#include "meshdiff/io/output_file.h"
 
 #include "meshdiff/error.h"
 

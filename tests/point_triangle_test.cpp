@@ -1,9 +1,9 @@
-#include "meshdiff/point_triangle.h"
+#include "meshdiff/geometry/point_triangle.h"
 
-#include "meshdiff/shapes.h"
+#include "meshdiff/studies/shapes.h"
 
-#include "detail/point_triangle.h"
-#include "detail/point_triangle_x4.h"
+#include "geometry/point_triangle_kernels.h"
+#include "geometry/point_triangle_x4.h"
 
 #include <gtest/gtest.h>
 
@@ -142,7 +142,7 @@ TEST(PointTriangle, BruteForceIsTheMinimumOverFacesWithTheLowestFaceOnTies)
 }
 
 // The AVX2 kernel of the closest-point index and the certification
-// (detail/point_triangle_x4.h) against detail::triangle_point(), lane by
+// (geometry/point_triangle_x4.h) against detail::triangle_point(), lane by
 // lane, bit for bit: points in every Voronoi region, on the corners, on the
 // edges and in the plane, triangles from needles near the thin threshold to
 // 1e6 wide and 1e-4 small far from the origin, one point for four

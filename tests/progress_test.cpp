@@ -1,12 +1,12 @@
-#include "meshdiff/progress.h"
+#include "meshdiff/core/progress.h"
 
 #include <gtest/gtest.h>
 
 #include "meshdiff/compare.h"
+#include "meshdiff/distance/surface_distance.h"
 #include "meshdiff/error.h"
-#include "meshdiff/roughness.h"
-#include "meshdiff/shapes.h"
-#include "meshdiff/surface_distance.h"
+#include "meshdiff/roughness/roughness.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <omp.h>
 

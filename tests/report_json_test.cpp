@@ -4,8 +4,8 @@
 
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <cmath>
 #include <functional>

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "meshdiff/compare.h"
-#include "meshdiff/io.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,9 +1,9 @@
-#include "meshdiff/roughness_distance.h"
+#include "meshdiff/roughness/roughness_distance.h"
 
 #include <gtest/gtest.h>
 
 #include "meshdiff/error.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <cmath>
 

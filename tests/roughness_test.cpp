@@ -1,13 +1,13 @@
-#include "meshdiff/roughness.h"
+#include "meshdiff/roughness/roughness.h"
 
 #include <gtest/gtest.h>
 
-#include "meshdiff/curvature.h"
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/neighborhood.h"
-#include "meshdiff/normals.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/geometry/normals.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/roughness/curvature.h"
+#include "meshdiff/roughness/neighborhood.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <omp.h>
 #include <Eigen/Geometry>

@@ -1,7 +1,7 @@
-#include "meshdiff/same_connectivity.h"
+#include "meshdiff/distance/same_connectivity.h"
 
-#include "meshdiff/io.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <gtest/gtest.h>
 #include <Eigen/Geometry>

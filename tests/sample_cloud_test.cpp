@@ -1,9 +1,9 @@
-#include "meshdiff/sample_cloud.h"
+#include "meshdiff/distance/sample_cloud.h"
 
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/point_triangle.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/geometry/point_triangle.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <gtest/gtest.h>
 

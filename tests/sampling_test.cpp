@@ -1,11 +1,11 @@
-#include "meshdiff/sampling.h"
+#include "meshdiff/geometry/sampling.h"
 
-#include "meshdiff/closest_point.h"
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/geometry/closest_point.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
-#include "detail/sample_plan.h"
+#include "geometry/sample_plan.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
-#include "meshdiff/shapes.h"
-#include "meshdiff/topology.h"
+#include "meshdiff/studies/shapes.h"
+#include "meshdiff/core/topology.h"
 
 #include "meshdiff/error.h"
 #include "support/analytic.h"

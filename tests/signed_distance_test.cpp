@@ -1,13 +1,13 @@
-#include "meshdiff/signed_distance.h"
+#include "meshdiff/distance/signed_distance.h"
 
-#include "meshdiff/closest_point.h"
 #include "meshdiff/compare.h"
-#include "meshdiff/io.h"
+#include "meshdiff/core/topology.h"
+#include "meshdiff/distance/surface_distance.h"
+#include "meshdiff/geometry/closest_point.h"
+#include "meshdiff/io/io.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/text.h"
-#include "meshdiff/shapes.h"
-#include "meshdiff/surface_distance.h"
-#include "meshdiff/topology.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <fmt/format.h>
 

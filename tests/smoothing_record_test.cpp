@@ -1,9 +1,9 @@
-#include "meshdiff/smoothing_record.h"
+#include "meshdiff/studies/smoothing_record.h"
 
 #include <gtest/gtest.h>
 
 #include "meshdiff/error.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <vector>
 

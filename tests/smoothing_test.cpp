@@ -1,7 +1,7 @@
-#include "meshdiff/smoothing.h"
+#include "meshdiff/studies/smoothing.h"
 
 #include "meshdiff/error.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>

@@ -1,10 +1,10 @@
-#include "meshdiff/surface_distance.h"
+#include "meshdiff/distance/surface_distance.h"
 
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
-#include "detail/surface_distance.h"
+#include "distance/surface_distance_chunks.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>

@@ -1,9 +1,9 @@
-#include "meshdiff/topology.h"
+#include "meshdiff/core/topology.h"
 
 #include <gtest/gtest.h>
 
-#include "meshdiff/io.h"
-#include "meshdiff/shapes.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/studies/shapes.h"
 
 #include <algorithm>
 #include <array>

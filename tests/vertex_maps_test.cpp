@@ -1,10 +1,10 @@
-#include "meshdiff/vertex_maps.h"
+#include "meshdiff/report/vertex_maps.h"
 
 #include <gtest/gtest.h>
 
+#include "meshdiff/distance/signed_distance.h"
 #include "meshdiff/error.h"
-#include "meshdiff/point_triangle.h"
-#include "meshdiff/signed_distance.h"
+#include "meshdiff/geometry/point_triangle.h"
 
 #include <unistd.h>
 

@@ -1,9 +1,9 @@
 #include "commands.h"
 #include "meshdiff/error.h"
-#include "meshdiff/generate.h"
-#include "meshdiff/io.h"
+#include "meshdiff/io/io.h"
 #include "meshdiff/options.h"
 #include "meshdiff/report/text.h"
+#include "meshdiff/studies/generate.h"
 #include "options.h"
 
 #include <fmt/format.h>

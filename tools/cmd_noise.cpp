@@ -1,9 +1,9 @@
 #include "commands.h"
-#include "meshdiff/io.h"
-#include "meshdiff/noise.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/io/output_file.h"
 #include "meshdiff/options.h"
-#include "meshdiff/output_file.h"
 #include "meshdiff/report/text.h"
+#include "meshdiff/studies/noise.h"
 #include "options.h"
 
 #include <fmt/format.h>

@@ -1,13 +1,13 @@
 #include "commands.h"
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/io/output_file.h"
 #include "meshdiff/options.h"
-#include "meshdiff/output_file.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/outputs.h"
 #include "meshdiff/report/text.h"
-#include "meshdiff/smoothing.h"
-#include "meshdiff/smoothing_record.h"
+#include "meshdiff/studies/smoothing.h"
+#include "meshdiff/studies/smoothing_record.h"
 #include "options.h"
 
 #include <fmt/format.h>

@@ -15,8 +15,8 @@ using Action = std::function<int()>;
 
 void add_profile_command(CLI::App& app, Action& action);        // tools/cmd_profile.cpp
 void add_compare_command(CLI::App& app, Action& action);        // tools/cmd_compare.cpp (also the default command)
-void add_batch_command(CLI::App& app, Action& action);          // tools/cmd_batch.cpp
-void add_batch_summary_command(CLI::App& app, Action& action);  // tools/cmd_batch_summary.cpp
+void add_batch_command(CLI::App& app, Action& action);          // tools/batch/cmd_batch.cpp
+void add_batch_summary_command(CLI::App& app, Action& action);  // tools/batch/cmd_batch_summary.cpp
 void add_generate_command(CLI::App& app, Action& action);       // tools/cmd_generate.cpp
 void add_smooth_command(CLI::App& app, Action& action);         // tools/cmd_smooth.cpp
 void add_noise_command(CLI::App& app, Action& action);          // tools/cmd_noise.cpp

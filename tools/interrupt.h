@@ -1,6 +1,6 @@
 //! \file interrupt.h
 //! \brief Ctrl-C: SIGINT and SIGTERM only set a flag, which the running
-//! computation polls (through its Progress, meshdiff/progress.h) about every
+//! computation polls (through its Progress, meshdiff/core/progress.h) about every
 //! 1/100 of a stage; it then stops, the outputs' temporary files are removed
 //! and meshdiff exits with code 130 (kInterrupted).
 #pragma once

@@ -1,6 +1,6 @@
 //! \file progress_display.h
 //! \brief The progress display of the CLI on stderr, and its Ctrl-C: a
-//! meshdiff::Progress (meshdiff/progress.h) that shows one line per stage
+//! meshdiff::Progress (meshdiff/core/progress.h) that shows one line per stage
 //! ("curvature 45% 1.2 s": the share of the stage done and the time spent in
 //! it) and is cancelled() once SIGINT or SIGTERM arrived (interrupt.h).
 //! When stderr is a terminal the line is redrawn in place, from the moment the
@@ -11,7 +11,7 @@
 //! count. Nothing goes to stdout.
 #pragma once
 
-#include "meshdiff/progress.h"
+#include "meshdiff/core/progress.h"
 
 #include <CLI/CLI.hpp>
 

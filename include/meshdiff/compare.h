@@ -6,17 +6,17 @@
 //! JSON (schema "meshdiff.compare/2") and text forms are in meshdiff/report/.
 #pragma once
 
-#include "meshdiff/cloud_distance.h"
-#include "meshdiff/corsini.h"
-#include "meshdiff/facts.h"
-#include "meshdiff/hausdorff.h"
-#include "meshdiff/io.h"
-#include "meshdiff/progress.h"
-#include "meshdiff/roughness.h"
-#include "meshdiff/roughness_distance.h"
-#include "meshdiff/same_connectivity.h"
-#include "meshdiff/sampling.h"
-#include "meshdiff/surface_distance.h"
+#include "meshdiff/core/progress.h"
+#include "meshdiff/distance/cloud_distance.h"
+#include "meshdiff/distance/hausdorff.h"
+#include "meshdiff/distance/same_connectivity.h"
+#include "meshdiff/distance/surface_distance.h"
+#include "meshdiff/geometry/sampling.h"
+#include "meshdiff/io/facts.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/roughness/corsini.h"
+#include "meshdiff/roughness/roughness.h"
+#include "meshdiff/roughness/roughness_distance.h"
 
 #include <optional>
 #include <string>

@@ -1,38 +1,49 @@
 //! \file meshdiff.h
-//! \brief All of meshdiff's computing library in one include. The JSON and text
-//! presentation (target meshdiff::report) is in meshdiff/report/json.h and
-//! meshdiff/report/text.h.
+//! \brief All of meshdiff's computing library (target meshdiff::meshdiff) in
+//! one include, folder by folder from the bottom floor up. The presentation
+//! (target meshdiff::report: JSON and text reports, per-vertex maps and their
+//! colours) is in meshdiff/report/.
 #pragma once
 
-#include "meshdiff/closest_point.h"
-#include "meshdiff/colormap.h"
-#include "meshdiff/compare.h"
-#include "meshdiff/corsini.h"
-#include "meshdiff/cotangent.h"
-#include "meshdiff/curvature.h"
 #include "meshdiff/enum_names.h"
 #include "meshdiff/error.h"
-#include "meshdiff/facts.h"
-#include "meshdiff/hausdorff.h"
-#include "meshdiff/io.h"
-#include "meshdiff/mesh.h"
-#include "meshdiff/metric_levels.h"
-#include "meshdiff/neighborhood.h"
-#include "meshdiff/noise.h"
-#include "meshdiff/normalize.h"
-#include "meshdiff/normals.h"
-#include "meshdiff/point_triangle.h"
-#include "meshdiff/progress.h"
-#include "meshdiff/roughness.h"
-#include "meshdiff/roughness_distance.h"
-#include "meshdiff/same_connectivity.h"
-#include "meshdiff/sample_cloud.h"
-#include "meshdiff/sampling.h"
-#include "meshdiff/shapes.h"
-#include "meshdiff/signed_distance.h"
-#include "meshdiff/smoothing.h"
-#include "meshdiff/smoothing_record.h"
-#include "meshdiff/surface_distance.h"
-#include "meshdiff/topology.h"
 #include "meshdiff/version.h"
-#include "meshdiff/vertex_maps.h"
+
+#include "meshdiff/core/mesh.h"
+#include "meshdiff/core/progress.h"
+#include "meshdiff/core/topology.h"
+
+#include "meshdiff/io/facts.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/io/output_file.h"
+
+#include "meshdiff/geometry/closest_point.h"
+#include "meshdiff/geometry/cotangent.h"
+#include "meshdiff/geometry/normalize.h"
+#include "meshdiff/geometry/normals.h"
+#include "meshdiff/geometry/point_triangle.h"
+#include "meshdiff/geometry/sampling.h"
+
+#include "meshdiff/roughness/corsini.h"
+#include "meshdiff/roughness/curvature.h"
+#include "meshdiff/roughness/metric_levels.h"
+#include "meshdiff/roughness/neighborhood.h"
+#include "meshdiff/roughness/roughness.h"
+#include "meshdiff/roughness/roughness_distance.h"
+
+#include "meshdiff/distance/cloud_distance.h"
+#include "meshdiff/distance/distance_kind.h"
+#include "meshdiff/distance/hausdorff.h"
+#include "meshdiff/distance/same_connectivity.h"
+#include "meshdiff/distance/sample_cloud.h"
+#include "meshdiff/distance/signed_distance.h"
+#include "meshdiff/distance/surface_distance.h"
+
+#include "meshdiff/studies/generate.h"
+#include "meshdiff/studies/noise.h"
+#include "meshdiff/studies/shapes.h"
+#include "meshdiff/studies/smoothing.h"
+#include "meshdiff/studies/smoothing_record.h"
+
+#include "meshdiff/compare.h"
+#include "meshdiff/options.h"

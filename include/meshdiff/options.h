@@ -9,9 +9,9 @@
 //! front end words with its own spelling (options_fields() lists the fields).
 #pragma once
 
+#include "meshdiff/distance/hausdorff.h"
 #include "meshdiff/enum_names.h"
 #include "meshdiff/error.h"
-#include "meshdiff/hausdorff.h"
 
 #include <array>
 #include <cstddef>

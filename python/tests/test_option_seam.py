@@ -461,7 +461,7 @@ def test_tools_hold_no_limit_or_rule():
     # An exit code (as coreutils' timeout), and how the terminal display and batch-summary's text
     # look (no option sets them; they change no result): not limits or defaults of an option.
     allowed = {"kPairTimeout", "kShown", "kTerminalDelay", "kRedraw"}
-    for path in sorted(tools.glob("*.[ch]*")):
+    for path in sorted(tools.rglob("*.[ch]*")):  # tools/ and tools/batch/
         text = path.read_text()
         for name in re.findall(r"constexpr\s+[\w:<>]+\s+(\w+)\s*(?:=\s*|\{)[\d.]", text):
             assert name in allowed, f"{path.name}: constexpr {name} is a number defined in tools/"

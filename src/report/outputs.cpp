@@ -1,14 +1,14 @@
 #include "meshdiff/report/outputs.h"
 
+#include "meshdiff/core/progress.h"
+#include "meshdiff/distance/sample_cloud.h"
 #include "meshdiff/error.h"
-#include "meshdiff/facts.h"
+#include "meshdiff/io/facts.h"
+#include "meshdiff/io/output_file.h"
 #include "meshdiff/options.h"
-#include "meshdiff/output_file.h"
-#include "meshdiff/progress.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/text.h"
-#include "meshdiff/sample_cloud.h"
-#include "meshdiff/vertex_maps.h"
+#include "meshdiff/report/vertex_maps.h"
 
 #include <fmt/format.h>
 #include <omp.h>

@@ -3,7 +3,7 @@
 // Usage: compare_json ORIGINAL PROCESSED
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
+#include "meshdiff/io/io.h"
 #include "meshdiff/report/json.h"
 
 #include <iostream>

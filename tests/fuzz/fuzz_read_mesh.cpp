@@ -3,7 +3,7 @@
 // meshdiff::Error is a correct answer; a crash, a sanitizer report, a hang
 // (-timeout) or runaway memory (-rss_limit_mb) is a bug. See scripts/fuzz.sh.
 #include "meshdiff/error.h"
-#include "meshdiff/io.h"
+#include "meshdiff/io/io.h"
 
 #include <unistd.h>
 

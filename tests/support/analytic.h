@@ -2,7 +2,7 @@
 //! \brief Exact mean curvature of the analytic test surfaces (METHOD.md section 4).
 #pragma once
 
-#include "meshdiff/mesh.h"
+#include "meshdiff/core/mesh.h"
 
 namespace meshdiff::test {
 

@@ -8,11 +8,11 @@
 #pragma once
 
 #include "meshdiff/compare.h"
-#include "meshdiff/facts.h"
-#include "meshdiff/roughness.h"
-#include "meshdiff/roughness_distance.h"
-#include "meshdiff/smoothing_record.h"
-#include "meshdiff/surface_distance.h"
+#include "meshdiff/distance/surface_distance.h"
+#include "meshdiff/io/facts.h"
+#include "meshdiff/roughness/roughness.h"
+#include "meshdiff/roughness/roughness_distance.h"
+#include "meshdiff/studies/smoothing_record.h"
 
 #include <nlohmann/json.hpp>
 

@@ -9,9 +9,9 @@
 #pragma once
 
 #include "meshdiff/compare.h"
-#include "meshdiff/corsini.h"
-#include "meshdiff/io.h"
-#include "meshdiff/roughness.h"
+#include "meshdiff/io/io.h"
+#include "meshdiff/roughness/corsini.h"
+#include "meshdiff/roughness/roughness.h"
 
 #include <nlohmann/json.hpp>
 

@@ -5,11 +5,11 @@
 #pragma once
 
 #include "meshdiff/compare.h"
-#include "meshdiff/facts.h"
-#include "meshdiff/noise.h"
-#include "meshdiff/roughness.h"
-#include "meshdiff/shapes.h"
-#include "meshdiff/smoothing.h"
+#include "meshdiff/io/facts.h"
+#include "meshdiff/roughness/roughness.h"
+#include "meshdiff/studies/noise.h"
+#include "meshdiff/studies/shapes.h"
+#include "meshdiff/studies/smoothing.h"
 
 #include <optional>
 #include <string>

@@ -1,0 +1,5 @@
+//! \file corsini.h
+//! \brief The 0.2 path of meshdiff/roughness/corsini.h: forwards to it, and goes at 0.3.
+#pragma once
+
+#include "meshdiff/roughness/corsini.h"

@@ -1,0 +1,5 @@
+//! \file noise.h
+//! \brief The 0.2 path of meshdiff/studies/noise.h: forwards to it, and goes at 0.3.
+#pragma once
+
+#include "meshdiff/studies/noise.h"

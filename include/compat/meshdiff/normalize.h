@@ -1,0 +1,5 @@
+//! \file normalize.h
+//! \brief The 0.2 path of meshdiff/geometry/normalize.h: forwards to it, and goes at 0.3.
+#pragma once
+
+#include "meshdiff/geometry/normalize.h"

@@ -1,0 +1,5 @@
+//! \file surface_distance.h
+//! \brief The 0.2 path of meshdiff/distance/surface_distance.h: forwards to it, and goes at 0.3.
+#pragma once
+
+#include "meshdiff/distance/surface_distance.h"

@@ -1,0 +1,93 @@
+//! \file topology.h
+//! \brief The topology of a triangle mesh: vertex adjacency, vertex-face
+//! incidence, unique edges, boundary and degenerate masks, and the topology
+//! report of METHOD.md section 1. All of meshdiff takes these from here.
+//!
+//! "Degenerate" has one meaning in meshdiff: a face is degenerate when it has a
+//! repeated corner or its area is zero relative to the mesh, |cross| <=
+//! kDegenerateArea x diag^2. Two numerical guards of a different kind sit beside
+//! it and are documented with it: kFlatCornerSine (cotangent.h: a corner too
+//! flat for a finite cotangent) and kThinTriangleSine (point_triangle.h: a
+//! triangle too thin for the face-region projection). Neither changes which
+//! faces count as degenerate.
+#pragma once
+
+#include "meshdiff/core/mesh.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace meshdiff {
+
+//! A face is degenerate (zero area) when |cross| <= kDegenerateArea x diag^2,
+//! diag the bounding-box diagonal of its mesh: at 1e-14 this is area at the
+//! level of rounding of the coordinates, so no real face of a mesh is lost.
+constexpr double kDegenerateArea = 1e-14;
+
+//! Compressed sparse row adjacency: the neighbours of vertex i are
+//! `index[offset[i]] .. index[offset[i+1]-1]`, sorted ascending, without i.
+struct Adjacency
+{
+    std::vector<std::uint32_t> offset;  //!< size n+1
+    std::vector<std::uint32_t> index;
+
+    std::size_t size() const { return offset.empty() ? 0 : offset.size() - 1; }
+    std::size_t degree(std::size_t i) const { return offset[i + 1] - offset[i]; }
+    const std::uint32_t* begin(std::size_t i) const { return index.data() + offset[i]; }
+    const std::uint32_t* end(std::size_t i) const { return index.data() + offset[i + 1]; }
+};
+
+//! Vertex-vertex adjacency over mesh edges (each face contributes its three
+//! edges; edges shared by several faces appear once).
+Adjacency vertex_adjacency(const Mesh& mesh);
+
+//! An undirected edge a < b and the lowest-numbered face that has it.
+struct Edge
+{
+    std::uint32_t a, b, face;
+};
+
+//! The unique undirected edges of the faces, sorted by (a, b), each with the
+//! lowest face that has it. Edges of a face with a repeated corner are kept
+//! unless their two ends coincide.
+std::vector<Edge> unique_edges(const Mesh& mesh);
+
+//! Mean length over the edges of \p adj (vertex_adjacency() of \p mesh), each
+//! edge counted once; 0 without edges.
+double mean_edge_length(const Mesh& mesh, const Adjacency& adj);
+
+//! Vertex-face incidence: the faces around vertex i, ascending.
+Adjacency vertex_faces(const Mesh& mesh);
+
+//! Topological facts of a mesh, all counts (METHOD.md section 1).
+struct TopologyReport
+{
+    std::size_t vertices = 0;
+    std::size_t faces = 0;
+    std::size_t edges = 0;
+    std::size_t components = 0;             //!< connected components over edges
+    std::size_t boundary_edges = 0;         //!< edges with exactly one face
+    std::size_t boundary_loops = 0;         //!< components of the boundary-edge graph
+    std::size_t non_manifold_edges = 0;     //!< edges with more than two faces
+    std::size_t non_manifold_vertices = 0;  //!< vertices whose faces form more than one fan
+    std::size_t degenerate_faces = 0;       //!< zero-area faces (relative to the bbox)
+    std::size_t duplicate_faces = 0;        //!< faces on the same vertex set as an earlier one
+    std::size_t orientation_conflicts = 0;  //!< edges used twice in the same direction
+    std::size_t isolated_vertices = 0;      //!< vertices in no face
+    bool closed() const { return boundary_edges == 0; }
+};
+TopologyReport topology_report(const Mesh& mesh);
+
+//! Per-face flag: true where the face is degenerate (see kDegenerateArea):
+//! a repeated corner, or |cross| <= kDegenerateArea x diag^2 (cross: the
+//! face's cross product of two edges, twice its area; diag: the mesh's
+//! bounding-box diagonal). Such faces contribute no normal, no curvature term
+//! and no face samples.
+std::vector<char> degenerate_face_mask(const Mesh& mesh);
+
+//! Per-vertex flag: true where the vertex lies on a boundary edge (an edge
+//! with exactly one face) or on a non-manifold edge.
+std::vector<char> boundary_vertex_mask(const Mesh& mesh);
+
+}  // namespace meshdiff

@@ -1,0 +1,314 @@
+#include "meshdiff/core/topology.h"
+
+#include "meshdiff/core/progress.h"
+
+#include "core/union_find.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace meshdiff {
+
+namespace {
+
+// Undirected edge key with the smaller index in the high word.
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b)
+{
+    if (a > b) std::swap(a, b);
+    return (std::uint64_t(a) << 32) | b;
+}
+
+using detail::UnionFind;
+
+// One record per (face, edge): the undirected key, whether the face walks the
+// edge from the smaller to the larger index, and the face.
+struct HalfEdge
+{
+    std::uint64_t key;
+    std::uint32_t face;
+    bool forward;
+};
+
+std::vector<HalfEdge> sorted_half_edges(const Mesh& mesh)
+{
+    // Counting sort by the smaller vertex, then small sorts per bucket.
+    const std::size_t n = mesh.n_vertices();
+    std::vector<std::uint32_t> start(n + 1, 0);
+    for (const Face& t : mesh.faces)
+        for (int k = 0; k < 3; ++k) {
+            const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
+            if (a != b) ++start[std::min(a, b) + 1];
+        }
+    for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+    std::vector<HalfEdge> he(start[n]);
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+        const Face& t = mesh.faces[f];
+        for (int k = 0; k < 3; ++k) {
+            const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
+            if (a == b) continue;
+            he[fill[std::min(a, b)]++] = {edge_key(a, b), std::uint32_t(f), a < b};
+        }
+    }
+    auto less = [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.face < y.face; };
+    for (std::size_t i = 0; i < n; ++i) std::sort(he.begin() + start[i], he.begin() + start[i + 1], less);
+    return he;
+}
+
+}  // namespace
+
+namespace {
+
+// CSR from a row-count pass and a fill pass (counting sort), then each row
+// sorted and deduplicated: O(entries) plus small sorts, no global sort.
+template <class ForEachEntry>
+Adjacency build_csr(std::size_t n, ForEachEntry&& for_each_entry, bool dedupe)
+{
+    Adjacency adj;
+    adj.offset.assign(n + 1, 0);
+    for_each_entry([&](std::uint32_t row, std::uint32_t) { ++adj.offset[row + 1]; });
+    for (std::size_t i = 0; i < n; ++i) adj.offset[i + 1] += adj.offset[i];
+    adj.index.resize(adj.offset[n]);
+    std::vector<std::uint32_t> fill(adj.offset.begin(), adj.offset.end() - 1);
+    for_each_entry([&](std::uint32_t row, std::uint32_t col) { adj.index[fill[row]++] = col; });
+    if (!dedupe) return adj;
+    std::uint32_t out = 0;
+    std::uint32_t row_start = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t b = row_start, e = adj.offset[i + 1];
+        std::sort(adj.index.begin() + b, adj.index.begin() + e);
+        row_start = e;
+        adj.offset[i] = out;
+        for (std::uint32_t k = b; k < e; ++k)
+            if (k == b || adj.index[k] != adj.index[k - 1]) adj.index[out++] = adj.index[k];
+    }
+    adj.offset[n] = out;
+    adj.index.resize(out);
+    adj.index.shrink_to_fit();
+    return adj;
+}
+
+}  // namespace
+
+Adjacency vertex_adjacency(const Mesh& mesh)
+{
+    return build_csr(
+        mesh.n_vertices(),
+        [&](auto&& emit) {
+            for (const Face& t : mesh.faces)
+                for (int k = 0; k < 3; ++k) {
+                    const auto a = std::uint32_t(t[k]);
+                    const auto b = std::uint32_t(t[(k + 1) % 3]);
+                    if (a == b) continue;
+                    emit(a, b);
+                    emit(b, a);
+                }
+        },
+        true);
+}
+
+Adjacency vertex_faces(const Mesh& mesh)
+{
+    // Faces are visited in order, so each row comes out ascending.
+    return build_csr(
+        mesh.n_vertices(),
+        [&](auto&& emit) {
+            for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+                for (auto v : mesh.faces[f]) emit(std::uint32_t(v), std::uint32_t(f));
+        },
+        false);
+}
+
+std::vector<char> degenerate_face_mask(const Mesh& mesh)
+{
+    const double diag = bounding_box(mesh).diagonal();
+    const double eps = kDegenerateArea * diag * diag;
+    std::vector<char> mask(mesh.n_faces(), 0);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+        const Face& t = mesh.faces[f];
+        mask[f] = (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || !(face_cross(mesh, f).norm() > eps)) ? 1 : 0;
+    }
+    return mask;
+}
+
+std::vector<Edge> unique_edges(const Mesh& mesh)
+{
+    // Half-edges are sorted by (key, face): the first of each key has the lowest face.
+    const auto he = sorted_half_edges(mesh);
+    std::vector<Edge> edges;
+    edges.reserve(he.size() / 2 + 1);
+    for (std::size_t i = 0; i < he.size(); ++i)
+        if (i == 0 || he[i].key != he[i - 1].key)
+            edges.push_back({std::uint32_t(he[i].key >> 32), std::uint32_t(he[i].key & 0xffffffffu), he[i].face});
+    return edges;
+}
+
+std::vector<char> boundary_vertex_mask(const Mesh& mesh)
+{
+    std::vector<char> mask(mesh.n_vertices(), 0);
+    const auto he = sorted_half_edges(mesh);
+    for (std::size_t i = 0; i < he.size();) {
+        std::size_t j = i;
+        while (j < he.size() && he[j].key == he[i].key) ++j;
+        if (j - i != 2) {
+            mask[he[i].key >> 32] = 1;
+            mask[he[i].key & 0xffffffffu] = 1;
+        }
+        i = j;
+    }
+    return mask;
+}
+
+TopologyReport topology_report(const Mesh& mesh)
+{
+    TopologyReport r;
+    const std::size_t n = mesh.n_vertices();
+    r.vertices = n;
+    r.faces = mesh.n_faces();
+
+    // A Progress (progress.h) can stop the report between its serial steps.
+    const Progress* progress = current_progress();
+    const auto he = sorted_half_edges(mesh);
+    check_cancelled(progress);
+    UnionFind comp(n);
+    std::vector<std::uint64_t> boundary;
+    for (std::size_t i = 0; i < he.size();) {
+        std::size_t j = i;
+        std::size_t nfwd = 0;
+        while (j < he.size() && he[j].key == he[i].key) {
+            nfwd += he[j].forward ? 1 : 0;
+            ++j;
+        }
+        const std::size_t count = j - i;
+        ++r.edges;
+        const auto a = std::uint32_t(he[i].key >> 32);
+        const auto b = std::uint32_t(he[i].key & 0xffffffffu);
+        comp.unite(a, b);
+        if (count == 1) {
+            ++r.boundary_edges;
+            boundary.push_back(he[i].key);
+        }
+        if (count > 2) ++r.non_manifold_edges;
+        if (count == 2 && nfwd != 1) ++r.orientation_conflicts;
+        i = j;
+    }
+
+    std::vector<char> used(n, 0);
+    for (const Face& t : mesh.faces)
+        for (auto v : t) used[std::size_t(v)] = 1;
+    std::size_t roots = 0;
+    for (std::size_t v = 0; v < n; ++v) {
+        if (!used[v]) {
+            ++r.isolated_vertices;
+            continue;
+        }
+        if (comp.find(std::uint32_t(v)) == v) ++roots;
+    }
+    r.components = roots;
+    check_cancelled(progress);
+
+    // Boundary loops: connected components of the boundary-edge graph.
+    {
+        UnionFind bl(n);
+        std::vector<char> on_boundary(n, 0);
+        for (auto k : boundary) {
+            auto a = std::uint32_t(k >> 32), b = std::uint32_t(k & 0xffffffffu);
+            on_boundary[a] = on_boundary[b] = 1;
+            bl.unite(a, b);
+        }
+        for (std::size_t v = 0; v < n; ++v)
+            if (on_boundary[v] && bl.find(std::uint32_t(v)) == v) ++r.boundary_loops;
+    }
+
+    check_cancelled(progress);
+    // Duplicate faces: same vertex set. The sorted corners of each face,
+    // bucketed by the smallest (a counting sort), then the other two sorted
+    // within each bucket: every face equal to the one before it counts.
+    {
+        std::vector<std::uint32_t> start(n + 1, 0);
+        for (const Face& t : mesh.faces) ++start[std::size_t(std::min({t[0], t[1], t[2]})) + 1];
+        for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+        std::vector<std::uint64_t> rest(mesh.n_faces());  // the two larger corners, packed
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (const Face& t : mesh.faces) {
+            std::array<std::uint32_t, 3> c{std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])};
+            std::sort(c.begin(), c.end());
+            rest[fill[c[0]]++] = (std::uint64_t(c[1]) << 32) | c[2];
+        }
+        for (std::size_t v = 0; v < n; ++v) {
+            const auto b = rest.begin() + start[v], e = rest.begin() + start[v + 1];
+            std::sort(b, e);
+            for (auto it = b; it != e; ++it)
+                if (it != b && *it == *(it - 1)) ++r.duplicate_faces;
+        }
+    }
+
+    check_cancelled(progress);
+    const auto degenerate = degenerate_face_mask(mesh);
+    r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
+    check_cancelled(progress);
+
+    // Non-manifold vertices: the faces around v, linked through shared edges
+    // (v, w), form more than one fan. Each incident face gives two "other"
+    // vertices (v itself standing in for a repeated corner); two faces are
+    // linked when they share one. Up to kPairwiseFanDegree faces every pair is
+    // tested; above (a hub) the faces are grouped by their other vertices
+    // (a sort), so a vertex costs O(deg log deg), not O(deg^2). Both give the
+    // same count: the number of classes does not depend on the union order.
+    {
+        constexpr std::size_t kPairwiseFanDegree = 16;
+        const Adjacency vf = vertex_faces(mesh);
+        std::vector<std::uint32_t> other;                         // the two other vertices per incident face
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> by;  // (other vertex, face slot), hubs only
+        UnionFind fan;
+        for (std::size_t v = 0; v < n; ++v) {
+            const std::size_t deg = vf.degree(v);
+            if (deg <= 1) continue;
+            other.clear();
+            for (auto it = vf.begin(v); it != vf.end(v); ++it) {
+                const Face& t = mesh.faces[*it];
+                const std::size_t start = other.size();
+                for (auto w : t)
+                    if (std::size_t(w) != v) other.push_back(std::uint32_t(w));
+                // A face with a repeated corner: v stands for the missing ones
+                // (two of them if all three corners are v).
+                while (other.size() < start + 2) other.push_back(std::uint32_t(v));
+            }
+            fan.reset(deg);
+            std::size_t fans = deg;
+            if (deg <= kPairwiseFanDegree) {
+                for (std::size_t a = 0; a < deg; ++a)
+                    for (std::size_t b = a + 1; b < deg; ++b) {
+                        const bool share = other[2 * a] == other[2 * b] || other[2 * a] == other[2 * b + 1] ||
+                                           other[2 * a + 1] == other[2 * b] || other[2 * a + 1] == other[2 * b + 1];
+                        if (share && fan.unite(std::uint32_t(a), std::uint32_t(b))) --fans;
+                    }
+            } else {
+                by.resize(2 * deg);
+                for (std::size_t k = 0; k < 2 * deg; ++k) by[k] = {other[k], std::uint32_t(k / 2)};
+                std::sort(by.begin(), by.end());
+                for (std::size_t k = 1; k < by.size(); ++k)
+                    if (by[k].first == by[k - 1].first && fan.unite(by[k].second, by[k - 1].second)) --fans;
+            }
+            if (fans > 1) ++r.non_manifold_vertices;
+        }
+    }
+    return r;
+}
+
+double mean_edge_length(const Mesh& mesh, const Adjacency& adj)
+{
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < adj.size(); ++i)
+        for (auto j = adj.begin(i); j != adj.end(i); ++j)
+            if (*j > i) {
+                sum += (mesh.points[*j] - mesh.points[i]).norm();
+                ++n;
+            }
+    return n ? sum / double(n) : 0.0;
+}
+
+}  // namespace meshdiff

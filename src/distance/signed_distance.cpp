@@ -1,0 +1,315 @@
+#include "meshdiff/distance/signed_distance.h"
+
+#include "meshdiff/core/topology.h"
+#include "meshdiff/error.h"
+
+#include "core/compensated_sum.h"
+#include "geometry/point_triangle_kernels.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+namespace meshdiff {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+ClosestFeature feature(const Vec3& point, FeatureKind kind, int index)
+{
+    return {point, kind, std::uint8_t(index)};
+}
+
+// detail::segment_point() with the region: corner u, corner v or the edge.
+ClosestFeature segment_feature(const Vec3& p, const Vec3& a, const Vec3& b, int ia, int ib, int edge)
+{
+    const Vec3 ab = b - a;
+    const double len2 = ab.squaredNorm();
+    if (!(len2 > 0.0)) return feature(a, FeatureKind::Vertex, ia);
+    const double t = ab.dot(p - a) / len2;
+    if (t <= 0.0) return feature(a, FeatureKind::Vertex, ia);
+    if (t >= 1.0) return feature(b, FeatureKind::Vertex, ib);
+    return feature(a + t * ab, FeatureKind::Edge, edge);
+}
+
+// detail::thin_triangle_point() with the region.
+ClosestFeature thin_feature(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    ClosestFeature best = segment_feature(p, a, b, 0, 1, 0);
+    double best_d2 = (p - best.point).squaredNorm();
+    const ClosestFeature bc = segment_feature(p, b, c, 1, 2, 1);
+    const double d_bc = (p - bc.point).squaredNorm();
+    if (d_bc < best_d2) {
+        best_d2 = d_bc;
+        best = bc;
+    }
+    const ClosestFeature ca = segment_feature(p, c, a, 2, 0, 2);
+    if ((p - ca.point).squaredNorm() < best_d2) best = ca;
+    return best;
+}
+
+// detail::triangle_point() with the region, branch for branch.
+ClosestFeature face_feature(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    const Vec3 ab = b - a;
+    const Vec3 ac = c - a;
+    const Vec3 ap = p - a;
+    const double d1 = ab.dot(ap);
+    const double d2 = ac.dot(ap);
+    if (d1 <= 0.0 && d2 <= 0.0) return feature(a, FeatureKind::Vertex, 0);
+
+    const Vec3 bp = p - b;
+    const double d3 = ab.dot(bp);
+    const double d4 = ac.dot(bp);
+    if (d3 >= 0.0 && d4 <= d3) return feature(b, FeatureKind::Vertex, 1);
+
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return feature(a + (d1 / (d1 - d3)) * ab, FeatureKind::Edge, 0);
+
+    const Vec3 cp = p - c;
+    const double d5 = ab.dot(cp);
+    const double d6 = ac.dot(cp);
+    if (d6 >= 0.0 && d5 <= d6) return feature(c, FeatureKind::Vertex, 2);
+
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return feature(a + (d2 / (d2 - d6)) * ac, FeatureKind::Edge, 2);
+
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
+        return feature(b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b), FeatureKind::Edge, 1);
+
+    const Vec3 n = ab.cross(ac);
+    return feature(p - (n.dot(ap) / n.squaredNorm()) * n, FeatureKind::Interior, 0);
+}
+
+// Angle between u and v, stable for small and large angles.
+double angle(const Vec3& u, const Vec3& v)
+{
+    return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+}  // namespace
+
+ClosestFeature closest_feature(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    return detail::is_thin_triangle(a, b, c) ? thin_feature(p, a, b, c) : face_feature(p, a, b, c);
+}
+
+namespace {
+
+// The facts that decide whether a mesh can be signed against, counted as
+// topology_report() counts them (the non-manifold vertices only when the edges
+// are fine), and the opposite half-edge of each half-edge of a closed,
+// edge-manifold, consistently oriented mesh. One pass over the half-edges and
+// the faces around their first vertex (no sort).
+struct SignFacts
+{
+    std::size_t boundary_edges = 0, non_manifold_edges = 0, orientation_conflicts = 0, degenerate_faces = 0,
+                non_manifold_vertices = 0;
+    std::vector<std::uint32_t> opposite;  // per half-edge 3 f + k: the opposite half-edge 3 g + j
+    bool ok() const
+    {
+        return !boundary_edges && !non_manifold_edges && !orientation_conflicts && !degenerate_faces &&
+               !non_manifold_vertices;
+    }
+};
+
+SignFacts sign_facts(const Mesh& mesh)
+{
+    SignFacts r;
+    const std::size_t nf = mesh.n_faces();
+    const std::vector<char> degenerate = degenerate_face_mask(mesh);
+    r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
+    const Adjacency vf = vertex_faces(mesh);
+    constexpr std::uint32_t kNone = ~0u;
+    r.opposite.assign(3 * nf, kNone);
+    for (std::size_t f = 0; f < nf; ++f) {
+        const Face& t = mesh.faces[f];
+        for (std::size_t k = 0; k < 3; ++k) {
+            const auto u = std::uint32_t(t[k]), v = std::uint32_t(t[(k + 1) % 3]);
+            if (u == v) continue;  // a repeated corner: no edge (topology.h)
+            const std::size_t self = 3 * f + k;
+            std::size_t same = 0, opp = 0, first = self, opposite = kNone;
+            // The other half-edges of {u, v}, from the faces around the end of
+            // lower degree (a hub of degree D then costs O(D), not O(D^2)).
+            auto found = [&](std::size_t h, bool same_direction) {
+                if (h == self) return;
+                if (same_direction) {
+                    ++same;
+                } else {
+                    ++opp;
+                    opposite = h;
+                }
+                first = std::min(first, h);
+            };
+            const bool at_u = vf.degree(u) <= vf.degree(v);
+            const std::uint32_t w = at_u ? u : v;
+            const std::uint32_t x = at_u ? v : u;
+            for (auto g = vf.begin(w); g != vf.end(w); ++g) {
+                const Face& s = mesh.faces[*g];
+                for (std::size_t j = 0; j < 3; ++j) {
+                    if (std::uint32_t(s[j]) != w) continue;
+                    const std::size_t out = 3 * std::size_t(*g) + j;           // w -> s[j + 1]
+                    const std::size_t in = 3 * std::size_t(*g) + (j + 2) % 3;  // s[j + 2] -> w
+                    // At u: u -> v is the same direction, v -> u the opposite; at v the reverse.
+                    if (std::uint32_t(s[(j + 1) % 3]) == x) found(out, at_u);
+                    if (std::uint32_t(s[(j + 2) % 3]) == x) found(in, !at_u);
+                }
+            }
+            if (opp == 1 && same == 0) r.opposite[self] = std::uint32_t(opposite);
+            if (first != self) continue;  // the edge is counted at its first half-edge
+            const std::size_t count = 1 + same + opp;
+            if (count == 1) ++r.boundary_edges;
+            if (count > 2) ++r.non_manifold_edges;
+            if (count == 2 && same == 1) ++r.orientation_conflicts;
+        }
+    }
+    if (r.boundary_edges || r.non_manifold_edges || r.orientation_conflicts || r.degenerate_faces) return r;
+    // Fans: around each vertex, the corners linked through the opposite
+    // half-edges form cycles; more than one cycle is a non-manifold vertex.
+    std::vector<char> visited(3 * nf, 0);
+    std::vector<std::uint8_t> fans(mesh.n_vertices(), 0);
+    for (std::size_t c0 = 0; c0 < 3 * nf; ++c0) {
+        if (visited[c0]) continue;
+        const auto u = std::size_t(mesh.faces[c0 / 3][c0 % 3]);
+        if (fans[u] < 2) ++fans[u];
+        std::size_t c = c0;
+        do {
+            visited[c] = 1;
+            const std::size_t h = r.opposite[c];  // the half-edge into u in the next face
+            c = 3 * (h / 3) + (h % 3 + 1) % 3;
+        } while (c != c0);
+    }
+    r.non_manifold_vertices = std::size_t(std::count(fans.begin(), fans.end(), 2));
+    return r;
+}
+
+std::string reason_of(const SignFacts& f, const std::string& name)
+{
+    if (f.ok()) return {};
+    auto count = [](std::size_t n, const char* one, const char* many) {
+        return fmt::format("{} {}", n, n == 1 ? one : many);
+    };
+    std::vector<std::string> why;
+    if (f.boundary_edges) why.push_back(count(f.boundary_edges, "boundary edge", "boundary edges"));
+    if (f.non_manifold_edges) why.push_back(count(f.non_manifold_edges, "non-manifold edge", "non-manifold edges"));
+    if (f.orientation_conflicts)
+        why.push_back(count(f.orientation_conflicts, "edge with inconsistent orientation",
+                            "edges with inconsistent orientation"));
+    if (f.degenerate_faces) why.push_back(count(f.degenerate_faces, "degenerate face", "degenerate faces"));
+    if (f.non_manifold_vertices)
+        why.push_back(count(f.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices"));
+    std::string s = name + " has ";
+    for (std::size_t i = 0; i < why.size(); ++i) s += (i == 0 ? "" : (i + 1 == why.size() ? " and " : ", ")) + why[i];
+    return s + " (the sign needs a closed, manifold, consistently oriented mesh without degenerate faces)";
+}
+
+}  // namespace
+
+std::string sign_unavailable_reason(const Mesh& mesh, const std::string& name)
+{
+    return reason_of(sign_facts(mesh), name);
+}
+
+std::optional<PseudoNormals> pseudo_normals(const Mesh& mesh, const std::string& name, std::string* reason)
+{
+    if (3 * std::uint64_t(mesh.n_faces()) >= std::uint64_t(~0u)) {
+        if (reason) *reason = fmt::format("{} has too many faces to be signed against ({})", name, mesh.n_faces());
+        return std::nullopt;
+    }
+    SignFacts facts = sign_facts(mesh);
+    std::string why = reason_of(facts, name);
+    const std::size_t nf = mesh.n_faces();
+    PseudoNormals n;
+    if (why.empty()) {
+        detail::CompensatedSum volume;
+        for (std::size_t f = 0; f < nf; ++f) {
+            const Face& t = mesh.faces[f];
+            const Vec3& a = mesh.points[std::size_t(t[0])];
+            volume.add(a.dot(face_cross(mesh, f)) / 6.0);
+        }
+        n.volume = volume.value();
+        // A closed mesh of zero volume (two coinciding sheets, say) has no inside.
+        const double diag = bounding_box(mesh).diagonal();
+        if (!(std::abs(n.volume) > 1e-12 * diag * diag * diag))
+            why = fmt::format("{} encloses no volume (signed volume {:.6g})", name, n.volume);
+    }
+    if (!why.empty()) {
+        if (reason) *reason = why;
+        return std::nullopt;
+    }
+    n.flipped = n.volume < 0.0;
+    const double s = n.flipped ? -1.0 : 1.0;
+    n.face.resize(nf);
+    for (std::size_t f = 0; f < nf; ++f) n.face[f] = s * face_cross(mesh, f).normalized();
+    n.vertex.assign(mesh.n_vertices(), Vec3::Zero());
+    for (std::size_t f = 0; f < nf; ++f) {
+        const Face& t = mesh.faces[f];
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Vec3& p = mesh.points[std::size_t(t[k])];
+            const Vec3& q = mesh.points[std::size_t(t[(k + 1) % 3])];
+            const Vec3& r = mesh.points[std::size_t(t[(k + 2) % 3])];
+            n.vertex[std::size_t(t[k])] += angle(q - p, r - p) * n.face[f];
+        }
+    }
+    n.opposite = std::move(facts.opposite);
+    return n;
+}
+
+int distance_sign(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p, std::uint32_t face)
+{
+    const Face& t = mesh.faces[face];
+    const ClosestFeature c = closest_feature(p, mesh.points[std::size_t(t[0])], mesh.points[std::size_t(t[1])],
+                                             mesh.points[std::size_t(t[2])]);
+    const Vec3 d = p - c.point;
+    if (d.isZero(0.0)) return 0;
+    const Vec3& nf = normals.face[face];
+    const double s = c.kind == FeatureKind::Interior ? d.dot(nf)
+                     : c.kind == FeatureKind::Edge
+                         ? d.dot(nf + normals.face[normals.opposite[3 * std::size_t(face) + c.index] / 3])
+                         : d.dot(normals.vertex[std::size_t(t[c.index])]);
+    return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
+}
+
+std::vector<double> signed_distances(const Mesh& mesh, const PseudoNormals& normals, const Vec3* queries,
+                                     const double* distances, const std::uint32_t* faces, std::size_t n)
+{
+    std::vector<double> out(n);
+    const auto m = std::int64_t(n);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < m; ++i) {
+        const auto k = std::size_t(i);
+        const int s = distances[k] > 0.0 ? distance_sign(mesh, normals, queries[k], faces[k]) : 0;
+        out[k] = s == 0 ? 0.0 : double(s) * distances[k];
+    }
+    return out;
+}
+
+void signed_query(const Mesh& mesh, const ClosestPointIndex& index, const PseudoNormals& normals, const Vec3* queries,
+                  std::size_t n, double* distances, std::int8_t* signs)
+{
+    index.distances(queries, n, distances, [&](std::size_t i, const ClosestPoint& c) {
+        signs[i] = std::int8_t(c.distance > 0.0 ? distance_sign(mesh, normals, queries[i], c.face) : 0);
+    });
+}
+
+double winding_number(const Mesh& mesh, const Vec3& p)
+{
+    detail::CompensatedSum sum;
+    for (const Face& t : mesh.faces) {
+        const Vec3 a = mesh.points[std::size_t(t[0])] - p;
+        const Vec3 b = mesh.points[std::size_t(t[1])] - p;
+        const Vec3 c = mesh.points[std::size_t(t[2])] - p;
+        const double la = a.norm(), lb = b.norm(), lc = c.norm();
+        const double num = a.dot(b.cross(c));
+        const double den = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+        sum.add(2.0 * std::atan2(num, den));
+    }
+    return sum.value() / (4.0 * kPi);
+}
+
+}  // namespace meshdiff

@@ -1,0 +1,63 @@
+// The samples of sample_surface() (meshdiff/geometry/sampling.h) in two steps: the
+// counts per vertex, edge and face are decided first (plan_samples()), then
+// SampleMaker makes the samples of any range of sample indices, so that a
+// caller can take the samples a range at a time (the surface distance does,
+// in bounded memory) and get exactly the samples of sample_surface().
+#pragma once
+
+#include "meshdiff/core/mesh.h"
+#include "meshdiff/core/topology.h"
+#include "meshdiff/geometry/sampling.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace meshdiff::detail {
+
+struct SamplePlan
+{
+    //! The counts, target and densities; no samples (points, kind, element empty).
+    SurfaceSamples counts;
+    std::vector<std::uint32_t> vertices;    //!< the vertex samples' vertices, in sample order
+    std::vector<Edge> edges;                //!< the unique edges (with edge samples on)
+    std::vector<std::size_t> edge_offset;   //!< first sample of each edge, then the end (edges + 1)
+    std::vector<std::uint32_t> face_order;  //!< lattice order k of each face (SimilarTriangles)
+    std::vector<std::size_t> face_offset;   //!< first sample of each face, then the end (faces + 1; or empty)
+    FaceSampling scheme = FaceSampling::SimilarTriangles;
+    std::uint64_t seed = 1;
+
+    std::size_t size() const { return counts.n_vertex + counts.n_edge + counts.n_face; }
+    //! Frees the vertex and edge lists: only face samples can be made after.
+    void drop_vertices_and_edges()
+    {
+        vertices = {};
+        edges = {};
+        edge_offset = {};
+    }
+};
+
+//! The counts of sample_surface(mesh, options), options and mesh valid
+//! (checks for cancellation in between, as sample_surface() does).
+SamplePlan plan_samples(const Mesh& mesh, const SamplingOptions& options);
+
+//! Makes the samples of a plan, a range of sample indices at a time. The
+//! MonteCarlo points come from one random stream drawn in sample order:
+//! ranges taken in increasing order cost no more than one pass.
+class SampleMaker
+{
+public:
+    SampleMaker(const Mesh& mesh, const SamplePlan& plan);
+    //! Samples [begin, end) (end <= plan.size()) into points, kind and
+    //! element [0, end - begin), bit for bit those of sample_surface().
+    void make(std::size_t begin, std::size_t end, Vec3* points, SampleKind* kind, std::uint32_t* element);
+
+private:
+    const Mesh& mesh_;
+    const SamplePlan& plan_;
+    std::mt19937_64 rng_;
+    std::size_t drawn_ = 0;  // the face sample (sample index) the random stream is at
+};
+
+}  // namespace meshdiff::detail

@@ -1,0 +1,361 @@
+#include "io/readers/ply_reader.h"
+
+#include "meshdiff/error.h"
+
+#include "io/readers/read_util.h"
+
+#include <fmt/format.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+
+namespace meshdiff::detail {
+
+namespace {
+
+enum class Type
+{
+    Int8,
+    UInt8,
+    Int16,
+    UInt16,
+    Int32,
+    UInt32,
+    Float32,
+    Float64
+};
+
+bool parse_type(const std::string& s, Type& t)
+{
+    static const std::pair<const char*, Type> names[] = {
+        {"char", Type::Int8},     {"int8", Type::Int8},       {"uchar", Type::UInt8},    {"uint8", Type::UInt8},
+        {"short", Type::Int16},   {"int16", Type::Int16},     {"ushort", Type::UInt16},  {"uint16", Type::UInt16},
+        {"int", Type::Int32},     {"int32", Type::Int32},     {"uint", Type::UInt32},    {"uint32", Type::UInt32},
+        {"float", Type::Float32}, {"float32", Type::Float32}, {"double", Type::Float64}, {"float64", Type::Float64}};
+    for (const auto& [name, type] : names)
+        if (s == name) {
+            t = type;
+            return true;
+        }
+    return false;
+}
+
+std::size_t type_size(Type t)
+{
+    switch (t) {
+        case Type::Int8:
+        case Type::UInt8:
+            return 1;
+        case Type::Int16:
+        case Type::UInt16:
+            return 2;
+        case Type::Int32:
+        case Type::UInt32:
+        case Type::Float32:
+            return 4;
+        case Type::Float64:
+            return 8;
+    }
+    return 0;
+}
+
+struct Property
+{
+    std::string name;
+    Type type = Type::Float32;
+    bool is_list = false;
+    Type count_type = Type::UInt8;
+};
+
+struct Element
+{
+    std::string name;
+    std::uint64_t count = 0;
+    std::vector<Property> props;
+};
+
+const bool kHostLittleEndian = [] {
+    const std::uint16_t one = 1;
+    unsigned char c;
+    std::memcpy(&c, &one, 1);
+    return c == 1;
+}();
+
+enum class Format
+{
+    Ascii,
+    BinaryLE,
+    BinaryBE
+};
+
+class Source
+{
+public:
+    Source(const std::string& path, std::ifstream& in, Format f) : path_(path), in_(in), format_(f)
+    {
+        const auto start = in_.tellg();
+        in_.seekg(0, std::ios::end);
+        end_ = in_.tellg();
+        in_.seekg(start);
+        if (format_ != Format::Ascii) {
+            // The whole body at once: one read instead of millions of small ones.
+            body_.resize(end_ > start ? std::size_t(end_ - start) : 0);
+            in_.read(body_.data(), std::streamsize(body_.size()));
+            body_.resize(std::size_t(in_.gcount()));
+            pos_ = 0;
+        }
+    }
+
+    //! Bytes of the body not read yet.
+    std::uint64_t bytes_left()
+    {
+        if (format_ != Format::Ascii) return body_.size() - pos_;
+        const auto at = in_.tellg();
+        return at >= 0 && end_ > at ? std::uint64_t(end_ - at) : 0;
+    }
+
+    //! \throw IoError if anything but white space follows the last element.
+    void expect_end()
+    {
+        if (format_ != Format::Ascii) {
+            if (pos_ < body_.size())
+                throw IoError(
+                    fmt::format("{}: {} bytes after the last element the PLY header declares (a wrong "
+                                "count?)",
+                                path_, body_.size() - pos_));
+            return;
+        }
+        std::string tok;
+        if (in_ >> tok)
+            throw IoError(fmt::format("{}: data after the last element the PLY header declares ({}; a wrong count?)",
+                                      path_, quote(tok)));
+    }
+
+    double value(Type t)
+    {
+        if (format_ == Format::Ascii) return ascii_value();
+        const std::size_t n = type_size(t);
+        if (body_.size() - pos_ < n) throw IoError(fmt::format("{}: binary PLY ends early (truncated file?)", path_));
+        const auto* buf = reinterpret_cast<const unsigned char*>(body_.data() + pos_);
+        pos_ += n;
+        if (format_ == Format::BinaryLE && kHostLittleEndian) {
+            switch (t) {
+                case Type::Float32: {
+                    float f;
+                    std::memcpy(&f, buf, 4);
+                    return double(f);
+                }
+                case Type::Float64: {
+                    double d;
+                    std::memcpy(&d, buf, 8);
+                    return d;
+                }
+                case Type::Int32: {
+                    std::int32_t i;
+                    std::memcpy(&i, buf, 4);
+                    return double(i);
+                }
+                case Type::UInt8:
+                    return double(buf[0]);
+                default:
+                    break;
+            }
+        }
+        const bool little = format_ == Format::BinaryLE;
+        std::uint64_t bits = 0;
+        for (std::size_t i = 0; i < n; ++i) bits |= std::uint64_t(buf[little ? i : n - 1 - i]) << (8 * i);
+        switch (t) {
+            case Type::Int8:
+                return double(std::int8_t(bits));
+            case Type::UInt8:
+                return double(std::uint8_t(bits));
+            case Type::Int16:
+                return double(std::int16_t(bits));
+            case Type::UInt16:
+                return double(std::uint16_t(bits));
+            case Type::Int32:
+                return double(std::int32_t(bits));
+            case Type::UInt32:
+                return double(std::uint32_t(bits));
+            case Type::Float32: {
+                const auto b32 = std::uint32_t(bits);
+                float f;
+                std::memcpy(&f, &b32, 4);
+                return double(f);
+            }
+            case Type::Float64: {
+                double d;
+                std::memcpy(&d, &bits, 8);
+                return d;
+            }
+        }
+        return 0.0;
+    }
+
+private:
+    double ascii_value()
+    {
+        std::string tok;
+        if (!(in_ >> tok)) throw IoError(fmt::format("{}: ASCII PLY ends early (truncated file?)", path_));
+        const char* s = tok.c_str();
+        char* end = nullptr;
+        const double v = std::strtod(s, &end);
+        if (end == s || *end != '\0') throw IoError(fmt::format("{}: {} is not a number", path_, quote(tok)));
+        return v;
+    }
+
+    const std::string& path_;
+    std::ifstream& in_;
+    Format format_;
+    std::streampos end_ = 0;
+    std::string body_;
+    std::size_t pos_ = 0;
+};
+
+}  // namespace
+
+PlySoup read_ply(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError(fmt::format("{}: cannot open for reading", path));
+    std::string line;
+    if (!std::getline(in, line) || line.rfind("ply", 0) != 0)
+        throw IoError(fmt::format("{}: not a PLY file (no 'ply' magic line)", path));
+    Format format = Format::Ascii;
+    bool have_format = false;
+    std::vector<Element> elements;
+    bool ended = false;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::istringstream ss(line);
+        std::string word;
+        ss >> word;
+        if (word.empty() || word == "comment" || word == "obj_info") continue;
+        if (word == "format") {
+            std::string f;
+            ss >> f;
+            if (f == "ascii")
+                format = Format::Ascii;
+            else if (f == "binary_little_endian")
+                format = Format::BinaryLE;
+            else if (f == "binary_big_endian")
+                format = Format::BinaryBE;
+            else
+                throw IoError(fmt::format("{}: unknown PLY format {}", path, quote(f)));
+            have_format = true;
+        } else if (word == "element") {
+            std::vector<std::string_view> tok;
+            split(line, tok);
+            std::int64_t count = -1;
+            if (tok.size() != 3 || !parse_integer(tok[2], count))
+                throw IoError(fmt::format("{}: malformed PLY line {}", path, quote(line)));
+            if (count < 0) throw IoError(fmt::format("{}: PLY element {} has a negative count", path, quote(tok[1])));
+            Element e;
+            e.name = std::string(tok[1]);
+            e.count = std::uint64_t(count);
+            for (const Element& other : elements)
+                if (other.name == e.name)
+                    throw IoError(fmt::format("{}: two PLY elements named {}", path, quote(e.name)));
+            elements.push_back(e);
+        } else if (word == "property") {
+            if (elements.empty()) throw IoError(fmt::format("{}: PLY property before any element", path));
+            Property p;
+            std::string t;
+            ss >> t;
+            if (t == "list") {
+                std::string ct, it;
+                ss >> ct >> it >> p.name;
+                p.is_list = true;
+                if (!parse_type(ct, p.count_type) || !parse_type(it, p.type))
+                    throw IoError(fmt::format("{}: malformed PLY line {}", path, quote(line)));
+            } else {
+                ss >> p.name;
+                if (!parse_type(t, p.type)) throw IoError(fmt::format("{}: unknown PLY type in {}", path, quote(line)));
+            }
+            elements.back().props.push_back(p);
+        } else if (word == "end_header") {
+            ended = true;
+            break;
+        } else {
+            throw IoError(fmt::format("{}: unexpected PLY header line {}", path, quote(line)));
+        }
+    }
+    if (!ended || !have_format) throw IoError(fmt::format("{}: PLY header without format or end_header", path));
+
+    Source src(path, in, format);
+    PlySoup soup;
+    for (const Element& e : elements) {
+        int ix = -1, iy = -1, iz = -1, iface = -1;
+        for (std::size_t k = 0; k < e.props.size(); ++k) {
+            const auto& p = e.props[k];
+            if (e.name == "vertex" && !p.is_list) {
+                if (p.name == "x") ix = int(k);
+                if (p.name == "y") iy = int(k);
+                if (p.name == "z") iz = int(k);
+            }
+            if (e.name == "face" && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index"))
+                iface = int(k);
+        }
+        std::vector<int> scalar_slot(e.props.size(), -1);
+        if (e.name == "vertex") {
+            for (std::size_t k = 0; k < e.props.size(); ++k)
+                if (!e.props[k].is_list && int(k) != ix && int(k) != iy && int(k) != iz) {
+                    scalar_slot[k] = int(soup.scalar_names.size());
+                    soup.scalar_names.push_back(e.props[k].name);
+                    soup.scalar_values.emplace_back();
+                }
+        }
+        if (e.name == "vertex" && (ix < 0 || iy < 0 || iz < 0))
+            throw IoError(fmt::format("{}: PLY vertex element lacks x, y or z", path));
+        if (e.name == "face" && iface < 0)
+            throw IoError(fmt::format("{}: PLY face element lacks vertex_indices", path));
+        if (e.props.empty()) continue;  // no data, whatever the count
+        // Check the count against the bytes left before looping or allocating:
+        // an ASCII value takes at least 2 bytes, a binary one its size (a list
+        // at least its count).
+        std::uint64_t min_bytes = 0;
+        for (const auto& p : e.props)
+            min_bytes += format == Format::Ascii ? 2 : type_size(p.is_list ? p.count_type : p.type);
+        check_count(path, e.count, min_bytes, src.bytes_left(), fmt::format("{} elements", quote(e.name)));
+        if (e.name == "vertex") soup.points.reserve(std::size_t(e.count));
+        if (e.name == "face") soup.polygons.reserve(std::size_t(e.count));
+        double xyz[3] = {0, 0, 0};
+        std::vector<int> poly;
+        const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
+        for (std::uint64_t i = 0; i < e.count; ++i) {
+            for (std::size_t k = 0; k < e.props.size(); ++k) {
+                const auto& p = e.props[k];
+                if (p.is_list) {
+                    const double cnt = src.value(p.count_type);
+                    if (!(cnt >= 0 && cnt < 1e6))
+                        throw IoError(fmt::format("{}: {} {} has a list of {} entries", path, quote(e.name), i, cnt));
+                    if (int(k) == iface) poly.clear();
+                    for (std::size_t j = 0; j < std::size_t(cnt); ++j) {
+                        const double v = src.value(p.type);
+                        if (int(k) == iface) {
+                            if (!(v >= -2147483648.0 && v <= 2147483647.0))
+                                throw IoError(fmt::format("{}: face {} has index {}", path, i, v));
+                            poly.push_back(int(v));
+                        }
+                    }
+                } else {
+                    const double v = src.value(p.type);
+                    if (int(k) == ix) xyz[0] = v;
+                    if (int(k) == iy) xyz[1] = v;
+                    if (int(k) == iz) xyz[2] = v;
+                    if (scalar_slot[k] >= 0) soup.scalar_values[std::size_t(scalar_slot[k])].push_back(v);
+                }
+            }
+            if (is_vertex) soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+            if (is_face) soup.polygons.push_back(poly);
+        }
+    }
+    src.expect_end();
+    return soup;
+}
+
+}  // namespace meshdiff::detail

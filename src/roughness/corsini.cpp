@@ -1,0 +1,255 @@
+#include "meshdiff/roughness/corsini.h"
+
+#include "meshdiff/core/topology.h"
+#include "meshdiff/error.h"
+#include "meshdiff/roughness/metric_levels.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace meshdiff {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+struct HalfEdge
+{
+    std::uint64_t key;  // (min << 32) | max
+    std::uint32_t face;
+    bool operator<(const HalfEdge& o) const { return key != o.key ? key < o.key : face < o.face; }
+};
+
+// The dihedral angle of each unique edge (sorted by (a, b)), NaN where none,
+// with the edge ends.
+struct DihedralEdges
+{
+    std::vector<std::uint32_t> a, b;
+    std::vector<double> theta;
+};
+
+DihedralEdges dihedral_edges(const Mesh& mesh)
+{
+    const std::vector<char> degenerate = degenerate_face_mask(mesh);
+    std::vector<Vec3> normal(mesh.n_faces(), Vec3::Zero());
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+        if (!degenerate[f]) normal[f] = face_cross(mesh, f).normalized();
+    std::vector<HalfEdge> he;
+    he.reserve(3 * mesh.n_faces());
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t p = mesh.faces[f][k], q = mesh.faces[f][(k + 1) % 3];
+            if (p == q) continue;
+            const std::uint64_t lo = std::min(p, q), hi = std::max(p, q);
+            he.push_back({(lo << 32) | hi, std::uint32_t(f)});
+        }
+    std::sort(he.begin(), he.end());
+    DihedralEdges e;
+    for (std::size_t i = 0; i < he.size();) {
+        std::size_t j = i;
+        while (j < he.size() && he[j].key == he[i].key) ++j;
+        double theta = kNaN;
+        // A repeated face (the same face twice on one edge) is not a pair.
+        if (j - i == 2 && he[i].face != he[i + 1].face && !degenerate[he[i].face] && !degenerate[he[i + 1].face]) {
+            const Vec3& n1 = normal[he[i].face];
+            const Vec3& n2 = normal[he[i + 1].face];
+            theta = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+        }
+        e.a.push_back(std::uint32_t(he[i].key >> 32));
+        e.b.push_back(std::uint32_t(he[i].key & 0xffffffffu));
+        e.theta.push_back(theta);
+        i = j;
+    }
+    return e;
+}
+
+// Variance from the sums of n values x (shifted), their sum and their sum of
+// squares; NaN when too few.
+double variance(double n, double s1, double s2, bool unbiased)
+{
+    if (n < (unbiased ? 2.0 : 1.0)) return kNaN;
+    const double mean = s1 / n;
+    const double ss = std::max(0.0, s2 - n * mean * mean);
+    return ss / (unbiased ? n - 1.0 : n);
+}
+
+}  // namespace
+
+void validate(const CorsiniOptions& o)
+{
+    if (o.levels.size() > kMaxLevels)
+        throw OptionError("profile.levels", fmt::format("more than the limit of {} levels", kMaxLevels));
+    for (int L : o.levels)
+        if (L < 1 || L > kMaxLevel)
+            throw OptionError("profile.levels", fmt::format("level {} is out of 1..{}", L, kMaxLevel));
+    if (o.levels.empty() && !o.global)
+        throw OptionError("profile.levels", "no level to compute: no ring level and no {profile.global} level");
+}
+
+std::vector<double> dihedral_angles(const Mesh& mesh)
+{
+    return dihedral_edges(mesh).theta;
+}
+
+CorsiniProfile corsini_profile(const Mesh& mesh, const CorsiniOptions& options)
+{
+    validate(options);
+    const std::size_t n = mesh.n_vertices();
+    CorsiniProfile p;
+    p.options = options;
+    p.vertices = n;
+    const DihedralEdges e = dihedral_edges(mesh);
+    p.edges = e.theta.size();
+    double sum = 0.0;
+    for (double t : e.theta)
+        if (!std::isnan(t)) {
+            ++p.dihedral_edges;
+            sum += t;
+            p.max_dihedral = std::max(p.max_dihedral, t);
+        }
+    p.mean_dihedral = p.dihedral_edges ? sum / double(p.dihedral_edges) : 0.0;
+    // Angles are summed about their mean, so that the variances do not
+    // cancel digits.
+    const double shift = p.mean_dihedral;
+
+    if (options.global) {
+        p.has_global = true;
+        double s1 = 0.0, s2 = 0.0;
+        for (double t : e.theta)
+            if (!std::isnan(t)) {
+                s1 += t - shift;
+                s2 += (t - shift) * (t - shift);
+            }
+        const double v = variance(double(p.dihedral_edges), s1, s2, options.unbiased);
+        p.global.level = 0;
+        p.global.roughness = std::isnan(v) ? 0.0 : v;
+        p.global.vertices_used = std::isnan(v) ? 0 : n;
+        p.global.no_neighborhood = std::isnan(v) ? n : 0;
+        p.global.mean_edges = std::isnan(v) ? 0.0 : double(p.dihedral_edges);
+    }
+    if (options.levels.empty()) return p;
+
+    // The angle of each adjacency slot (NaN where the edge has none).
+    const Adjacency adj = vertex_adjacency(mesh);
+    std::vector<double> slot(adj.index.size(), kNaN);
+    auto slot_of = [&](std::uint32_t from, std::uint32_t to) {
+        return std::size_t(std::lower_bound(adj.begin(from), adj.end(from), to) - adj.index.data());
+    };
+    for (std::size_t k = 0; k < e.theta.size(); ++k)
+        if (!std::isnan(e.theta[k])) {
+            slot[slot_of(e.a[k], e.b[k])] = e.theta[k] - shift;
+            slot[slot_of(e.b[k], e.a[k])] = e.theta[k] - shift;
+        }
+
+    const int max_level = *std::max_element(options.levels.begin(), options.levels.end());
+    const std::size_t nl = options.levels.size();
+    // Per vertex and requested level: R_L(v) and the number of angles.
+    std::vector<std::vector<double>> R(nl, std::vector<double>(n, kNaN));
+    std::vector<std::vector<double>> count(nl, std::vector<double>(n, 0.0));
+#pragma omp parallel
+    {
+        std::vector<int> dist(n, -1);
+        std::vector<std::uint32_t> queue;
+        // Sums over the edges whose farther end is at distance d (index d).
+        std::vector<double> c(std::size_t(max_level) + 1), s1(c.size()), s2(c.size());
+#pragma omp for schedule(dynamic, 256)
+        for (std::ptrdiff_t iv = 0; iv < std::ptrdiff_t(n); ++iv) {
+            const auto v = std::uint32_t(iv);
+            std::fill(c.begin(), c.end(), 0.0);
+            std::fill(s1.begin(), s1.end(), 0.0);
+            std::fill(s2.begin(), s2.end(), 0.0);
+            queue.clear();
+            queue.push_back(v);
+            dist[v] = 0;
+            // Breadth-first search to max_level. Each edge within the disk is
+            // counted once, at the end processed last: its farther end (by
+            // distance, then by id), so under the distance of that end.
+            for (std::size_t head = 0; head < queue.size(); ++head) {
+                const std::uint32_t u = queue[head];
+                const int du = dist[u];
+                for (auto it = adj.begin(u); it != adj.end(u); ++it) {
+                    const std::uint32_t w = *it;
+                    const int dw = dist[w];
+                    if (dw < 0) {
+                        if (du < max_level) {
+                            dist[w] = du + 1;
+                            queue.push_back(w);
+                        }
+                        continue;
+                    }
+                    if (dw < du || (dw == du && w < u)) {
+                        const double t = slot[std::size_t(it - adj.index.data())];
+                        if (std::isnan(t)) continue;
+                        c[std::size_t(du)] += 1.0;
+                        s1[std::size_t(du)] += t;
+                        s2[std::size_t(du)] += t * t;
+                    }
+                }
+            }
+            for (std::uint32_t u : queue) dist[u] = -1;
+            for (std::size_t d = 1; d < c.size(); ++d) {
+                c[d] += c[d - 1];
+                s1[d] += s1[d - 1];
+                s2[d] += s2[d - 1];
+            }
+            for (std::size_t k = 0; k < nl; ++k) {
+                const auto L = std::size_t(options.levels[k]);
+                R[k][v] = variance(c[L], s1[L], s2[L], options.unbiased);
+                count[k][v] = c[L];
+            }
+        }
+    }
+
+    const std::vector<double> area = vertex_areas(mesh);
+    double total = 0.0;
+    for (std::size_t k = 0; k < nl; ++k) {
+        CorsiniLevel l;
+        l.level = options.levels[k];
+        double num = 0.0, den = 0.0, edges = 0.0;
+        for (std::size_t v = 0; v < n; ++v) {
+            if (std::isnan(R[k][v])) {
+                ++l.no_neighborhood;
+                continue;
+            }
+            ++l.vertices_used;
+            num += area[v] * R[k][v];
+            den += area[v];
+            edges += count[k][v];
+        }
+        l.roughness = den > 0.0 ? num / den : 0.0;
+        l.mean_edges = l.vertices_used ? edges / double(l.vertices_used) : 0.0;
+        total += l.roughness;
+        p.levels.push_back(l);
+    }
+    p.multiscale = total / double(nl);
+    if (options.keep_vertex_data) p.R = std::move(R);
+    return p;
+}
+
+CorsiniDistance corsini_distance(const CorsiniProfile& a, const CorsiniProfile& b, double k)
+{
+    if (!(k > 0.0) || !std::isfinite(k)) throw OptionError("k", fmt::format("{} must be finite and > 0", k));
+    CorsiniDistance d;
+    d.k = k;
+    for (const auto& la : a.levels)
+        for (const auto& lb : b.levels)
+            if (la.level == lb.level) {
+                d.levels.push_back(level_distance(la.level, la.roughness, lb.roughness, k));
+                break;
+            }
+    if (a.has_global && b.has_global) {
+        d.has_global = true;
+        d.global = level_distance(0, a.global.roughness, b.global.roughness, k);
+    }
+    if (!a.levels.empty() && a.options.levels == b.options.levels) {
+        d.has_multiscale = true;
+        d.multiscale = level_distance(0, a.multiscale, b.multiscale, k);
+    }
+    return d;
+}
+
+}  // namespace meshdiff

@@ -1,0 +1,464 @@
+#include "meshdiff/roughness/curvature.h"
+
+#include "meshdiff/error.h"
+#include "meshdiff/geometry/cotangent.h"
+#include "meshdiff/geometry/normals.h"
+
+#include "core/stage_progress.h"
+
+#include <fmt/format.h>
+#include <Eigen/QR>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+namespace meshdiff {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+enum class FitResult
+{
+    Cubic,
+    Quadric,
+    Failed
+};
+
+// Squared distance, the one key of every "nearest" below.
+inline double dist2(const Vec3& a, const Vec3& b)
+{
+    return (a - b).squaredNorm();
+}
+
+using Ranked = std::pair<double, std::uint32_t>;  // (squared distance, vertex id): the order of "nearest"
+
+// A k-d tree over the neighbours of one hub vertex: the k nearest of them to a
+// point, exactly in the order (squared distance, id). First a radius that
+// certainly holds k of them: the k-th nearest within the smallest subtree on
+// the point's path that has k items; then every item within that radius (a
+// subtree is skipped only if its splitting plane alone is farther, so ties
+// are kept), and the k first of those.
+class HubTree
+{
+public:
+    HubTree(const std::vector<Vec3>& points, const std::uint32_t* first, const std::uint32_t* last)
+        : points_(&points), ids_(first, last)
+    {
+        nodes_.push_back({0, std::uint32_t(ids_.size())});
+        expand(0);
+    }
+
+    // The k nearest into `out` (cleared first), in no particular order.
+    void nearest(const Vec3& p, std::size_t k, std::vector<Ranked>& out) const
+    {
+        out.clear();
+        if (k == 0) return;
+        std::uint32_t node = 0;
+        while (nodes_[node].left != 0) {
+            const Node& n = nodes_[node];
+            const std::uint32_t child = p[n.axis] - n.split <= 0.0 ? n.left : n.left + 1;
+            if (nodes_[child].end - nodes_[child].begin < k) break;
+            node = child;
+        }
+        for (std::uint32_t i = nodes_[node].begin; i < nodes_[node].end; ++i)
+            out.push_back({dist2((*points_)[ids_[i]], p), ids_[i]});
+        if (out.size() > k) {
+            std::nth_element(out.begin(), out.begin() + std::ptrdiff_t(k - 1), out.end());
+            const double r2 = out[k - 1].first;
+            out.clear();
+            within(0, p, r2, out);
+            std::nth_element(out.begin(), out.begin() + std::ptrdiff_t(k - 1), out.end());
+            out.resize(k);
+        }
+    }
+
+private:
+    struct Node
+    {
+        std::uint32_t begin, end;  // the items of the subtree
+        std::uint32_t left = 0;    // children left, left + 1 (0: leaf)
+        int axis = 0;
+        double split = 0.0;
+    };
+    static constexpr std::uint32_t kLeaf = 8;
+    const std::vector<Vec3>* points_;
+    std::vector<std::uint32_t> ids_;
+    std::vector<Node> nodes_;
+
+    // Splits a node at the median of its longest axis, recursively; the
+    // children of a node are adjacent in nodes_. Items before the median have
+    // coordinate <= split, items from it on >= split.
+    void expand(std::uint32_t k_node)
+    {
+        const std::uint32_t begin = nodes_[k_node].begin, end = nodes_[k_node].end;
+        if (end - begin <= kLeaf) return;
+        const auto& pts = *points_;
+        Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+        for (std::uint32_t i = begin; i < end; ++i) {
+            lo = lo.cwiseMin(pts[ids_[i]]);
+            hi = hi.cwiseMax(pts[ids_[i]]);
+        }
+        int axis = 0;
+        (hi - lo).maxCoeff(&axis);
+        const std::uint32_t mid = begin + (end - begin) / 2;
+        std::nth_element(ids_.begin() + begin, ids_.begin() + mid, ids_.begin() + end,
+                         [&](std::uint32_t a, std::uint32_t b) {
+                             const double xa = pts[a][axis], xb = pts[b][axis];
+                             return xa < xb || (xa == xb && a < b);
+                         });
+        const auto left = std::uint32_t(nodes_.size());
+        nodes_.push_back({begin, mid});
+        nodes_.push_back({mid, end});
+        nodes_[k_node].left = left;
+        nodes_[k_node].axis = axis;
+        nodes_[k_node].split = pts[ids_[mid]][axis];
+        expand(left);
+        expand(left + 1);
+    }
+
+    void within(std::uint32_t k_node, const Vec3& p, double r2, std::vector<Ranked>& out) const
+    {
+        const Node& n = nodes_[k_node];
+        if (n.left == 0) {
+            for (std::uint32_t i = n.begin; i < n.end; ++i) {
+                const double d2 = dist2((*points_)[ids_[i]], p);
+                if (d2 <= r2) out.push_back({d2, ids_[i]});
+            }
+            return;
+        }
+        const double diff = p[n.axis] - n.split;
+        if (diff <= 0.0 || diff * diff <= r2) within(n.left, p, r2, out);
+        if (diff >= 0.0 || diff * diff <= r2) within(n.left + 1, p, r2, out);
+    }
+};
+
+// The k-d trees of the vertices of degree above kMaxFitNeighbors + 1 (hubs):
+// a 2-ring through such a vertex is always capped.
+struct HubTrees
+{
+    std::vector<std::int32_t> slot;  // per vertex: index in `trees`, or -1
+    std::vector<HubTree> trees;
+};
+
+constexpr std::size_t kHubDegree = kMaxFitNeighbors + 1;
+
+// A fit's matrices, with \p Rows7 and \p Rows3 rows at most (Eigen::Dynamic:
+// any number, on the heap).
+template <int Rows7, int Rows3>
+struct FitBuffers
+{
+    using Matrix7 = Eigen::Matrix<double, Eigen::Dynamic, 7, Eigen::ColMajor, Rows7, 7>;
+    using Vector7 = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, Rows7, 1>;
+    using Matrix3 = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::ColMajor, Rows3, 3>;
+    using Vector3 = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, Rows3, 1>;
+    Matrix7 M;
+    Vector7 rhs;
+    Matrix3 Q;
+    Vector3 qrhs;
+    // Kept between vertices: on the heap, Eigen reallocates only when the row count changes.
+    Eigen::ColPivHouseholderQR<Matrix7> qr7;
+    Eigen::ColPivHouseholderQR<Matrix3> qr3;
+};
+
+// Scratch space per thread: neighbourhood and least-squares system.
+struct FitScratch
+{
+    std::vector<std::uint32_t> nbrs;
+    std::vector<std::uint32_t> stamp;  // visited marks for the 2-ring
+    std::uint32_t mark = 0;
+    std::vector<Ranked> rest, near;  // candidates of a capped 2-ring
+    // The least-squares systems: sized at compile time for every fit but a
+    // hub's (up to kMaxFitNeighbors neighbours, three rows each), so that no
+    // fit allocates; on the heap for a hub's 1-ring. The arithmetic is the
+    // same on both (report corpus identical).
+    std::unique_ptr<FitBuffers<3 * int(kMaxFitNeighbors), int(kMaxFitNeighbors)>> fixed =
+        std::make_unique<FitBuffers<3 * int(kMaxFitNeighbors), int(kMaxFitNeighbors)>>();
+    FitBuffers<Eigen::Dynamic, Eigen::Dynamic> heap;
+};
+
+// The fitting neighbourhood of v into s.nbrs: the 1-ring, or, below
+// min_neighbors, the 2-ring (1-ring first, then in the order found), cut to
+// the 1-ring and the nearest others, kMaxFitNeighbors in all, when larger.
+void gather_neighbourhood(std::size_t v, const Mesh& mesh, const Adjacency& adj, const HubTrees& hubs,
+                          int min_neighbors, FitScratch& s, bool& widened, bool& capped)
+{
+    s.nbrs.assign(adj.begin(v), adj.end(v));
+    widened = false;
+    capped = false;
+    if (int(s.nbrs.size()) >= min_neighbors) return;
+    widened = true;
+    if (++s.mark == 0) {
+        std::fill(s.stamp.begin(), s.stamp.end(), 0u);
+        s.mark = 1;
+    }
+    s.stamp[v] = s.mark;
+    for (auto w : s.nbrs) s.stamp[w] = s.mark;
+    const std::size_t ring1 = s.nbrs.size();
+    bool through_hub = false;
+    for (std::size_t k = 0; k < ring1; ++k) {
+        if (!hubs.slot.empty() && hubs.slot[s.nbrs[k]] >= 0) {
+            through_hub = true;
+            continue;
+        }
+        for (auto it = adj.begin(s.nbrs[k]); it != adj.end(s.nbrs[k]); ++it)
+            if (s.stamp[*it] != s.mark) {
+                s.stamp[*it] = s.mark;
+                s.nbrs.push_back(*it);
+            }
+    }
+    if (!through_hub && s.nbrs.size() <= kMaxFitNeighbors) return;
+
+    // Capped: the 1-ring and the `keep` nearest of the rest of the 2-ring. The
+    // nearest `keep` of a hub's neighbours outside the 1-ring and v are among
+    // its keep + ring1 + 1 nearest (v and the 1-ring can take ring1 places).
+    capped = true;
+    const Vec3& p = mesh.points[v];
+    const std::size_t keep = kMaxFitNeighbors - ring1;
+    s.rest.clear();
+    for (std::size_t k = ring1; k < s.nbrs.size(); ++k) s.rest.push_back({dist2(mesh.points[s.nbrs[k]], p), s.nbrs[k]});
+    for (std::size_t k = 0; k < ring1; ++k) {
+        const std::int32_t slot = hubs.slot.empty() ? -1 : hubs.slot[s.nbrs[k]];
+        if (slot < 0) continue;
+        hubs.trees[std::size_t(slot)].nearest(p, keep + ring1 + 1, s.near);
+        for (const Ranked& r : s.near)
+            if (s.stamp[r.second] != s.mark) {
+                s.stamp[r.second] = s.mark;
+                s.rest.push_back(r);
+            }
+    }
+    const std::size_t take = std::min(keep, s.rest.size());
+    if (take < s.rest.size()) std::nth_element(s.rest.begin(), s.rest.begin() + std::ptrdiff_t(take), s.rest.end());
+    std::sort(s.rest.begin(), s.rest.begin() + std::ptrdiff_t(take));
+    s.nbrs.resize(ring1);
+    for (std::size_t k = 0; k < take; ++k) s.nbrs.push_back(s.rest[k].second);
+}
+
+// The fitting estimators (cubic with quadric fallback, or quadric only).
+// `dropped`: set when the cubic system left out a neighbour's normal rows (the
+// max_normal_angle_deg rule).
+template <class Buffers>
+FitResult fit_with(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
+                   bool cubic, const std::vector<std::uint32_t>& nbrs, Buffers& s, double& H, bool& dropped)
+{
+    dropped = false;
+    const Vec3& N = normals[v];
+    const Vec3& p = mesh.points[v];
+    // Any tangent frame with u x v = N.
+    const Vec3 helper = std::abs(N.x()) < 0.6 ? Vec3::UnitX() : (std::abs(N.y()) < 0.6 ? Vec3::UnitY() : Vec3::UnitZ());
+    const Vec3 u = N.cross(helper).normalized();
+    const Vec3 w = N.cross(u);
+
+    const std::size_t m = nbrs.size();
+    double h = 0.0;
+    for (auto q : nbrs) h += (mesh.points[q] - p).norm();
+    h /= double(m);
+    if (!(h > 0.0)) return FitResult::Failed;
+    const double inv_h = 1.0 / h;
+    const double cos_max = std::cos(opt.max_normal_angle_deg * M_PI / 180.0);
+    // Neighbour q in the scaled tangent frame, and its row weight.
+    auto local = [&](std::uint32_t q) {
+        const Vec3 d = (mesh.points[q] - p) * inv_h;
+        const double x = d.dot(u), y = d.dot(w);
+        const double wt =
+            opt.weighting == RowWeighting::InverseSquare && (x * x + y * y) > 0.0 ? 2.0 / (x * x + y * y) : 1.0;
+        return std::array<double, 4>{x, y, d.dot(N), wt};
+    };
+
+    if (cubic) {
+        if (s.M.rows() < Eigen::Index(3 * m)) {
+            s.M.resize(Eigen::Index(3 * m), 7);
+            s.rhs.resize(Eigen::Index(3 * m));
+        }
+        Eigen::Index r = 0;
+        for (auto q : nbrs) {
+            const auto [x, y, z, wt] = local(q);
+            s.M.row(r) << x * x / 2, x * y, y * y / 2, x * x * x, x * x * y, x * y * y, y * y * y;
+            s.M.row(r) *= wt;
+            s.rhs(r++) = wt * z;
+            const Vec3& n = normals[q];
+            const double a = n.dot(u), b = n.dot(w), c = n.dot(N);
+            if (c >= cos_max && c > 0.0) {
+                s.M.row(r) << x, y, 0, 3 * x * x, 2 * x * y, y * y, 0;
+                s.M.row(r) *= wt;
+                s.rhs(r++) = -wt * a / c;
+                s.M.row(r) << 0, x, y, 0, x * x, 2 * x * y, 3 * y * y;
+                s.M.row(r) *= wt;
+                s.rhs(r++) = -wt * b / c;
+            } else {
+                dropped = true;
+            }
+        }
+        if (r >= 7) {
+            auto& qr = s.qr7;
+            qr.setThreshold(1e-10);
+            qr.compute(s.M.topRows(r));
+            if (qr.rank() == 7) {
+                const Eigen::Matrix<double, 7, 1> X = qr.solve(s.rhs.head(r));
+                const double Hs = -(X(0) + X(2)) / 2.0;
+                if (std::isfinite(Hs)) {
+                    H = Hs * inv_h;
+                    return FitResult::Cubic;
+                }
+            }
+        }
+    }
+    // Position-only quadric.
+    s.Q.resize(Eigen::Index(m), 3);
+    s.qrhs.resize(Eigen::Index(m));
+    Eigen::Index r = 0;
+    for (auto q : nbrs) {
+        const auto [x, y, z, wt] = local(q);
+        s.Q.row(r) << wt * x * x / 2, wt * x * y, wt * y * y / 2;
+        s.qrhs(r++) = wt * z;
+    }
+    if (r < 3) return FitResult::Failed;
+    auto& qr = s.qr3;
+    qr.setThreshold(1e-10);
+    qr.compute(s.Q);
+    if (qr.rank() < 3) return FitResult::Failed;
+    const Eigen::Vector3d X = qr.solve(s.qrhs);
+    const double Hs = -(X(0) + X(2)) / 2.0;
+    if (!std::isfinite(Hs)) return FitResult::Failed;
+    H = Hs * inv_h;
+    return FitResult::Quadric;
+}
+
+FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
+                     bool cubic, FitScratch& s, double& H, bool& dropped)
+{
+    if (s.nbrs.size() <= kMaxFitNeighbors) return fit_with(v, mesh, normals, opt, cubic, s.nbrs, *s.fixed, H, dropped);
+    return fit_with(v, mesh, normals, opt, cubic, s.nbrs, s.heap, H, dropped);
+}
+
+CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const std::vector<Vec3>& normals,
+                                const CurvatureOptions& opt)
+{
+    const std::size_t n = mesh.n_vertices();
+    const bool cubic = opt.method == CurvatureMethod::GoldfeatherCubic;
+    CurvatureField field;
+    field.H.assign(n, kNaN);
+    // bit 0 widened, bit 1 fallback, bit 2 no normal, bit 3 capped, bit 4 normal rows dropped
+    std::vector<unsigned char> how(n, 0);
+    HubTrees hubs;
+    for (std::size_t v = 0; v < n; ++v)
+        if (adj.degree(v) > kHubDegree) {
+            if (hubs.slot.empty()) hubs.slot.assign(n, -1);
+            hubs.slot[v] = std::int32_t(hubs.trees.size());
+            hubs.trees.emplace_back(mesh.points, adj.begin(v), adj.end(v));
+        }
+    detail::StageProgress stage("curvature", n);
+#pragma omp parallel
+    {
+        FitScratch s;
+        s.stamp.assign(n, 0u);
+#pragma omp for schedule(dynamic, 1024)
+        for (std::ptrdiff_t iv = 0; iv < std::ptrdiff_t(n); ++iv) {
+            const auto v = std::size_t(iv);
+            if (!stage.tick()) continue;
+            if (normals[v].squaredNorm() == 0.0) {
+                how[v] = 4;
+                continue;
+            }
+            bool widened = false, capped = false;
+            gather_neighbourhood(v, mesh, adj, hubs, opt.min_neighbors, s, widened, capped);
+            if (capped) how[v] = 8;
+            if (s.nbrs.size() < 3) continue;
+            double H = kNaN;
+            bool dropped = false;
+            const FitResult r = fit_vertex(v, mesh, normals, opt, cubic, s, H, dropped);
+            if (r == FitResult::Failed) continue;
+            field.H[v] = H;
+            how[v] = static_cast<unsigned char>((widened ? 1 : 0) | (cubic && r == FitResult::Quadric ? 2 : 0) |
+                                                (capped ? 8 : 0) | (dropped ? 16 : 0));
+        }
+    }
+    stage.finish();
+    for (std::size_t v = 0; v < n; ++v) {
+        if (std::isnan(field.H[v])) ++field.undefined;
+        if (how[v] & 1) ++field.widened;
+        if (how[v] & 2) ++field.quadric_fallback;
+        if (how[v] & 4) ++field.no_normal;
+        if (how[v] & 16) ++field.normal_rows_dropped;
+        if (how[v] & 8) {
+            ++field.capped;
+            if (field.capped_vertices.size() < kCappedVerticesListed) field.capped_vertices.push_back(std::uint32_t(v));
+        }
+    }
+    return field;
+}
+
+CurvatureField meyer_curvature(const Mesh& mesh, const std::vector<Vec3>& normals)
+{
+    // H = -Hn . n with the mean-curvature normal of cotangent.h.
+    const std::size_t n = mesh.n_vertices();
+    const std::vector<CotangentSums> sums = cotangent_sums_by_face(mesh, degenerate_face_mask(mesh));
+    const auto boundary = boundary_vertex_mask(mesh);
+    CurvatureField field;
+    field.H.assign(n, kNaN);
+    for (std::size_t v = 0; v < n; ++v) {
+        if (normals[v].squaredNorm() == 0.0) ++field.no_normal;
+        if (boundary[v] || normals[v].squaredNorm() == 0.0) continue;
+        if (!(sums[v].area4 > 0.0)) continue;
+        field.H[v] = -sums[v].curvature_normal().dot(normals[v]);
+    }
+    for (double h : field.H)
+        if (std::isnan(h)) ++field.undefined;
+    return field;
+}
+
+}  // namespace
+
+CurvatureField mean_curvature(const Mesh& mesh, const Adjacency& adjacency, const std::vector<Vec3>& normals,
+                              const CurvatureOptions& options)
+{
+    if (options.min_neighbors < 3 || options.min_neighbors > 64)
+        throw InvalidArgumentError(
+            fmt::format("curvature: min_neighbors = {} is outside [3, 64]", options.min_neighbors));
+    if (!(options.max_normal_angle_deg > 0.0 && options.max_normal_angle_deg <= 90.0))
+        throw InvalidArgumentError(
+            fmt::format("curvature: max_normal_angle_deg = {} is outside (0, 90]", options.max_normal_angle_deg));
+    if (adjacency.size() != mesh.n_vertices() || normals.size() != mesh.n_vertices())
+        throw InvalidArgumentError("curvature: adjacency or normals do not match the mesh");
+    if (options.method == CurvatureMethod::MeyerCotangent) {
+        detail::StageProgress stage("curvature", 1);
+        CurvatureField field = meyer_curvature(mesh, normals);
+        stage.finish();
+        return field;
+    }
+    return fitted_curvature(mesh, adjacency, normals, options);
+}
+
+CurvatureError curvature_error(const std::vector<double>& estimated, const std::vector<double>& reference,
+                               const std::vector<char>& skip)
+{
+    if (estimated.size() != reference.size() || (!skip.empty() && skip.size() != estimated.size()))
+        throw InvalidArgumentError(fmt::format("curvature_error: {} estimates, {} reference values, {} skip flags",
+                                               estimated.size(), reference.size(), skip.size()));
+    CurvatureError e;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < estimated.size(); ++i) {
+        if (!skip.empty() && skip[i]) continue;
+        if (std::isnan(estimated[i])) {
+            ++e.undefined;
+            continue;
+        }
+        const double d = estimated[i] - reference[i];
+        if (std::isnan(d)) continue;
+        sum += d * d;
+        e.max = std::max(e.max, std::abs(d));
+        ++e.compared;
+    }
+    e.rms = e.compared ? std::sqrt(sum / double(e.compared)) : 0.0;
+    return e;
+}
+
+CurvatureField mean_curvature(const Mesh& mesh, const CurvatureOptions& options)
+{
+    return mean_curvature(mesh, vertex_adjacency(mesh), vertex_normals(mesh), options);
+}
+
+}  // namespace meshdiff

@@ -1,0 +1,87 @@
+//! \file morton.h
+//! \brief Vertices in Morton (Z-curve) order of their positions, and the
+//! compact batches of centres built from it, shared by the ring search
+//! (neighborhood.cpp) and the ball search (metric_levels.cpp) so that the
+//! centres of a batch are close in space.
+#pragma once
+
+#include "meshdiff/core/mesh.h"
+#include "meshdiff/core/topology.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace meshdiff::detail {
+
+//! The lowest 21 bits of \p x spread to every third bit.
+inline std::uint64_t spread_bits(std::uint64_t x)
+{
+    x &= 0x1fffff;
+    x = (x | x << 32) & 0x1f00000000ffffULL;
+    x = (x | x << 16) & 0x1f0000ff0000ffULL;
+    x = (x | x << 8) & 0x100f00f00f00f00fULL;
+    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
+    x = (x | x << 2) & 0x1249249249249249ULL;
+    return x;
+}
+
+//! The vertex ids of \p mesh sorted along a Morton curve of their positions
+//! (21 bits per axis over the bounding box; ties by id).
+inline std::vector<std::uint32_t> morton_order(const Mesh& mesh)
+{
+    const auto box = bounding_box(mesh);
+    const Vec3 ext = (box.max - box.min).cwiseMax(Vec3::Constant(1e-300));
+    const double cells = double((1u << 21) - 1);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(mesh.n_vertices());
+    for (std::size_t i = 0; i < mesh.n_vertices(); ++i) {
+        const Vec3 q = (mesh.points[i] - box.min).cwiseQuotient(ext) * cells;
+        keys[i] = {spread_bits(std::uint64_t(q.x())) | spread_bits(std::uint64_t(q.y())) << 1 |
+                       spread_bits(std::uint64_t(q.z())) << 2,
+                   std::uint32_t(i)};
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<std::uint32_t> order(keys.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].second;
+    return order;
+}
+
+//! Centres grouped into compact patches of the mesh graph: seeds are taken in
+//! Morton order, and each patch grows by breadth-first search over vertices
+//! not yet assigned until it holds \p batch centres (or its component is
+//! exhausted). Compact batches keep the union of their disks small.
+inline std::vector<std::uint32_t> clustered_order(const Mesh& mesh, const Adjacency& adj,
+                                                  const std::vector<double>& values, std::size_t batch)
+{
+    const std::size_t n = adj.size();
+    std::vector<char> assigned(n, 0);
+    std::vector<std::uint32_t> order;
+    order.reserve(n);
+    std::vector<std::uint32_t> queue;
+    std::size_t in_batch = 0;
+    for (auto seed : morton_order(mesh)) {
+        if (assigned[seed] || std::isnan(values[seed])) continue;
+        queue.assign(1, seed);
+        assigned[seed] = 1;
+        for (std::size_t q = 0; q < queue.size(); ++q) {
+            const auto v = queue[q];
+            order.push_back(v);
+            if (++in_batch == batch) {
+                in_batch = 0;
+                // Release what was queued but not taken.
+                for (std::size_t r = q + 1; r < queue.size(); ++r) assigned[queue[r]] = 0;
+                break;
+            }
+            for (auto it = adj.begin(v); it != adj.end(v); ++it)
+                if (!assigned[*it] && !std::isnan(values[*it])) {
+                    assigned[*it] = 1;
+                    queue.push_back(*it);
+                }
+        }
+    }
+    return order;
+}
+
+}  // namespace meshdiff::detail

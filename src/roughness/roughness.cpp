@@ -1,0 +1,220 @@
+#include "meshdiff/roughness/roughness.h"
+
+#include "meshdiff/error.h"
+#include "meshdiff/geometry/normals.h"
+#include "meshdiff/roughness/metric_levels.h"
+#include "meshdiff/roughness/neighborhood.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace meshdiff {
+
+std::vector<int> default_levels()
+{
+    std::vector<int> l(20);
+    std::iota(l.begin(), l.end(), 1);
+    return l;
+}
+
+void validate(const ProfileOptions& options)
+{
+    if (options.levels.size() > kMaxLevels)
+        throw OptionError("profile.levels", fmt::format("more than the limit of {} levels", kMaxLevels));
+    for (int l : options.levels)
+        if (l < 1 || l > kMaxLevel)
+            throw OptionError("profile.levels", fmt::format("level {} is out of 1..{}", l, kMaxLevel));
+    check_radii(options.radii);
+    if (options.levels.empty() && options.radii.empty() && !options.global)
+        throw OptionError("profile.levels",
+                          "no level to compute: no ring level, no {profile.radii} and no {profile.global} level");
+    if (!is_known(options.curvature.method))
+        throw OptionError("profile.curvature.method", "not a known curvature method");
+    if (!is_known(options.curvature.weighting))
+        throw OptionError("profile.curvature.weighting", "not a known row weighting");
+    if (!(options.outlier_fraction > 0.0 && options.outlier_fraction <= 1.0))
+        throw OptionError("profile.outlier_fraction", "must be in (0, 1]");
+}
+
+LevelRoughness level_roughness(int level, const std::vector<double>& D, double outlier_fraction)
+{
+    LevelRoughness r;
+    r.level = level;
+    std::vector<double> sq;
+    sq.reserve(D.size());
+    for (double d : D)
+        if (!std::isnan(d)) sq.push_back(d * d);
+    r.vertices_used = sq.size();
+    if (sq.empty()) return r;
+    // Plain sum in vertex order: deterministic.
+    double total = 0.0;
+    for (double v : sq) total += v;
+    r.sigma = std::sqrt(total / double(sq.size()));
+    if (total > 0.0) {
+        const auto k = std::max<std::size_t>(1, std::size_t(std::ceil(outlier_fraction * double(sq.size()))));
+        // In place: sq is not needed any more (the top k summed in the order
+        // nth_element leaves them, as ever).
+        std::nth_element(sq.begin(), sq.begin() + std::ptrdiff_t(k - 1), sq.end(), std::greater<>());
+        double top = 0.0;
+        for (std::size_t i = 0; i < k; ++i) top += sq[i];
+        r.top_share = top / total;
+    }
+    // The worst vertices by |D| (ties by id: a total order, so the list is
+    // unique), kept sorted in one pass over the vertices.
+    constexpr std::size_t kWorst = 10;
+    auto worse = [&](std::uint32_t a, std::uint32_t b) {
+        const double da = std::abs(D[a]), db = std::abs(D[b]);
+        return da != db ? da > db : a < b;
+    };
+    std::array<std::uint32_t, kWorst> top{};
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < D.size(); ++i) {
+        if (std::isnan(D[i])) continue;
+        const auto id = std::uint32_t(i);
+        if (m == kWorst && !worse(id, top[m - 1])) continue;
+        std::size_t at = m < kWorst ? m++ : m - 1;
+        for (; at > 0 && worse(id, top[at - 1]); --at) top[at] = top[at - 1];
+        top[at] = id;
+    }
+    r.worst_vertices.assign(top.begin(), top.begin() + std::ptrdiff_t(m));
+    return r;
+}
+
+namespace {
+
+// Levels and global level from H on the normalised mesh; fills p.
+void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj, std::vector<double> H,
+                    std::size_t undefined, const ProfileOptions& options)
+{
+    const std::size_t n = H.size();
+    p.outlier_fraction = options.outlier_fraction;
+    const DiskMeans means = disk_means(unit, adj, H, options.levels);
+    // Levels are independent: one per thread, each result in its own slot.
+    const std::size_t n_levels = options.levels.size();
+    p.levels.resize(n_levels);
+    if (options.keep_vertex_data) p.D.resize(n_levels);
+#pragma omp parallel
+    {
+        std::vector<double> Dl(n);
+#pragma omp for schedule(dynamic, 1)
+        for (std::ptrdiff_t il = 0; il < std::ptrdiff_t(n_levels); ++il) {
+            const auto li = std::size_t(il);
+            for (std::size_t i = 0; i < n; ++i) Dl[i] = H[i] - means.mean[li][i];  // NaN propagates
+            LevelRoughness lr = level_roughness(options.levels[li], Dl, options.outlier_fraction);
+            lr.no_neighborhood = (n - undefined) - lr.vertices_used;
+            p.levels[li] = std::move(lr);
+            if (options.keep_vertex_data) p.D[li] = Dl;
+        }
+    }
+    std::vector<double> D(n);
+    if (options.global) {
+        p.has_global = true;
+        // Mean over all other vertices with defined H, in O(n).
+        long double sum = 0.0L;
+        std::size_t m = 0;
+        for (double h : H)
+            if (!std::isnan(h)) {
+                sum += h;
+                ++m;
+            }
+        for (std::size_t i = 0; i < n; ++i)
+            D[i] = (std::isnan(H[i]) || m < 2) ? std::numeric_limits<double>::quiet_NaN()
+                                               : H[i] - double((sum - H[i]) / (long double)(m - 1));
+        p.global = level_roughness(0, D, options.outlier_fraction);
+        p.global.no_neighborhood = (n - undefined) - p.global.vertices_used;
+        if (options.keep_vertex_data) p.D_global = D;
+    }
+    if (!options.radii.empty()) {
+        // Metric levels (METHOD.md section 5a): area-weighted ball means.
+        const std::vector<double> area = vertex_areas(unit);
+        const BallMeans balls = ball_means(unit, adj, H, area, options.radii);
+        p.radii.resize(options.radii.size());
+        if (options.keep_vertex_data) p.D_radii.resize(options.radii.size());
+        for (std::size_t k = 0; k < options.radii.size(); ++k) {
+            for (std::size_t i = 0; i < n; ++i) D[i] = H[i] - balls.mean[k][i];  // NaN propagates
+            LevelRoughness lr = weighted_level_roughness(options.radii[k], D, area, options.outlier_fraction);
+            lr.no_neighborhood = (n - undefined) - lr.vertices_used;
+            p.radii[k] = std::move(lr);
+            if (options.keep_vertex_data) p.D_radii[k] = D;
+        }
+    }
+    if (options.keep_vertex_data) p.H = std::move(H);
+}
+
+}  // namespace
+
+RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options)
+{
+    validate(options);
+    const ProgressScope scope(options.progress ? options.progress : current_progress());
+    check_cancelled(current_progress());
+    RoughnessProfile p;
+    p.vertices = mesh.n_vertices();
+    p.normalization = unit_normalization(mesh);
+    const Mesh unit = apply_normalization(mesh, p.normalization);
+    check_cancelled(current_progress());  // the serial steps are checked in between
+    const Adjacency adj = vertex_adjacency(unit);
+    check_ball_work(unit, adj, options.radii);  // before any long work
+    check_cancelled(current_progress());
+    const std::vector<Vec3> normals = vertex_normals(unit);
+
+    p.curvature_options = options.curvature;
+    CurvatureField field = mean_curvature(unit, adj, normals, options.curvature);
+    p.curvature_undefined = field.undefined;
+    p.curvature_widened = field.widened;
+    p.curvature_normal_rows_dropped = field.normal_rows_dropped;
+    p.curvature_fallback = field.quadric_fallback;
+    p.curvature_capped = field.capped;
+    p.curvature_capped_vertices = field.capped_vertices;
+    profile_from_H(p, unit, adj, std::move(field.H), field.undefined, options);
+    return p;
+}
+
+RoughnessProfile roughness_profile_from_curvature(const Mesh& mesh, const std::vector<double>& H_in,
+                                                  const ProfileOptions& options)
+{
+    validate(options);
+    const ProgressScope scope(options.progress ? options.progress : current_progress());
+    if (H_in.size() != mesh.n_vertices())
+        throw InvalidArgumentError(
+            fmt::format("profile: {} curvature values for {} vertices", H_in.size(), mesh.n_vertices()));
+    RoughnessProfile p;
+    p.vertices = mesh.n_vertices();
+    p.normalization = unit_normalization(mesh);
+    const Mesh unit = apply_normalization(mesh, p.normalization);
+    std::vector<double> H(H_in);
+    std::size_t undefined = 0;
+    for (double& h : H) {
+        if (!std::isfinite(h)) {
+            h = std::numeric_limits<double>::quiet_NaN();
+            ++undefined;
+        } else {
+            h *= p.normalization.scale;
+        }
+    }
+    p.curvature_undefined = undefined;
+    const Adjacency adj = vertex_adjacency(unit);
+    check_ball_work(unit, adj, options.radii);
+    profile_from_H(p, unit, adj, std::move(H), undefined, options);
+    return p;
+}
+
+ExactProfile exact_profile(const Mesh& mesh, const std::vector<double>& exact_H, const ProfileOptions& options,
+                           const RoughnessProfile& estimated)
+{
+    if (estimated.H.size() != mesh.n_vertices())
+        throw InvalidArgumentError("exact_profile: the estimated profile has no per-vertex H (keep_vertex_data)");
+    ProfileOptions o = options;
+    o.keep_vertex_data = true;
+    ExactProfile e;
+    e.profile = roughness_profile_from_curvature(mesh, exact_H, o);
+    e.h_error = curvature_error(estimated.H, e.profile.H);
+    return e;
+}
+
+}  // namespace meshdiff
