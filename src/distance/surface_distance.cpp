@@ -6,6 +6,7 @@
 
 #include "core/compensated_sum.h"
 #include "core/stage_progress.h"
+#include "distance/distance_accumulators.h"
 #include "distance/hausdorff_seeded.h"
 #include "distance/surface_distance_chunks.h"
 #include "geometry/sample_plan.h"
@@ -24,164 +25,13 @@ namespace meshdiff {
 
 namespace {
 
-using Sum = detail::CompensatedSum;  // sequential, in index order
-
-std::size_t rank_of(std::size_t n, unsigned q)
-{
-    return std::clamp<std::size_t>((std::size_t(q) * n + 99) / 100, 1, n);  // ceil(q n / 100)
-}
-
-// The nearest-rank q-th percentile of v: its ceil(q n / 100)-th smallest
-// element. v is partially sorted in place; if it already is partitioned at the
-// rank of percentile `below` (an earlier call with q = below), only the part
-// above that rank is searched.
-double nearest_rank(std::vector<double>& v, unsigned q, unsigned below)
-{
-    const std::size_t n = v.size();
-    const std::size_t rank = rank_of(n, q);
-    const std::size_t start = below == 0 ? 0 : rank_of(n, below) - 1;
-    std::nth_element(v.begin() + std::ptrdiff_t(start), v.begin() + std::ptrdiff_t(rank - 1), v.end());
-    return v[rank - 1];
-}
-
-// The area-weighted statistics from the sums over the face samples' runs
-// (each run's sum times its face's area per sample): the area of the sampled
-// faces, that of all faces, and the weighted sums of d, d^2 and of the
-// samples below each F-score threshold (into \p within, when given).
-std::optional<AreaWeightedStats> finish_area_weighted(std::size_t n_face, const Sum& sampled, const Sum& total,
-                                                      const Sum& sum, const Sum& sum2, const std::vector<Sum>& below,
-                                                      std::vector<double>* within)
-{
-    AreaWeightedStats s;
-    s.n_face = n_face;
-    s.area = sampled.value();
-    if (!(s.area > 0.0)) return std::nullopt;  // only zero-area faces were sampled
-    s.area_fraction = s.area / total.value();
-    s.mean = sum.value() / s.area;
-    s.mean_square = sum2.value() / s.area;
-    s.rms = std::sqrt(s.mean_square);
-    if (within)
-        for (std::size_t k = 0; k < below.size(); ++k) (*within)[k] = std::min(1.0, below[k].value() / s.area);
-    return s;
-}
-
-}  // namespace
-
-void validate(const SummaryOptions& options)
-{
-    if (options.fscore_thresholds.size() > kMaxFscoreThresholds)
-        throw OptionError("summary.fscore_thresholds",
-                          fmt::format("more than the limit of {} thresholds", kMaxFscoreThresholds));
-    for (double t : options.fscore_thresholds)
-        if (!(std::isfinite(t) && t > 0.0 && t <= kMaxFscoreThreshold))
-            throw OptionError(
-                "summary.fscore_thresholds",
-                fmt::format("threshold {} is not in (0, {:g}] (relative to the diagonal)", t, kMaxFscoreThreshold));
-    if (options.histogram_bins > kMaxHistogramBins)
-        throw OptionError("summary.histogram_bins",
-                          fmt::format("{} is outside 0..{} (0: none)", options.histogram_bins, kMaxHistogramBins));
-}
-
-std::optional<AreaWeightedStats> area_weighted_stats(const Mesh& from, const SurfaceSamples& samples,
-                                                     const std::vector<double>& distances,
-                                                     const std::vector<double>& thresholds, std::vector<double>* within)
-{
-    if (within) within->assign(thresholds.size(), 0.0);
-    if (samples.size() != distances.size())
-        throw InvalidArgumentError(
-            fmt::format("area_weighted_stats: {} samples but {} distances", samples.size(), distances.size()));
-    // Face samples per face (any order of the samples).
-    std::vector<std::uint32_t> per_face(from.n_faces(), 0);
-    std::size_t n_face = 0;
-    for (std::size_t i = 0; i < samples.kind.size() && i < samples.element.size(); ++i)
-        if (samples.kind[i] == SampleKind::OnFace && samples.element[i] < per_face.size()) {
-            ++per_face[samples.element[i]];
-            ++n_face;
-        }
-    if (n_face == 0) return std::nullopt;
-    std::vector<double> area(from.n_faces(), 0.0);
-    Sum total, sampled;
-    for (std::size_t f = 0; f < from.n_faces(); ++f) {
-        area[f] = 0.5 * face_cross(from, f).norm();
-        total.add(area[f]);
-        if (per_face[f]) sampled.add(area[f]);
-    }
-    // A run of consecutive samples on one face (sample_surface() puts each
-    // face's samples together) is summed plainly, then added with its weight.
-    Sum sum, sum2;
-    std::vector<Sum> below(thresholds.size());
-    std::vector<std::size_t> run_below(thresholds.size());
-    const std::size_t n = std::min(samples.kind.size(), samples.element.size());
-    for (std::size_t i = 0; i < n;) {
-        if (samples.kind[i] != SampleKind::OnFace || samples.element[i] >= per_face.size()) {
-            ++i;
-            continue;
-        }
-        const std::uint32_t f = samples.element[i];
-        double s1 = 0.0, s2 = 0.0;
-        std::fill(run_below.begin(), run_below.end(), 0);
-        std::size_t j = i;
-        for (; j < n && samples.kind[j] == SampleKind::OnFace && samples.element[j] == f; ++j) {
-            const double d = distances[j];
-            s1 += d;
-            s2 += d * d;
-            for (std::size_t k = 0; k < thresholds.size(); ++k) run_below[k] += d < thresholds[k];
-        }
-        const double w = area[f] / double(per_face[f]);
-        sum.add(w * s1);
-        sum2.add(w * s2);
-        for (std::size_t k = 0; k < thresholds.size(); ++k)
-            if (run_below[k]) below[k].add(w * double(run_below[k]));
-        i = j;
-    }
-    return finish_area_weighted(n_face, sampled, total, sum, sum2, below, within);
-}
-
-Histogram distance_histogram(const std::vector<double>& distances, std::size_t bins)
-{
-    if (bins == 0) throw InvalidArgumentError("distance_histogram: bins must be positive");
-    if (distances.empty()) throw InvalidArgumentError("distance_histogram: no distances");
-    const double max = *std::max_element(distances.begin(), distances.end());
-    Histogram h;
-    h.edges.resize(bins + 1);
-    for (std::size_t i = 0; i <= bins; ++i) h.edges[i] = max * double(i) / double(bins);
-    h.counts.assign(bins, 0);
-    const double width = max / double(bins);
-    for (double d : distances) {
-        std::size_t k = 0;
-        if (width > 0.0) k = std::min(bins - 1, std::size_t(d / width));
-        ++h.counts[k];
-    }
-    return h;
-}
-
-namespace {
 // 10 log10(factor peak^2 / e); +inf for e = 0.
 double psnr_db(double peak, double factor, double e)
 {
     return e > 0.0 ? 10.0 * std::log10(factor * peak * peak / e) : std::numeric_limits<double>::infinity();
 }
-}  // namespace
 
-std::vector<FScore> fscores(const std::vector<double>& relative_thresholds, double diagonal,
-                            const std::vector<double>& recall_shares, const std::vector<double>& precision_shares)
-{
-    if (recall_shares.size() != relative_thresholds.size() || precision_shares.size() != relative_thresholds.size())
-        throw InvalidArgumentError(fmt::format("fscores: {} thresholds but {} and {} shares",
-                                               relative_thresholds.size(), recall_shares.size(),
-                                               precision_shares.size()));
-    std::vector<FScore> r;
-    for (std::size_t k = 0; k < relative_thresholds.size(); ++k) {
-        FScore s;
-        s.threshold = relative_thresholds[k];
-        s.threshold_absolute = relative_thresholds[k] * diagonal;
-        s.precision = precision_shares[k];
-        s.recall = recall_shares[k];
-        s.fscore = s.precision + s.recall > 0.0 ? 2.0 * s.precision * s.recall / (s.precision + s.recall) : 0.0;
-        r.push_back(s);
-    }
-    return r;
-}
+}  // namespace
 
 std::optional<SummaryMetrics> summary_metrics(const SurfaceDistance& d, std::string* reason)
 {
@@ -220,85 +70,6 @@ double detail::reference_diagonal(const Mesh& a, const char* what)
             "{}), so the distances relative to its diagonal are undefined",
             a.n_vertices(), what, diagonal));
     return diagonal;
-}
-
-DistanceStats relative_to(const DistanceStats& stats, double diagonal)
-{
-    if (!(std::isfinite(diagonal) && diagonal > 0.0))
-        throw InvalidArgumentError(fmt::format("relative_to: diagonal must be finite and positive, got {}", diagonal));
-    DistanceStats r = stats;
-    for (double* x : {&r.min, &r.max, &r.mean, &r.rms, &r.stddev, &r.p50, &r.p95, &r.p99}) *x /= diagonal;
-    return r;
-}
-
-DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<double>& distances)
-{
-    if (samples.size() != distances.size())
-        throw InvalidArgumentError(
-            fmt::format("distance_stats: {} samples but {} distances", samples.size(), distances.size()));
-    if (distances.empty()) throw InvalidArgumentError("distance_stats: no samples");
-    DistanceStats s;
-    s.n_vertex = samples.n_vertex;
-    s.n_edge = samples.n_edge;
-    s.n_face = samples.n_face;
-    const auto n = double(distances.size());
-    Sum sum, sum2;
-    s.min = distances[0];
-    s.max = distances[0];
-    std::size_t at_max = 0;
-    for (std::size_t i = 0; i < distances.size(); ++i) {
-        const double d = distances[i];
-        s.min = std::min(s.min, d);
-        if (d > s.max) {
-            s.max = d;
-            at_max = i;
-        }
-        sum.add(d);
-        sum2.add(d * d);
-    }
-    s.max_point = samples.points[at_max];
-    if (at_max < samples.kind.size()) s.max_kind = samples.kind[at_max];  // hand-made samples may lack them
-    if (at_max < samples.element.size()) s.max_element = samples.element[at_max];
-    s.mean = sum.value() / n;
-    s.rms = std::sqrt(sum2.value() / n);
-    Sum dev;
-    for (double d : distances) dev.add((d - s.mean) * (d - s.mean));
-    s.stddev = std::sqrt(dev.value() / n);
-    std::vector<double> sorted = distances;
-    s.p50 = nearest_rank(sorted, 50, 0);
-    s.p95 = nearest_rank(sorted, 95, 50);
-    s.p99 = nearest_rank(sorted, 99, 95);
-    return s;
-}
-
-namespace {
-
-// The signed statistics of x_i = f(i), i < n (sequential sums in index order).
-template <class F>
-SignedDistanceStats signed_stats_of(std::size_t n, F&& f)
-{
-    if (n == 0) throw InvalidArgumentError("signed_distance_stats: no samples");
-    SignedDistanceStats r;
-    r.min = f(0);
-    r.max = r.min;
-    Sum sum, sum2;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double x = f(i);
-        r.min = std::min(r.min, x);
-        r.max = std::max(r.max, x);
-        sum.add(x);
-        sum2.add(x * x);
-    }
-    r.mean = sum.value() / double(n);
-    r.rms = std::sqrt(sum2.value() / double(n));
-    return r;
-}
-
-}  // namespace
-
-SignedDistanceStats signed_distance_stats(const std::vector<double>& s)
-{
-    return signed_stats_of(s.size(), [&](std::size_t i) { return s[i]; });
 }
 
 namespace {
@@ -360,8 +131,8 @@ private:
 };
 
 // The statistics of one direction folded over its samples a range at a time,
-// in sample order, with the same sequential sums as distance_stats(),
-// signed_stats_of() and area_weighted_stats() over all samples at once.
+// in sample order, by the accumulators of distance_stats(),
+// signed_distance_stats() and area_weighted_stats() (distance_accumulators.h).
 class DirectionFold
 {
 public:
@@ -371,47 +142,22 @@ public:
           plan_(plan),
           thresholds_(thresholds),
           signed_(is_signed),
-          below_(thresholds.size()),
-          run_below_(thresholds.size())
+          area_(thresholds, [this](std::uint32_t f) { return face_area(f) / double(face_samples(f)); })
     {}
 
     // Samples [begin, begin + n) (points p, kinds, elements, distances d and
     // signs, those without a sign when the direction has none).
-    void add(std::size_t begin, std::size_t n, const Vec3* p, const SampleKind* kind, const std::uint32_t* element,
-             const double* d, const std::int8_t* sign)
+    void add(std::size_t n, const Vec3* p, const SampleKind* kind, const std::uint32_t* element, const double* d,
+             const std::int8_t* sign)
     {
         for (std::size_t i = 0; i < n; ++i) {
             const double x = d[i];
-            if (begin + i == 0) {
-                s_.min = s_.max = x;
-                set_max(p[i], kind[i], element[i]);
-                if (signed_) smin_ = smax_ = signed_of(sign[i], x);
-            }
-            s_.min = std::min(s_.min, x);
-            if (x > s_.max) {
-                s_.max = x;
-                set_max(p[i], kind[i], element[i]);
-            }
-            sum_.add(x);
-            sum2_.add(x * x);
-            if (signed_) {
-                const double y = signed_of(sign[i], x);
-                smin_ = std::min(smin_, y);
-                smax_ = std::max(smax_, y);
-                ssum_.add(y);
-                ssum2_.add(y * y);
-            }
-            if (kind[i] != SampleKind::OnFace) continue;
-            // A run of the samples of one face, summed plainly, then added
-            // with its weight (as area_weighted_stats() does).
-            if (!in_run_ || element[i] != run_face_) {
-                end_run();
-                in_run_ = true;
-                run_face_ = element[i];
-            }
-            s1_ += x;
-            s2_ += x * x;
-            for (std::size_t k = 0; k < thresholds_.size(); ++k) run_below_[k] += x < thresholds_[k];
+            stats_.add(x, p[i], kind[i], element[i]);
+            if (signed_) signed_stats_.add(sign[i] == 0 ? 0.0 : double(sign[i]) * x);
+            if (kind[i] == SampleKind::OnFace)
+                area_.add_face_sample(element[i], x);
+            else
+                area_.add_other_sample();
         }
     }
 
@@ -420,87 +166,45 @@ public:
     // (none for 0), the area shares below the thresholds in \p within.
     DistanceStats finish(std::vector<double>& distances, std::size_t bins, std::vector<double>& within)
     {
-        end_run();
-        DistanceStats s = s_;
+        // The histogram first: the percentiles sort the distances in place.
+        Histogram histogram;
+        if (bins > 0) histogram = distance_histogram(distances, bins);
+        DistanceStats s = stats_.finish(distances);
         s.n_vertex = plan_.counts.n_vertex;
         s.n_edge = plan_.counts.n_edge;
         s.n_face = plan_.counts.n_face;
-        const auto n = double(distances.size());
-        s.mean = sum_.value() / n;
-        s.rms = std::sqrt(sum2_.value() / n);
-        Sum dev;
-        for (double d : distances) dev.add((d - s.mean) * (d - s.mean));
-        s.stddev = std::sqrt(dev.value() / n);
-        if (signed_) {
-            SignedDistanceStats r;
-            r.min = smin_;
-            r.max = smax_;
-            r.mean = ssum_.value() / n;
-            r.rms = std::sqrt(ssum2_.value() / n);
-            s.signed_distance = r;
-        }
+        if (signed_) s.signed_distance = signed_stats_.finish(distances.size());
         s.area_weighted = area_weighted(within);
-        if (bins > 0) s.histogram = distance_histogram(distances, bins);
-        // In place: the same nth smallest values as in a copy.
-        s.p50 = nearest_rank(distances, 50, 0);
-        s.p95 = nearest_rank(distances, 95, 50);
-        s.p99 = nearest_rank(distances, 99, 95);
+        s.histogram = std::move(histogram);
         return s;
     }
 
 private:
-    static double signed_of(std::int8_t sign, double d) { return sign == 0 ? 0.0 : double(sign) * d; }
-
-    void set_max(const Vec3& p, SampleKind kind, std::uint32_t element)
-    {
-        s_.max_point = p;
-        s_.max_kind = kind;
-        s_.max_element = element;
-    }
-
     std::size_t face_samples(std::size_t f) const { return plan_.face_offset[f + 1] - plan_.face_offset[f]; }
     double face_area(std::size_t f) const { return 0.5 * face_cross(from_, f).norm(); }
 
-    void end_run()
+    std::optional<AreaWeightedStats> area_weighted(std::vector<double>& within)
     {
-        if (!in_run_) return;
-        const double w = face_area(run_face_) / double(face_samples(run_face_));
-        sum_w_.add(w * s1_);
-        sum_w2_.add(w * s2_);
-        for (std::size_t k = 0; k < thresholds_.size(); ++k)
-            if (run_below_[k]) below_[k].add(w * double(run_below_[k]));
-        in_run_ = false;
-        s1_ = s2_ = 0.0;
-        std::fill(run_below_.begin(), run_below_.end(), 0);
-    }
-
-    std::optional<AreaWeightedStats> area_weighted(std::vector<double>& within) const
-    {
-        within.assign(thresholds_.size(), 0.0);
-        if (plan_.counts.n_face == 0) return std::nullopt;
-        Sum total, sampled;
+        if (plan_.counts.n_face == 0) {
+            within.assign(thresholds_.size(), 0.0);
+            return std::nullopt;
+        }
+        detail::CompensatedSum total, sampled;
         for (std::size_t f = 0; f < from_.n_faces(); ++f) {
             const double area = face_area(f);
             total.add(area);
             if (face_samples(f)) sampled.add(area);
         }
-        return finish_area_weighted(plan_.counts.n_face, sampled, total, sum_w_, sum_w2_, below_, &within);
+        return area_.finish(plan_.counts.n_face, sampled, total, within);
     }
 
     const Mesh& from_;
     const detail::SamplePlan& plan_;
     const std::vector<double>& thresholds_;
     bool signed_;
-    DistanceStats s_;
-    Sum sum_, sum2_;
-    double smin_ = 0.0, smax_ = 0.0;
-    Sum ssum_, ssum2_;
-    Sum sum_w_, sum_w2_;
-    std::vector<Sum> below_;
-    bool in_run_ = false;
-    std::uint32_t run_face_ = 0;
-    double s1_ = 0.0, s2_ = 0.0;
-    std::vector<std::size_t> run_below_;
+    detail::DistanceAccumulator stats_;
+    detail::SignedAccumulator signed_stats_;
+    detail::AreaWeightedAccumulator area_;
 };
 
 // One direction as sampled_direction(), distance_stats(), the signed
@@ -548,7 +252,7 @@ DistanceStats chunked_direction(const Mesh& from, const Target& to, const Sampli
             if (to.normals)
                 signs[i] = c.distance > 0.0 ? std::int8_t(distance_sign(to.mesh, *to.normals, points[i], c.face)) : 0;
         }
-        fold.add(begin, k, points.data(), kind.data(), element.data(), distances.data() + begin, signs.data());
+        fold.add(k, points.data(), kind.data(), element.data(), distances.data() + begin, signs.data());
     }
     // The others queried, as one stage.
     Progress* progress = current_progress();
@@ -565,7 +269,7 @@ DistanceStats chunked_direction(const Mesh& from, const Target& to, const Sampli
             else
                 to.index.distances(points.data(), k, distances.data() + begin);
         }
-        fold.add(begin, k, points.data(), kind.data(), element.data(), distances.data() + begin, signs.data());
+        fold.add(k, points.data(), kind.data(), element.data(), distances.data() + begin, signs.data());
         if (begin + k >= plan.counts.n_vertex + plan.counts.n_edge)
             plan.drop_vertices_and_edges();  // face samples left
     }
@@ -650,12 +354,11 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
             std::vector<std::int8_t> signs;
             SampledDirection d = sampled_direction(from, target, opt, certify ? &vq : nullptr, signs);
             stats = distance_stats(d.samples, d.distances);
-            if (normals)
-                stats.signed_distance = signed_stats_of(signs.size(), [&](std::size_t i) {
-                    return signs[i] == 0 ? 0.0 : double(signs[i]) * d.distances[i];
-                });
+            if (normals) {
+                d.signed_distances = apply_signs(d.distances, signs);
+                stats.signed_distance = signed_distance_stats(d.signed_distances);
+            }
             summarize(stats, from, d, within);
-            if (normals) d.signed_distances = apply_signs(d.distances, signs);
             *keep = std::move(d);
         } else {
             // The same statistics without keeping the samples (freed before the certification).

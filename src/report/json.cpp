@@ -276,8 +276,9 @@ nlohmann::json corsini_distance_json(const CorsiniDistance& d)
 nlohmann::json distance_stats_json(const DistanceStats& s, double diagonal)
 {
     auto block = [](const DistanceStats& d) {
-        return nlohmann::json{{"min", d.min},    {"max", d.max}, {"mean", d.mean}, {"rms", d.rms},
-                              {"std", d.stddev}, {"p50", d.p50}, {"p95", d.p95},   {"p99", d.p99}};
+        nlohmann::json b = nlohmann::json::object();
+        for (const StatField& f : kStatFields) b[f.key] = d.*f.field;
+        return b;
     };
     nlohmann::json j = block(s);
     j["samples"] = s.n_samples();

@@ -132,9 +132,8 @@ std::string stats_text(const std::string& title, const DistanceStats& s, double 
         out +=
             fmt::format("  samples: {} ({} vertex, {} edge, {} face)\n", s.n_samples(), s.n_vertex, s.n_edge, s.n_face);
     out += fmt::format("  {:>5} {:>14} {:>14}\n", "", "absolute", "wrt diagonal");
-    const std::pair<const char*, double> rows[] = {{"min", s.min},    {"max", s.max}, {"mean", s.mean}, {"RMS", s.rms},
-                                                   {"std", s.stddev}, {"p50", s.p50}, {"p95", s.p95},   {"p99", s.p99}};
-    for (const auto& [name, v] : rows) out += fmt::format("  {:>5} {:>14.6g} {:>14.6g}\n", name, v, v / diag);
+    for (const StatField& f : kStatFields)
+        out += fmt::format("  {:>5} {:>14.6g} {:>14.6g}\n", f.label, s.*f.field, s.*f.field / diag);
     if (s.signed_distance) {
         const SignedDistanceStats& g = *s.signed_distance;
         out +=

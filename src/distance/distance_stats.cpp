@@ -1,0 +1,156 @@
+#include "meshdiff/distance/distance_stats.h"
+
+#include "meshdiff/error.h"
+
+#include "distance/distance_accumulators.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace meshdiff {
+
+namespace {
+
+std::size_t rank_of(std::size_t n, unsigned q)
+{
+    return std::clamp<std::size_t>((std::size_t(q) * n + 999) / 1000, 1, n);  // ceil(q n / 1000)
+}
+
+}  // namespace
+
+double nearest_rank(std::vector<double>& v, unsigned q, unsigned below)
+{
+    const std::size_t n = v.size();
+    const std::size_t rank = rank_of(n, q);
+    const std::size_t start = below == 0 ? 0 : rank_of(n, below) - 1;
+    std::nth_element(v.begin() + std::ptrdiff_t(start), v.begin() + std::ptrdiff_t(rank - 1), v.end());
+    return v[rank - 1];
+}
+
+void validate(const SummaryOptions& options)
+{
+    if (options.fscore_thresholds.size() > kMaxFscoreThresholds)
+        throw OptionError("summary.fscore_thresholds",
+                          fmt::format("more than the limit of {} thresholds", kMaxFscoreThresholds));
+    for (double t : options.fscore_thresholds)
+        if (!(std::isfinite(t) && t > 0.0 && t <= kMaxFscoreThreshold))
+            throw OptionError(
+                "summary.fscore_thresholds",
+                fmt::format("threshold {} is not in (0, {:g}] (relative to the diagonal)", t, kMaxFscoreThreshold));
+    if (options.histogram_bins > kMaxHistogramBins)
+        throw OptionError("summary.histogram_bins",
+                          fmt::format("{} is outside 0..{} (0: none)", options.histogram_bins, kMaxHistogramBins));
+}
+
+std::optional<AreaWeightedStats> area_weighted_stats(const Mesh& from, const SurfaceSamples& samples,
+                                                     const std::vector<double>& distances,
+                                                     const std::vector<double>& thresholds, std::vector<double>* within)
+{
+    std::vector<double> shares;
+    if (within) within->assign(thresholds.size(), 0.0);
+    if (samples.size() != distances.size())
+        throw InvalidArgumentError(
+            fmt::format("area_weighted_stats: {} samples but {} distances", samples.size(), distances.size()));
+    // Face samples per face (any order of the samples).
+    std::vector<std::uint32_t> per_face(from.n_faces(), 0);
+    std::size_t n_face = 0;
+    for (std::size_t i = 0; i < samples.kind.size() && i < samples.element.size(); ++i)
+        if (samples.kind[i] == SampleKind::OnFace && samples.element[i] < per_face.size()) {
+            ++per_face[samples.element[i]];
+            ++n_face;
+        }
+    if (n_face == 0) return std::nullopt;
+    std::vector<double> area(from.n_faces(), 0.0);
+    detail::CompensatedSum total, sampled;
+    for (std::size_t f = 0; f < from.n_faces(); ++f) {
+        area[f] = 0.5 * face_cross(from, f).norm();
+        total.add(area[f]);
+        if (per_face[f]) sampled.add(area[f]);
+    }
+    detail::AreaWeightedAccumulator acc(thresholds, [&](std::uint32_t f) { return area[f] / double(per_face[f]); });
+    const std::size_t n = std::min(samples.kind.size(), samples.element.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        if (samples.kind[i] == SampleKind::OnFace && samples.element[i] < per_face.size())
+            acc.add_face_sample(samples.element[i], distances[i]);
+        else
+            acc.add_other_sample();
+    }
+    return acc.finish(n_face, sampled, total, within ? *within : shares);
+}
+
+Histogram distance_histogram(const std::vector<double>& distances, std::size_t bins)
+{
+    if (bins == 0) throw InvalidArgumentError("distance_histogram: bins must be positive");
+    if (distances.empty()) throw InvalidArgumentError("distance_histogram: no distances");
+    const double max = *std::max_element(distances.begin(), distances.end());
+    Histogram h;
+    h.edges.resize(bins + 1);
+    for (std::size_t i = 0; i <= bins; ++i) h.edges[i] = max * double(i) / double(bins);
+    h.counts.assign(bins, 0);
+    const double width = max / double(bins);
+    for (double d : distances) {
+        std::size_t k = 0;
+        if (width > 0.0) k = std::min(bins - 1, std::size_t(d / width));
+        ++h.counts[k];
+    }
+    return h;
+}
+
+std::vector<FScore> fscores(const std::vector<double>& relative_thresholds, double diagonal,
+                            const std::vector<double>& recall_shares, const std::vector<double>& precision_shares)
+{
+    if (recall_shares.size() != relative_thresholds.size() || precision_shares.size() != relative_thresholds.size())
+        throw InvalidArgumentError(fmt::format("fscores: {} thresholds but {} and {} shares",
+                                               relative_thresholds.size(), recall_shares.size(),
+                                               precision_shares.size()));
+    std::vector<FScore> r;
+    for (std::size_t k = 0; k < relative_thresholds.size(); ++k) {
+        FScore s;
+        s.threshold = relative_thresholds[k];
+        s.threshold_absolute = relative_thresholds[k] * diagonal;
+        s.precision = precision_shares[k];
+        s.recall = recall_shares[k];
+        s.fscore = s.precision + s.recall > 0.0 ? 2.0 * s.precision * s.recall / (s.precision + s.recall) : 0.0;
+        r.push_back(s);
+    }
+    return r;
+}
+
+DistanceStats relative_to(const DistanceStats& stats, double diagonal)
+{
+    if (!(std::isfinite(diagonal) && diagonal > 0.0))
+        throw InvalidArgumentError(fmt::format("relative_to: diagonal must be finite and positive, got {}", diagonal));
+    DistanceStats r = stats;
+    for (const StatField& f : kStatFields) r.*f.field /= diagonal;
+    return r;
+}
+
+DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<double>& distances)
+{
+    if (samples.size() != distances.size())
+        throw InvalidArgumentError(
+            fmt::format("distance_stats: {} samples but {} distances", samples.size(), distances.size()));
+    if (distances.empty()) throw InvalidArgumentError("distance_stats: no samples");
+    detail::DistanceAccumulator acc;
+    for (std::size_t i = 0; i < distances.size(); ++i)  // hand-made samples may lack kinds and elements
+        acc.add(distances[i], samples.points[i], i < samples.kind.size() ? samples.kind[i] : SampleKind::OnVertex,
+                i < samples.element.size() ? samples.element[i] : 0);
+    std::vector<double> sorted = distances;
+    DistanceStats s = acc.finish(sorted);
+    s.n_vertex = samples.n_vertex;
+    s.n_edge = samples.n_edge;
+    s.n_face = samples.n_face;
+    return s;
+}
+
+SignedDistanceStats signed_distance_stats(const std::vector<double>& s)
+{
+    if (s.empty()) throw InvalidArgumentError("signed_distance_stats: no samples");
+    detail::SignedAccumulator acc;
+    for (double x : s) acc.add(x);
+    return acc.finish(s.size());
+}
+
+}  // namespace meshdiff
