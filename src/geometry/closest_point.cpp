@@ -3,21 +3,15 @@
 #include "meshdiff/error.h"
 
 #include "core/stage_progress.h"
+#include "geometry/bvh_build.h"
 #include "geometry/point_triangle_kernels.h"
 #include "geometry/point_triangle_x4.h"
 #include "geometry/query_block.h"
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/Geometry>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <future>
 #include <limits>
-#include <numeric>
-
-#include <omp.h>
 
 namespace meshdiff {
 
@@ -25,39 +19,15 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::uint32_t kNoFace = std::numeric_limits<std::uint32_t>::max();
-struct Tri
-{
-    Vec3 a, b, c;
-    std::uint32_t face;
-    bool thin;  // see detail::is_thin_triangle
-};
+using detail::kHasObb;
+using detail::Node;
+using detail::Obb;
+using detail::Tri;
 
 inline Vec3 tri_point(const Vec3& p, const Tri& t)
 {
     return t.thin ? detail::thin_triangle_point(p, t.a, t.b, t.c) : detail::triangle_point(p, t.a, t.b, t.c);
 }
-
-// A node has an oriented box besides its axis-aligned one (Impl::obbs) when
-// this bit of `count` is set.
-constexpr std::uint32_t kHasObb = 0x80000000u;
-
-struct Node
-{
-    std::array<double, 3> lo, hi;
-    std::uint32_t first;  // leaf: first triangle; inner: left child (right = first + 1)
-    std::uint32_t count;  // leaf: number of triangles (> 0); inner: 0; | kHasObb
-    std::uint32_t triangles() const { return count & ~kHasObb; }
-};
-
-// An oriented bounding box: |axis[k] . (p - centre)| <= half[k], its half
-// extents padded by kObbPad times the size of its coordinates, so that
-// rounding cannot put it farther from a query than a triangle inside it.
-struct Obb
-{
-    std::array<double, 3> centre;
-    std::array<std::array<double, 3>, 3> axis;
-    std::array<double, 3> half;
-};
 
 inline double obb_distance2(const Obb& b, const Vec3& p)
 {
@@ -79,59 +49,13 @@ inline double box_distance2(const Node& n, const Vec3& p)
     return ex * ex + ey * ey + ez * ez;
 }
 
-struct Box
-{
-    Vec3 lo = Vec3::Constant(kInf);
-    Vec3 hi = Vec3::Constant(-kInf);
-    void grow(const Vec3& p)
-    {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    void grow(const Box& b)
-    {
-        lo = lo.cwiseMin(b.lo);
-        hi = hi.cwiseMax(b.hi);
-    }
-    double half_area() const
-    {
-        if (!(hi.x() >= lo.x())) return 0.0;
-        const Vec3 d = hi - lo;
-        return d.x() * d.y() + d.y() * d.z() + d.z() * d.x();
-    }
-};
-
-constexpr std::uint32_t kLeafSize = 4;
-// Triangles from which the build splits the root's two subtrees between two
-// threads.
-constexpr std::size_t kParallelBuild = 4096;
-constexpr int kBins = 16;
-constexpr std::uint32_t kMaxSahDepth = 48;
 // Queries per parallel block (fixed: results do not depend on threads).
 constexpr std::size_t kBlock = detail::kQueryBlock;
-// Oriented boxes: tried for a node whose box's half area exceeds its
-// triangles' area this many times (slivers, such as the fan of triangles
-// around a vertex of very high valence, whose boxes all contain the hub), and
-// kept when their half area is below this share of the box's.
-constexpr double kObbTryRatio = 8.0;
-constexpr double kObbKeepShare = 0.25;
-// Padding of an oriented box, relative to the size of its coordinates: far
-// above the rounding of its projections, far below any distance that matters.
-constexpr double kObbPad = 1e-9;
 
 }  // namespace
 
-struct ClosestPointIndex::Impl
+struct ClosestPointIndex::Impl : detail::Bvh
 {
-    std::vector<Tri> tris;  // in leaf order
-    std::vector<Node> nodes;
-    std::vector<std::uint32_t> parent_of;    // per node (root: 0)
-    std::vector<std::uint32_t> leaf_of;      // per triangle position: its leaf
-    std::vector<std::uint32_t> position_of;  // per face: its position in tris
-    std::vector<Obb> obbs;                   // oriented boxes of the nodes with kHasObb
-    std::vector<std::uint32_t> obb_slot;     // per node: its index in obbs (read only with kHasObb)
-
-    void build(const Mesh& mesh);
     // A lower bound of the distance^2 from p to any triangle below node k: its
     // box's, or its oriented box's if that is farther.
     double node_distance2(std::uint32_t k, const Vec3& p) const
@@ -149,279 +73,6 @@ struct ClosestPointIndex::Impl
     // c to the triangle, stopping at the first value <= good2.
     double hull_query(const std::array<Vec3, 3>& c, double good2, std::uint32_t* face) const;
 };
-
-void ClosestPointIndex::Impl::build(const Mesh& mesh)
-{
-    const std::size_t n = mesh.n_faces();
-    // Progress: the triangles placed in leaves. The tree is grown outside
-    // OpenMP regions (its check() may throw Cancelled).
-    detail::StageProgress stage("index", n);
-    tris.resize(n);
-    std::vector<Box> boxes(n);
-    std::vector<Vec3> centroid(n);
-    std::vector<double> area(n);
-    // Per triangle, independent: in parallel (as the loops after the tree).
-#pragma omp parallel for schedule(static)
-    for (std::size_t f = 0; f < n; ++f) {
-        const Face& t = mesh.faces[f];
-        Tri& tri = tris[f];
-        tri.a = mesh.points[std::size_t(t[0])];
-        tri.b = mesh.points[std::size_t(t[1])];
-        tri.c = mesh.points[std::size_t(t[2])];
-        tri.face = std::uint32_t(f);
-        tri.thin = detail::is_thin_triangle(tri.a, tri.b, tri.c);
-
-        boxes[f].grow(tri.a);
-        boxes[f].grow(tri.b);
-        boxes[f].grow(tri.c);
-        centroid[f] = (tri.a + tri.b + tri.c) / 3.0;
-        area[f] = 0.5 * (tri.b - tri.a).cross(tri.c - tri.a).norm();
-    }
-    std::vector<std::uint32_t> order(n);
-    std::iota(order.begin(), order.end(), 0u);
-    // The oriented box of the triangles order[begin..end): principal axes of
-    // their corners, extents over the corners, padded.
-    auto fit_obb = [&](std::uint32_t begin, std::uint32_t end, Obb& out) {
-        Vec3 mean = Vec3::Zero();
-        for (std::uint32_t i = begin; i < end; ++i) {
-            const Tri& t = tris[order[i]];
-            mean += t.a + t.b + t.c;
-        }
-        mean /= 3.0 * double(end - begin);
-        Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-        for (std::uint32_t i = begin; i < end; ++i) {
-            const Tri& t = tris[order[i]];
-            for (const Vec3* q : {&t.a, &t.b, &t.c}) {
-                const Vec3 d = *q - mean;
-                cov += d * d.transpose();
-            }
-        }
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-        eig.computeDirect(cov);
-        Vec3 a0 = eig.eigenvectors().col(2);
-        Vec3 a1 = eig.eigenvectors().col(1);
-        if (!(a0.allFinite() && a1.allFinite() && a0.norm() > 0.5)) return false;
-        a0.normalize();
-        a1 = (a1 - a1.dot(a0) * a0);
-        if (!(a1.norm() > 0.5)) return false;
-        a1.normalize();
-        const Vec3 a2 = a0.cross(a1).normalized();
-        const std::array<Vec3, 3> ax{a0, a1, a2};
-        Vec3 lo = Vec3::Constant(kInf), hi = Vec3::Constant(-kInf);
-        for (std::uint32_t i = begin; i < end; ++i) {
-            const Tri& t = tris[order[i]];
-            for (const Vec3* q : {&t.a, &t.b, &t.c}) {
-                const Vec3 s(ax[0].dot(*q), ax[1].dot(*q), ax[2].dot(*q));
-                lo = lo.cwiseMin(s);
-                hi = hi.cwiseMax(s);
-            }
-        }
-        const Vec3 mid = (lo + hi) / 2.0;
-        const Vec3 half = (hi - lo) / 2.0;
-        const Vec3 centre = mid.x() * a0 + mid.y() * a1 + mid.z() * a2;
-        const double pad = kObbPad * (centre.cwiseAbs().maxCoeff() + half.maxCoeff() + lo.cwiseAbs().maxCoeff() +
-                                      hi.cwiseAbs().maxCoeff());
-        for (std::size_t k = 0; k < 3; ++k) {
-            out.centre[k] = centre[Eigen::Index(k)];
-            out.half[k] = half[Eigen::Index(k)] + pad;
-            for (std::size_t c = 0; c < 3; ++c) out.axis[k][c] = ax[k][Eigen::Index(c)];
-        }
-        return std::isfinite(pad);
-    };
-
-    struct Task
-    {
-        std::uint32_t node, begin, end, depth;
-    };
-    // A tree or a subtree being built: its nodes (numbered from 0 in the
-    // order the build creates them), oriented boxes (in the order of their
-    // nodes' processing) with their (node, slot) pairs, and the tasks left.
-    struct Part
-    {
-        std::vector<Node> nodes;
-        std::vector<Obb> obbs;
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> obb_of;
-        std::vector<Task> stack;
-    };
-    // Processes one node: its boxes, and its triangles as a leaf or its two
-    // children, created in `out` and pushed on its stack (left on top).
-    auto process = [&](const Task task, Part& out) {
-        Box box, cbox;
-        for (std::uint32_t i = task.begin; i < task.end; ++i) {
-            box.grow(boxes[order[i]]);
-            cbox.grow(centroid[order[i]]);
-        }
-        Node& node = out.nodes[task.node];
-        for (int k = 0; k < 3; ++k) {
-            node.lo[std::size_t(k)] = box.lo[k];
-            node.hi[std::size_t(k)] = box.hi[k];
-        }
-        const std::uint32_t count = task.end - task.begin;
-        double tri_area = 0.0;
-        for (std::uint32_t i = task.begin; i < task.end; ++i) tri_area += area[order[i]];
-        if (box.half_area() > kObbTryRatio * tri_area) {
-            Obb obb;
-            if (fit_obb(task.begin, task.end, obb)) {
-                const double obb_half_area =
-                    4.0 * (obb.half[0] * obb.half[1] + obb.half[1] * obb.half[2] + obb.half[2] * obb.half[0]);
-                if (obb_half_area < kObbKeepShare * box.half_area()) {
-                    out.obb_of.push_back({task.node, std::uint32_t(out.obbs.size())});
-                    out.obbs.push_back(obb);
-                }
-            }
-        }
-        if (count <= kLeafSize) {
-            node.first = task.begin;
-            node.count = count;
-            if (!stage.tick(count)) stage.check();
-            return;
-        }
-        // Binned SAH along the longest centroid axis; median split if the
-        // centroids coincide or the SAH split is one-sided.
-        int axis = 0;
-        const Vec3 ext = cbox.hi - cbox.lo;
-        if (ext.y() > ext[axis]) axis = 1;
-        if (ext.z() > ext[axis]) axis = 2;
-        std::uint32_t mid = task.begin + count / 2;
-        if (ext[axis] > 0.0) {
-            std::array<Box, kBins> bin_box;
-            std::array<std::uint32_t, kBins> bin_count{};
-            // With subnormal extents kBins / ext overflows to infinity and a
-            // centroid at cbox.lo gives 0 * inf = NaN: such bins go to 0, the
-            // others to kBins - 1 (the finite case is untouched).
-            const double scale = kBins / ext[axis];
-            auto bin_of = [&](std::uint32_t f) {
-                const double x = (centroid[f][axis] - cbox.lo[axis]) * scale;
-                if (!(x >= 0.0)) return 0;
-                return x < double(kBins) ? std::min(kBins - 1, int(x)) : kBins - 1;
-            };
-            for (std::uint32_t i = task.begin; i < task.end; ++i) {
-                const int b = bin_of(order[i]);
-                bin_box[std::size_t(b)].grow(boxes[order[i]]);
-                ++bin_count[std::size_t(b)];
-            }
-            std::array<double, kBins> right_cost{};
-            Box acc;
-            std::uint32_t acc_n = 0;
-            for (int b = kBins - 1; b > 0; --b) {
-                acc.grow(bin_box[std::size_t(b)]);
-                acc_n += bin_count[std::size_t(b)];
-                right_cost[std::size_t(b)] = acc.half_area() * acc_n;
-            }
-            acc = Box();
-            acc_n = 0;
-            double best = kInf;
-            int best_split = -1;
-            for (int b = 0; b < kBins - 1; ++b) {
-                acc.grow(bin_box[std::size_t(b)]);
-                acc_n += bin_count[std::size_t(b)];
-                if (acc_n == 0 || acc_n == count) continue;
-                const double cost = acc.half_area() * acc_n + right_cost[std::size_t(b + 1)];
-                if (cost < best) {
-                    best = cost;
-                    best_split = b;
-                }
-            }
-            // Deep trees (one-sided SAH splits) fall back to median splits, which
-            // bound the depth, and so the traversal stack, by 48 + log2(n).
-            if (best_split >= 0 && task.depth < kMaxSahDepth) {
-                auto it = std::partition(order.begin() + task.begin, order.begin() + task.end,
-                                         [&](std::uint32_t f) { return bin_of(f) <= best_split; });
-                mid = std::uint32_t(it - order.begin());
-            } else {
-                std::nth_element(order.begin() + task.begin, order.begin() + mid, order.begin() + task.end,
-                                 [&](std::uint32_t x, std::uint32_t y) {
-                                     return centroid[x][axis] < centroid[y][axis] ||
-                                            (centroid[x][axis] == centroid[y][axis] && x < y);
-                                 });
-            }
-        }
-        const auto left = std::uint32_t(out.nodes.size());
-        out.nodes.push_back({});
-        out.nodes.push_back({});
-        out.nodes[task.node].first = left;
-        out.nodes[task.node].count = 0;
-        out.stack.push_back({left + 1, mid, task.end, task.depth + 1});
-        out.stack.push_back({left, task.begin, mid, task.depth + 1});
-    };
-    // Depth first, left child first, as the tasks come off the stack.
-    auto grow = [&](Part& part) {
-        while (!part.stack.empty()) {
-            stage.check();  // a node costs O(its triangles), the root O(n)
-            const Task task = part.stack.back();
-            part.stack.pop_back();
-            process(task, part);
-        }
-    };
-
-    Part tree;
-    tree.nodes.reserve(2 * (n / kLeafSize + 1));
-    tree.nodes.push_back({});
-    stage.check();
-    process({0, 0, std::uint32_t(n), 0}, tree);
-    if (tree.stack.size() == 2 && n >= kParallelBuild && omp_get_max_threads() > 1) {
-        // The root's two subtrees on two threads, each numbered from 0 (its
-        // root), then appended as the serial build numbers them: the left
-        // subtree's root is node 1, its other nodes follow from 3 in their
-        // order; the right one's root is node 2, its other nodes follow
-        // those. Their triangle ranges are disjoint. The same tree, node for
-        // node, as the serial build.
-        Part sub[2];
-        for (int k = 0; k < 2; ++k) {
-            const Task t = tree.stack[std::size_t(1 - k)];  // left on top
-            sub[k].nodes.push_back({});
-            sub[k].stack.push_back({0, t.begin, t.end, t.depth});
-        }
-        auto right = std::async(std::launch::async, [&] { grow(sub[1]); });
-        grow(sub[0]);
-        right.get();
-        tree.nodes.resize(3);
-        const std::uint32_t offset[2] = {2, std::uint32_t(sub[0].nodes.size()) + 1};  // for local ids >= 1
-        for (std::uint32_t k = 0; k < 2; ++k) {
-            auto global = [&](std::uint32_t local) { return local == 0 ? 1 + k : local + offset[k]; };
-            for (std::size_t i = 0; i < sub[k].nodes.size(); ++i) {
-                Node node = sub[k].nodes[i];
-                if (node.triangles() == 0) node.first = global(node.first);
-                if (i == 0)
-                    tree.nodes[1 + k] = node;
-                else
-                    tree.nodes.push_back(node);
-            }
-            const auto slot0 = std::uint32_t(tree.obbs.size());
-            tree.obbs.insert(tree.obbs.end(), sub[k].obbs.begin(), sub[k].obbs.end());
-            for (const auto& [node, slot] : sub[k].obb_of) tree.obb_of.push_back({global(node), slot0 + slot});
-        }
-    } else {
-        grow(tree);
-    }
-    nodes = std::move(tree.nodes);
-    obbs = std::move(tree.obbs);
-    const auto obb_of = std::move(tree.obb_of);
-    std::vector<Tri> ordered(n);
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) ordered[i] = tris[order[i]];
-    tris.swap(ordered);
-    obb_slot.assign(obbs.empty() ? 0 : nodes.size(), 0);
-    for (const auto& [node, slot] : obb_of) {
-        nodes[node].count |= kHasObb;
-        obb_slot[node] = slot;
-    }
-    parent_of.assign(nodes.size(), 0);
-    leaf_of.assign(n, 0);
-    position_of.assign(n, 0);
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) position_of[tris[i].face] = std::uint32_t(i);
-#pragma omp parallel for schedule(static)
-    for (std::size_t k = 0; k < nodes.size(); ++k) {
-        const Node& node = nodes[k];
-        if (node.triangles() > 0) {
-            for (std::uint32_t i = 0; i < node.triangles(); ++i) leaf_of[node.first + i] = std::uint32_t(k);
-        } else {
-            parent_of[node.first] = parent_of[node.first + 1] = std::uint32_t(k);
-        }
-    }
-    stage.finish();
-}
 
 ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const
 {
@@ -584,7 +235,7 @@ double ClosestPointIndex::Impl::hull_query(const std::array<Vec3, 3>& c, double 
 ClosestPointIndex::ClosestPointIndex(const Mesh& mesh) : impl_(std::make_unique<Impl>())
 {
     validate(mesh, "ClosestPointIndex");
-    impl_->build(mesh);
+    detail::build_bvh(mesh, *impl_);
 }
 
 ClosestPointIndex::~ClosestPointIndex() = default;
