@@ -4,9 +4,8 @@
 #include "meshdiff/geometry/point_triangle.h"
 
 #include "core/stage_progress.h"
+#include "distance/hausdorff_bounds.h"
 #include "distance/hausdorff_seeded.h"
-#include "geometry/point_triangle_kernels.h"
-#include "geometry/point_triangle_x4.h"
 
 #include <fmt/format.h>
 
@@ -14,36 +13,21 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <limits>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace meshdiff {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
-// Subdivision depth at which a triangle is closed whatever its bound: its
-// edges are then 2^-40 (1e-12) of the original ones, the rounding level of
-// the midpoints. Its bound still enters the upper bound.
-constexpr int kMaxDepth = 40;
+using detail::Cell;
+using detail::descend_point;
+using detail::face_distance;
+using detail::kMaxDepth;
+using detail::kNone;
+
 // Floor of the tolerance, relative to the largest coordinate magnitude.
 constexpr double kRoundingFloor = 1e-13;
-
-// A triangle of A (a face or a part of one) in the search.
-struct Cell
-{
-    std::array<Vec3, 3> corner;
-    // Per corner, an upper bound of its distance to B (its distance to the
-    // face `closest`), exact where the corner was queried.
-    std::array<double, 3> d;
-    std::array<std::uint32_t, 3> closest;
-    std::uint32_t face = 0;      // the face of A it lies in
-    std::uint32_t hint = kNone;  // the face of B that bounded its parent
-    int depth = 0;
-    double upper = kInf;  // its bound, once evaluated
-};
 
 // A candidate for the lower bound: a point of A and its closest point of B.
 struct Candidate
@@ -54,301 +38,6 @@ struct Candidate
     Vec3 closest = Vec3::Zero();
     std::uint32_t closest_face = 0;
 };
-
-// B's triangles, copied once for the bounds (closest_point_on_triangle()'s
-// primitives, with the thin-triangle test done once per triangle).
-struct Triangle
-{
-    Vec3 p0, p1, p2;
-    bool thin;
-};
-using Triangles = std::vector<Triangle>;
-
-Triangles triangles_of(const Mesh& m)
-{
-    Triangles t(m.n_faces());
-#pragma omp parallel for schedule(static)
-    for (std::size_t f = 0; f < m.n_faces(); ++f) {
-        const Face& v = m.faces[f];
-        t[f] = {m.points[std::size_t(v[0])], m.points[std::size_t(v[1])], m.points[std::size_t(v[2])], false};
-        t[f].thin = detail::is_thin_triangle(t[f].p0, t[f].p1, t[f].p2);
-    }
-    return t;
-}
-
-// Squared distance from p to triangle t: bitwise the square of
-// closest_point_on_triangle()'s distance before its square root.
-double squared_distance(const Vec3& p, const Triangle& t)
-{
-    const Vec3 q =
-        t.thin ? detail::thin_triangle_point(p, t.p0, t.p1, t.p2) : detail::triangle_point(p, t.p0, t.p1, t.p2);
-    return (p - q).squaredNorm();
-}
-
-// The squared distances from the \p n points \p pts to triangle t, into
-// \p d2 (room for n rounded up to 4): squared_distance() of each, four at a
-// time with AVX2 (bitwise the same, geometry/point_triangle_x4.h).
-void squared_distances(const Vec3* pts, int n, const Triangle& t, double* d2)
-{
-    if (t.thin || n < 2 || !detail::use_avx2()) {
-        for (int i = 0; i < n; ++i) d2[i] = squared_distance(pts[i], t);
-        return;
-    }
-    detail::PairsX4 in;
-    for (int k = 0; k < 4; ++k) {
-        in.a[k] = t.p0.data();
-        in.b[k] = t.p1.data();
-        in.c[k] = t.p2.data();
-    }
-    double qx[4], qy[4], qz[4];
-    for (int i0 = 0; i0 < n; i0 += 4) {
-        for (int k = 0; k < 4; ++k) in.p[k] = pts[std::min(i0 + k, n - 1)].data();
-        detail::closest_points_x4(in, d2 + i0, qx, qy, qz);
-    }
-}
-
-// Distance from p to face t of B (closest_point_on_triangle()'s value).
-double face_distance(const Vec3& p, const Triangles& b, std::uint32_t t)
-{
-    return std::sqrt(squared_distance(p, b[t]));
-}
-
-// The largest distance from the corners c to face t of B, or +inf as soon as
-// it reaches stop (then only "not below stop" is known).
-double max_corner_distance(const std::array<Vec3, 3>& c, const Triangles& b, std::uint32_t t, double stop)
-{
-    const double stop2 = stop * stop;
-    double d2[4];
-    squared_distances(c.data(), 3, b[t], d2);
-    double v = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        v = std::max(v, d2[k]);
-        if (v >= stop2) return kInf;
-    }
-    return std::sqrt(v);
-}
-
-// The largest distance from a point of triangle c to its nearest corner: the
-// circumradius of an acute triangle, half the longest edge otherwise (a
-// segment or a point included). Rounded up by a relative 1e-12.
-double covering_radius(const Cell& c)
-{
-    const Vec3 e0 = c.corner[1] - c.corner[0], e1 = c.corner[2] - c.corner[1], e2 = c.corner[0] - c.corner[2];
-    std::array<double, 3> sq{e0.squaredNorm(), e1.squaredNorm(), e2.squaredNorm()};
-    std::sort(sq.begin(), sq.end());
-    const double longest = std::sqrt(sq[2]);
-    double r = 0.5 * longest;
-    if (sq[2] < sq[0] + sq[1]) {  // acute
-        const double twice_area = e0.cross(e2).norm();
-        if (twice_area > 0.0)
-            r = std::min(std::sqrt(sq[0] * sq[1] * sq[2]) / (2.0 * twice_area), longest / std::sqrt(3.0));
-        else
-            r = longest / std::sqrt(3.0);
-        r = std::max(r, 0.5 * longest);
-    }
-    return r * (1.0 + 1e-12);
-}
-
-// For each face of \p m, a face across each of its three edges (kNone on a
-// boundary edge or a collapsed one; around a non-manifold edge the faces are
-// linked in a cycle, so every one is reachable): the graph of the descents.
-std::vector<std::array<std::uint32_t, 3>> edge_neighbours(const Mesh& m)
-{
-    struct HalfEdge
-    {
-        std::int32_t lo, hi;
-        std::uint32_t face;
-        std::uint32_t k;
-    };
-    // Sorted by (lo, hi, face, k), a key unique per half-edge: a counting
-    // sort by lo, then small sorts per vertex.
-    const std::size_t nv = m.n_vertices();
-    std::vector<std::uint32_t> start(nv + 1, 0);
-    for (std::size_t f = 0; f < m.n_faces(); ++f)
-        for (std::uint32_t k = 0; k < 3; ++k) {
-            const std::int32_t v0 = m.faces[f][k], v1 = m.faces[f][(k + 1) % 3];
-            if (v0 != v1) ++start[std::size_t(std::min(v0, v1)) + 1];
-        }
-    for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-    std::vector<HalfEdge> e(start[nv]);
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t f = 0; f < m.n_faces(); ++f)
-        for (std::uint32_t k = 0; k < 3; ++k) {
-            const std::int32_t v0 = m.faces[f][k], v1 = m.faces[f][(k + 1) % 3];
-            if (v0 != v1)
-                e[fill[std::size_t(std::min(v0, v1))]++] = {std::min(v0, v1), std::max(v0, v1), std::uint32_t(f), k};
-        }
-    for (std::size_t v = 0; v < nv; ++v)
-        std::sort(e.begin() + start[v], e.begin() + start[v + 1], [](const HalfEdge& x, const HalfEdge& y) {
-            return std::tie(x.hi, x.face, x.k) < std::tie(y.hi, y.face, y.k);
-        });
-    std::vector<std::array<std::uint32_t, 3>> nbr(m.n_faces(), {kNone, kNone, kNone});
-    for (std::size_t i = 0; i < e.size();) {
-        std::size_t j = i + 1;
-        while (j < e.size() && e[j].lo == e[i].lo && e[j].hi == e[i].hi) ++j;
-        if (j - i >= 2)
-            for (std::size_t q = i; q < j; ++q) nbr[e[q].face][e[q].k] = e[q + 1 < j ? q + 1 : i].face;
-        i = j;
-    }
-    return nbr;
-}
-
-// Local descents over B's faces, each keeping the exact value of a face it
-// holds (so any result is a valid upper bound). At most kMaxSteps moves.
-constexpr int kMaxSteps = 16;
-// The cuts of a cell along planes between adjacent triangles of B: at most
-// this deep, and this many parts evaluated per cell.
-constexpr int kPieceDepth = 8;
-constexpr int kPieceWork = 48;
-using Neighbours = std::vector<std::array<std::uint32_t, 3>>;
-
-// Face \p t of B is at distance \p d from \p p; moves to a neighbour closer to
-// p while there is one, until d <= goal.
-void descend_point(const Vec3& p, const Triangles& b, const Neighbours& nbr, std::uint32_t& t, double& d, double goal)
-{
-    for (int step = 0; step < kMaxSteps && d > goal; ++step) {
-        std::uint32_t next = t;
-        for (const std::uint32_t n : nbr[t]) {
-            if (n == kNone) continue;
-            const double dn = face_distance(p, b, n);
-            if (dn < d) {
-                d = dn;
-                next = n;
-            }
-        }
-        if (next == t) break;
-        t = next;
-    }
-}
-
-// The same for the largest distance from the corners \p c to a face (\p u for
-// face \p t): descends while a neighbour has a smaller one, until u <= goal.
-// True if it stopped at a local minimum (a face with neighbours, none better).
-bool descend_hull(const std::array<Vec3, 3>& c, const Triangles& b, const Neighbours& nbr, std::uint32_t& t, double& u,
-                  double goal)
-{
-    for (int step = 0; step < kMaxSteps && u > goal; ++step) {
-        std::uint32_t next = t;
-        bool any = false;
-        for (const std::uint32_t n : nbr[t]) {
-            if (n == kNone) continue;
-            any = true;
-            const double v = max_corner_distance(c, b, n, u);
-            if (v < u) {
-                u = v;
-                next = n;
-            }
-        }
-        if (next == t) return any;
-        t = next;
-    }
-    return false;
-}
-
-// A convex polygon: a piece of a cell cut along the planes between adjacent
-// triangles of B.
-constexpr int kMaxPiece = 16;
-struct Piece
-{
-    std::array<Vec3, kMaxPiece> p;
-    int n = 0;
-};
-
-// Cuts \p in by the plane through \p o with normal \p m: the part where
-// (v - o).m >= 0 into \p keep, the part where it is <= 0 into \p rest (the
-// crossing points into both, so that together they cover \p in up to the
-// rounding of those points). False if a part would exceed kMaxPiece corners.
-bool cut(const Piece& in, const Vec3& o, const Vec3& m, Piece& keep, Piece& rest)
-{
-    keep.n = rest.n = 0;
-    auto push = [](Piece& q, const Vec3& v) {
-        if (q.n == kMaxPiece) return false;
-        q.p[std::size_t(q.n++)] = v;
-        return true;
-    };
-    for (int i = 0; i < in.n; ++i) {
-        const Vec3& a = in.p[std::size_t(i)];
-        const Vec3& b = in.p[std::size_t((i + 1) % in.n)];
-        const double sa = (a - o).dot(m), sb = (b - o).dot(m);
-        if (sa >= 0.0 && !push(keep, a)) return false;
-        if (sa <= 0.0 && !push(rest, a)) return false;
-        if ((sa > 0.0 && sb < 0.0) || (sa < 0.0 && sb > 0.0)) {
-            const Vec3 x = a + (sa / (sa - sb)) * (b - a);
-            if (!push(keep, x) || !push(rest, x)) return false;
-        }
-    }
-    return true;
-}
-
-// The plane between face t of B and its neighbour t2 across edge k (corners
-// k, k + 1 of t): through that edge, bisecting the angle between the two
-// faces; \p m points to t's side. False for a collapsed edge or neighbour.
-bool bisector(const Mesh& b, std::uint32_t t, std::size_t k, std::uint32_t t2, Vec3& o, Vec3& m)
-{
-    const Face& f = b.faces[t];
-    const int v0 = f[k], v1 = f[(k + 1) % 3], vo = f[(k + 2) % 3];
-    int wo = -1;
-    for (const int w : b.faces[t2])
-        if (w != v0 && w != v1) wo = w;
-    if (wo < 0) return false;
-    o = b.points[std::size_t(v0)];
-    const Vec3 e = b.points[std::size_t(v1)] - o;
-    const double ee = e.squaredNorm();
-    if (!(ee > 0.0)) return false;
-    auto across = [&](int v) -> Vec3 {  // unit vector from the edge towards v, across it
-        Vec3 d = b.points[std::size_t(v)] - o;
-        d -= (d.dot(e) / ee) * e;
-        const double len = d.norm();
-        return len > 0.0 ? Vec3(d / len) : Vec3(Vec3::Zero());
-    };
-    const Vec3 u = across(vo), u2 = across(wo);
-    m = u - u2;
-    if (!(m.squaredNorm() > 1e-12)) m = u;
-    return m.squaredNorm() > 0.0;
-}
-
-// An upper bound of d(., B) over the convex piece \p q: the largest distance
-// from its corners to face t (convexity), and where that exceeds \p goal and
-// q reaches across an edge of t, the larger of the bounds of its two parts
-// cut along the bisecting plane of that edge, the far part bounded by the
-// neighbour (so around a vertex of B a piece is passed along its fan). +inf
-// when it cannot get below \p goal within \p depth cuts or \p work piece
-// evaluations. Any cut gives a valid bound: every point of q lies in a part.
-double piece_bound(const Piece& q, std::uint32_t t, int depth, double goal, const Mesh& b, const Triangles& tris,
-                   const Neighbours& nbr, int& work)
-{
-    if (q.n == 0) return 0.0;
-    if (--work < 0) return kInf;
-    std::array<double, kMaxPiece> d2;
-    squared_distances(q.p.data(), q.n, tris[t], d2.data());
-    double v2 = 0.0;
-    for (int i = 0; i < q.n; ++i) v2 = std::max(v2, d2[std::size_t(i)]);
-    const double v = std::sqrt(v2);
-    if (v <= goal) return v;
-    if (depth == 0) return kInf;
-    for (std::size_t k = 0; k < 3; ++k) {
-        const std::uint32_t t2 = nbr[t][k];
-        Vec3 o, m;
-        if (t2 == kNone || !bisector(b, t, k, t2, o, m)) continue;
-        // Outside beyond rounding: the crossing points of an earlier cut along
-        // this plane lie on it up to a few ulps.
-        double most = 0.0, least = 0.0;
-        for (int i = 0; i < q.n; ++i) {
-            const double s = (q.p[std::size_t(i)] - o).dot(m);
-            most = std::max(most, std::abs(s));
-            least = std::min(least, s);
-        }
-        const bool outside = least < -1e-9 * most;
-        if (!outside) continue;
-        Piece keep, rest;
-        if (!cut(q, o, m, keep, rest)) return kInf;
-        const double near = keep.n ? piece_bound(keep, t, depth - 1, goal, b, tris, nbr, work) : 0.0;
-        if (near > goal) return kInf;
-        const double far = piece_bound(rest, t2, depth - 1, goal, b, tris, nbr, work);
-        return far > goal ? kInf : std::max(near, far);
-    }
-    return kInf;  // inside t's wedge and still above the goal
-}
 
 double largest_coordinate(const Mesh& m)
 {
@@ -387,150 +76,103 @@ void validate_inputs(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_in
         throw InvalidArgumentError(fmt::format("certified_hausdorff: the index holds {} faces but mesh B has {}",
                                                b_index.n_faces(), b.n_faces()));
 }
-}  // namespace
 
-CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
-                                               const HausdorffOptions& options,
-                                               const std::optional<HausdorffSeed>& seed,
-                                               const std::vector<ClosestPoint>& vq)
+// One certification (detail::certified_hausdorff()), in its steps: the lower
+// bound from the seed and A's vertices, the cells (A's faces) and B as the
+// bounds use it, then rounds of splitting the open cells and bounding their
+// parts, until every cell is closed or the budget is spent.
+struct Certification
 {
-    validate_inputs(a, b, b_index, options);
-    if (vq.size() != a.n_vertices())
-        throw InvalidArgumentError(
-            fmt::format("certified_hausdorff: {} vertex closest points for {} vertices", vq.size(), a.n_vertices()));
-    const double floor = kRoundingFloor * std::max(largest_coordinate(a), largest_coordinate(b));
-    auto tolerance = [&](double lower) {
+    Certification(const Mesh& mesh_a, const Mesh& mesh_b, const ClosestPointIndex& index_b,
+                  const HausdorffOptions& opts)
+        : a(mesh_a),
+          b(mesh_b),
+          b_index(index_b),
+          options(opts),
+          floor(kRoundingFloor * std::max(largest_coordinate(a), largest_coordinate(b))),
+          budget(options.max_evaluations ? options.max_evaluations
+                                         : 2'000'000 + 20 * (std::size_t(a.n_faces()) + b.n_faces())),
+          target(b, b_index)
+    {}
+
+    double tolerance(double lower) const
+    {
         return std::max({options.relative_tolerance * lower, options.absolute_tolerance, floor});
-    };
-    const std::size_t budget =
-        options.max_evaluations ? options.max_evaluations : 2'000'000 + 20 * (std::size_t(a.n_faces()) + b.n_faces());
-
-    // Progress counts the triangles bounded and split (the total is not known).
-    detail::StageProgress stage("certification", 0);
-    CertifiedHausdorff r;
-    Candidate best;
-    if (seed) {
-        const ClosestPoint q = b_index.closest_point(seed->point);
-        best = {std::max(seed->distance, q.distance), seed->point, seed->face, q.point, q.face};
-        ++r.point_evaluations;
     }
 
-    // Exact distances of the vertices that faces use; each vertex's face is
-    // the lowest-index face using it.
-    std::vector<std::uint32_t> first_face(a.n_vertices(), kNone);
-    for (std::size_t f = a.n_faces(); f-- > 0;)
-        for (auto v : a.faces[f]) first_face[std::size_t(v)] = std::uint32_t(f);
-    for (std::size_t v = 0; v < a.n_vertices(); ++v) {
-        if (first_face[v] == kNone) continue;
-        ++r.point_evaluations;
-        if (vq[v].distance > best.d) best = {vq[v].distance, a.points[v], first_face[v], vq[v].point, vq[v].face};
-    }
-
-    stage.check();  // the serial set-up is checked between its steps
-    std::vector<Cell> cells(a.n_faces());
-#pragma omp parallel for schedule(static)
-    for (std::size_t f = 0; f < a.n_faces(); ++f) {
-        Cell& c = cells[f];
-        for (std::size_t k = 0; k < 3; ++k) {
-            const auto v = std::size_t(a.faces[f][k]);
-            c.corner[k] = a.points[v];
-            c.d[k] = vq[v].distance;
-            c.closest[k] = vq[v].face;
+    // The lower bound from the seed and from A's vertices.
+    void set_up_lower_bound(const std::optional<HausdorffSeed>& seed, const std::vector<ClosestPoint>& vq)
+    {
+        if (seed) {
+            const ClosestPoint q = b_index.closest_point(seed->point);
+            best = {std::max(seed->distance, q.distance), seed->point, seed->face, q.point, q.face};
+            ++r.point_evaluations;
         }
-        c.face = std::uint32_t(f);
+
+        // Exact distances of the vertices that faces use; each vertex's face is
+        // the lowest-index face using it.
+        std::vector<std::uint32_t> first_face(a.n_vertices(), kNone);
+        for (std::size_t f = a.n_faces(); f-- > 0;)
+            for (auto v : a.faces[f]) first_face[std::size_t(v)] = std::uint32_t(f);
+        for (std::size_t v = 0; v < a.n_vertices(); ++v) {
+            if (first_face[v] == kNone) continue;
+            ++r.point_evaluations;
+            if (vq[v].distance > best.d) best = {vq[v].distance, a.points[v], first_face[v], vq[v].point, vq[v].face};
+        }
     }
 
-    // The longest edge of B's triangles: a cell of A whose corners are
-    // farther apart than 2 x threshold + that length has no triangle of B
-    // within threshold of all its corners (|c_i - c_j| <= d(c_i, t) +
-    // diam(t) + d(c_j, t)), so its bound cannot close it: it is split
-    // without searching.
-    stage.check();
-    std::vector<double> diameter_b(b.n_faces(), 0.0);  // longest edge per face of B
+    // A cell per face of A, its corners' distances from \p vq.
+    void set_up_cells(const std::vector<ClosestPoint>& vq)
+    {
+        stage.check();  // the serial set-up is checked between its steps
+        cells = std::vector<Cell>(a.n_faces());
 #pragma omp parallel for schedule(static)
-    for (std::size_t f = 0; f < b.n_faces(); ++f)
-        for (std::size_t k = 0; k < 3; ++k)
-            diameter_b[f] = std::max(
-                diameter_b[f],
-                (b.points[std::size_t(b.faces[f][k])] - b.points[std::size_t(b.faces[f][(k + 1) % 3])]).norm());
-    const double longest_b = *std::max_element(diameter_b.begin(), diameter_b.end());
-    auto diameter = [](const Cell& c) {
-        return std::max({(c.corner[0] - c.corner[1]).norm(), (c.corner[1] - c.corner[2]).norm(),
-                         (c.corner[2] - c.corner[0]).norm()});
-    };
+        for (std::size_t f = 0; f < a.n_faces(); ++f) {
+            Cell& c = cells[f];
+            for (std::size_t k = 0; k < 3; ++k) {
+                const auto v = std::size_t(a.faces[f][k]);
+                c.corner[k] = a.points[v];
+                c.d[k] = vq[v].distance;
+                c.closest[k] = vq[v].face;
+            }
+            c.face = std::uint32_t(f);
+        }
+    }
 
-    stage.check();
-    const Neighbours nbr = edge_neighbours(b);
-    stage.check();
-    const Triangles tris = triangles_of(b);
-    double upper_done = 0.0;  // the largest bound of the closed triangles
+    // B's longest edges, the neighbours across its edges and its triangles.
+    void set_up_target()
+    {
+        // The longest edge of B's triangles: a cell of A whose corners are
+        // farther apart than 2 x threshold + that length has no triangle of B
+        // within threshold of all its corners (|c_i - c_j| <= d(c_i, t) +
+        // diam(t) + d(c_j, t)), so its bound cannot close it: it is split
+        // without searching.
+        stage.check();
+        std::vector<double> diameter_b(b.n_faces(), 0.0);  // longest edge per face of B
+#pragma omp parallel for schedule(static)
+        for (std::size_t f = 0; f < b.n_faces(); ++f)
+            for (std::size_t k = 0; k < 3; ++k)
+                diameter_b[f] = std::max(
+                    diameter_b[f],
+                    (b.points[std::size_t(b.faces[f][k])] - b.points[std::size_t(b.faces[f][(k + 1) % 3])]).norm());
+        target.longest = *std::max_element(diameter_b.begin(), diameter_b.end());
+        target.diameter = std::move(diameter_b);
+        stage.check();
+        target.nbr = detail::edge_neighbours(b);
+        stage.check();
+        target.tris = detail::triangles_of(b);
+    }
+
     // Bounds every cell; keeps those above lower + tolerance in `cells`.
-    auto bound_and_prune = [&](std::vector<Cell>& list) {
+    void bound_and_prune(std::vector<Cell>& list)
+    {
         const double threshold = best.d + tolerance(best.d);
         const auto n = std::int64_t(list.size());
 #pragma omp parallel for schedule(dynamic, 256)
         for (std::int64_t i = 0; i < n; ++i) {
             Cell& c = list[std::size_t(i)];
             if (!stage.tick()) continue;
-            // d(., B) is 1-Lipschitz and every point of the cell is within
-            // covering_radius(c) of a corner: a bound always.
-            const double diam = diameter(c);
-            double u = std::max({c.d[0], c.d[1], c.d[2]}) + covering_radius(c);
-            if (u <= threshold || (c.depth < kMaxDepth && diam > 2.0 * threshold + longest_b)) {
-                c.upper = u;
-                continue;
-            }
-            std::array<std::uint32_t, 4> tried{c.closest[0], c.closest[1], c.closest[2], c.hint};
-            std::uint32_t best_face = kNone;
-            double best_face_u = kInf;
-            for (std::size_t k = 0; k < 4; ++k) {
-                const std::uint32_t t = tried[k];
-                if (t == kNone ||
-                    std::find(tried.begin(), tried.begin() + std::ptrdiff_t(k), t) != tried.begin() + std::ptrdiff_t(k))
-                    continue;
-                const double v = max_corner_distance(c.corner, tris, t, best_face_u);
-                if (v < best_face_u) {
-                    best_face_u = v;
-                    best_face = t;
-                }
-            }
-            bool settled = false;
-            double local = 0.0;
-            for (const std::uint32_t t : tried)
-                if (t != kNone) local = std::max(local, diameter_b[t]);
-            const bool coverable = c.depth >= kMaxDepth || diam <= 2.0 * threshold + 2.0 * local;
-            if (best_face != kNone && std::min(u, best_face_u) > threshold && coverable) {
-                settled = descend_hull(c.corner, tris, nbr, best_face, best_face_u, threshold);
-                c.hint = best_face;
-            }
-            u = std::min(u, best_face_u);
-            // Across edges of B: the cell cut along the planes between
-            // adjacent triangles, each part bounded by its own triangle.
-            if (u > threshold && best_face != kNone && coverable) {
-                Piece q;
-                q.n = 3;
-                for (std::size_t k = 0; k < 3; ++k) q.p[k] = c.corner[k];
-                int work = kPieceWork;
-                const double v = piece_bound(q, best_face, kPieceDepth, threshold, b, tris, nbr, work);
-                if (v <= threshold) {
-                    // The crossing points are rounded: a point of the cell is
-                    // within a few ulps of its coordinates from a part.
-                    const double slack = 1e-14 * (diam + c.corner[0].cwiseAbs().maxCoeff());
-                    u = std::min(u, v + slack);
-                }
-            }
-            // A search is worth it only if one triangle of B can be near all
-            // the corners: not when the cell is much wider than the triangles
-            // near them (a cost heuristic: skipping only means splitting).
-            if (u > threshold && (c.depth >= kMaxDepth || (!settled && coverable))) {
-                std::uint32_t t = kNone;
-                const double v = b_index.hull_distance_bound(c.corner, threshold, &t);
-                if (v < u) {
-                    u = v;
-                    c.hint = t;
-                }
-            }
-            c.upper = u;
+            detail::bound_cell(c, threshold, target);
         }
         stage.check();
         r.bound_evaluations += list.size();
@@ -543,46 +185,62 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
             }
         }
         list.resize(kept);
-    };
+    }
 
-    bound_and_prune(cells);
-    std::vector<Cell> next;
-    std::vector<Candidate> found;
-    // Open cells set aside when a round would create more than
-    // max_round_triangles: the search goes on with the first
-    // max_round_triangles / 4 of them and takes the lists set aside later,
-    // the last one first (depth first, so the memory stays bounded). Until
-    // a round would be that large the search is the breadth-first one.
-    std::vector<std::vector<Cell>> pending;
-    const std::size_t chunk = options.max_round_triangles / 4;
-    for (;;) {
-        if (cells.empty()) {
-            if (pending.empty()) break;
-            cells = std::move(pending.back());
-            pending.pop_back();
-            // Bounded against an earlier lower bound: close those that the
-            // current one closes.
-            const double threshold = best.d + tolerance(best.d);
-            std::size_t kept = 0;
-            for (Cell& c : cells) {
-                if (c.upper <= threshold)
-                    upper_done = std::max(upper_done, c.upper);
-                else
-                    cells[kept++] = c;
+    // Takes the list of open cells set aside last, closing those that the
+    // current lower bound closes; false if there is none.
+    bool reopen_pending()
+    {
+        if (pending.empty()) return false;
+        cells = std::move(pending.back());
+        pending.pop_back();
+        // Bounded against an earlier lower bound: close those that the
+        // current one closes.
+        const double threshold = best.d + tolerance(best.d);
+        std::size_t kept = 0;
+        for (Cell& c : cells) {
+            if (c.upper <= threshold)
+                upper_done = std::max(upper_done, c.upper);
+            else
+                cells[kept++] = c;
+        }
+        cells.resize(kept);
+        return true;
+    }
+
+    // Splits and bounds the open cells round by round (setting lists aside
+    // when a round would be too large) until none is left or the budget is
+    // spent.
+    void search()
+    {
+        bound_and_prune(cells);
+        const std::size_t chunk = options.max_round_triangles / 4;
+        for (;;) {
+            if (cells.empty()) {
+                if (!reopen_pending()) break;
+                continue;
             }
-            cells.resize(kept);
-            continue;
+            if (4 * cells.size() > options.max_round_triangles) {
+                pending.emplace_back(cells.begin() + std::ptrdiff_t(chunk), cells.end());
+                cells.resize(chunk);
+                ++r.chunks;
+            }
+            if (r.bound_evaluations + 4 * cells.size() > budget) {
+                r.budget_exhausted = true;
+                break;
+            }
+            ++r.rounds;
+            split_round();
+            bound_and_prune(cells);
         }
-        if (4 * cells.size() > options.max_round_triangles) {
-            pending.emplace_back(cells.begin() + std::ptrdiff_t(chunk), cells.end());
-            cells.resize(chunk);
-            ++r.chunks;
-        }
-        if (r.bound_evaluations + 4 * cells.size() > budget) {
-            r.budget_exhausted = true;
-            break;
-        }
-        ++r.rounds;
+    }
+
+    // One round: every open cell into four, its edge midpoints bounded (and
+    // queried where they can raise the lower bound).
+    void split_round()
+    {
+        const detail::Triangles& tris = target.tris;
+        const detail::Neighbours& nbr = target.nbr;
         // Split every open triangle at its edge midpoints. A midpoint's
         // distance to the closer of its edge's two faces bounds its distance
         // to B from above; only where that bound exceeds the lower bound can
@@ -647,20 +305,64 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
         for (const Candidate& cand : found)  // in order: the lowest index wins ties
             if (cand.d > best.d) best = cand;
         cells.swap(next);
-        bound_and_prune(cells);
     }
 
-    double upper = std::max(upper_done, best.d);
-    for (const Cell& c : cells) upper = std::max(upper, c.upper);
-    for (const std::vector<Cell>& list : pending)
-        for (const Cell& c : list) upper = std::max(upper, c.upper);
-    r.lower = best.d;
-    r.upper = upper;
-    r.tolerance = tolerance(best.d);
-    r.certified = !r.budget_exhausted && r.upper - r.lower <= r.tolerance;
-    stage.finish();
-    r.location = {best.point, best.face, best.closest, best.closest_face};
-    return r;
+    // The interval, its tolerance and the location of the lower bound.
+    CertifiedHausdorff finish()
+    {
+        double upper = std::max(upper_done, best.d);
+        for (const Cell& c : cells) upper = std::max(upper, c.upper);
+        for (const std::vector<Cell>& list : pending)
+            for (const Cell& c : list) upper = std::max(upper, c.upper);
+        r.lower = best.d;
+        r.upper = upper;
+        r.tolerance = tolerance(best.d);
+        r.certified = !r.budget_exhausted && r.upper - r.lower <= r.tolerance;
+        stage.finish();
+        r.location = {best.point, best.face, best.closest, best.closest_face};
+        return r;
+    }
+
+    const Mesh& a;
+    const Mesh& b;
+    const ClosestPointIndex& b_index;
+    const HausdorffOptions& options;
+    const double floor;
+    const std::size_t budget;
+    // Progress counts the triangles bounded and split (the total is not known).
+    detail::StageProgress stage{"certification", 0};
+    CertifiedHausdorff r;
+    Candidate best;
+    detail::BoundsTarget target;  // B as the bounds use it
+    std::vector<Cell> cells;      // the open cells
+    double upper_done = 0.0;      // the largest bound of the closed triangles
+    // Open cells set aside when a round would create more than
+    // max_round_triangles: the search goes on with the first
+    // max_round_triangles / 4 of them and takes the lists set aside later,
+    // the last one first (depth first, so the memory stays bounded). Until
+    // a round would be that large the search is the breadth-first one.
+    std::vector<std::vector<Cell>> pending;
+    std::vector<Cell> next;        // a round's children, four per cell
+    std::vector<Candidate> found;  // a round's candidates, one per cell
+};
+
+}  // namespace
+
+CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
+                                               const HausdorffOptions& options,
+                                               const std::optional<HausdorffSeed>& seed,
+                                               const std::vector<ClosestPoint>& vq)
+{
+    validate_inputs(a, b, b_index, options);
+    if (vq.size() != a.n_vertices())
+        throw InvalidArgumentError(
+            fmt::format("certified_hausdorff: {} vertex closest points for {} vertices", vq.size(), a.n_vertices()));
+    Certification s(a, b, b_index, options);
+    s.set_up_lower_bound(seed, vq);
+    s.set_up_cells(vq);
+    s.set_up_target();
+    s.search();
+    return s.finish();
 }
 
 CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
