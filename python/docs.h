@@ -189,7 +189,7 @@ constexpr const char* kSurfaceDistanceDoc =
     R"doc(Metro-style surface distance between the first mesh A = (V1, F1) and the second
 B = (V2, F2), in the meshes' length unit. Returns the "surface_distance" object
 of compare(): forward (A -> B: samples on A, distance to B's surface) and
-backward (B -> A) statistics min, max, mean, rms, std, p50, p95, p99, sample
+backward (B -> A) statistics min, max, mean, rms, std, p50, p95, p99, p999, sample
 counts, and "relative" (divided by A's bounding-box diagonal); hausdorff (max
 of both maxima), diagonal, metro_diagonal, sampling.
 

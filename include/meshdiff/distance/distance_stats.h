@@ -12,8 +12,8 @@
 //! Metro; face samples are area-uniform, but vertex and edge samples are not):
 //! mean = sum d / n; rms = sqrt(sum d^2 / n); stddev = population standard
 //! deviation sqrt(sum (d - mean)^2 / n). Percentiles by nearest rank: p_q is the
-//! ceil(q/100 x n)-th smallest distance (1-based), so p50, p95 and p99 are
-//! sample distances. All sums run sequentially in sample order, so the results are
+//! ceil(q/100 x n)-th smallest distance (1-based), so p50, p95, p99 and p99.9
+//! (p999) are sample distances. All sums run sequentially in sample order, so the results are
 //! bit-identical for any number of OpenMP threads.
 #pragma once
 
@@ -88,6 +88,7 @@ struct DistanceStats
     double p50 = 0.0;     //!< nearest-rank percentiles (see the file comment; kPercentiles)
     double p95 = 0.0;
     double p99 = 0.0;
+    double p999 = 0.0;         //!< the 99.9th percentile
     std::size_t n_vertex = 0;  //!< vertex samples
     std::size_t n_edge = 0;    //!< edge samples
     std::size_t n_face = 0;    //!< face samples
@@ -122,10 +123,11 @@ struct StatField
 };
 
 //! The per-sample statistics of a direction, in report order.
-inline constexpr StatField kStatFields[] = {
-    {"min", "min", &DistanceStats::min}, {"max", "max", &DistanceStats::max},    {"mean", "mean", &DistanceStats::mean},
-    {"rms", "RMS", &DistanceStats::rms}, {"std", "std", &DistanceStats::stddev}, {"p50", "p50", &DistanceStats::p50},
-    {"p95", "p95", &DistanceStats::p95}, {"p99", "p99", &DistanceStats::p99}};
+inline constexpr StatField kStatFields[] = {{"min", "min", &DistanceStats::min},    {"max", "max", &DistanceStats::max},
+                                            {"mean", "mean", &DistanceStats::mean}, {"rms", "RMS", &DistanceStats::rms},
+                                            {"std", "std", &DistanceStats::stddev}, {"p50", "p50", &DistanceStats::p50},
+                                            {"p95", "p95", &DistanceStats::p95},    {"p99", "p99", &DistanceStats::p99},
+                                            {"p999", "p99.9", &DistanceStats::p999}};
 
 //! A nearest-rank percentile of DistanceStats: q per mille (q = 500 is the
 //! median) and its field. Ascending in q: each is searched above the one
@@ -138,7 +140,7 @@ struct PercentileField
 
 //! The percentiles of a direction, ascending.
 inline constexpr PercentileField kPercentiles[] = {
-    {500, &DistanceStats::p50}, {950, &DistanceStats::p95}, {990, &DistanceStats::p99}};
+    {500, &DistanceStats::p50}, {950, &DistanceStats::p95}, {990, &DistanceStats::p99}, {999, &DistanceStats::p999}};
 
 //! The nearest-rank percentile of \p q per mille of \p v: its
 //! ceil(q n / 1000)-th smallest element (1-based). \p v is partially sorted in
