@@ -161,18 +161,13 @@ std::vector<char> boundary_vertex_mask(const Mesh& mesh)
     return mask;
 }
 
-TopologyReport topology_report(const Mesh& mesh)
-{
-    TopologyReport r;
-    const std::size_t n = mesh.n_vertices();
-    r.vertices = n;
-    r.faces = mesh.n_faces();
+namespace {
 
-    // A Progress (progress.h) can stop the report between its serial steps.
-    const Progress* progress = current_progress();
-    const auto he = sorted_half_edges(mesh);
-    check_cancelled(progress);
-    UnionFind comp(n);
+// One pass over the sorted half-edges, a key at a time: counts the edges, the
+// boundary and non-manifold ones and the orientation conflicts, unites the
+// ends of each edge in comp and returns the boundary edge keys.
+std::vector<std::uint64_t> half_edge_pass(const std::vector<HalfEdge>& he, UnionFind& comp, TopologyReport& r)
+{
     std::vector<std::uint64_t> boundary;
     for (std::size_t i = 0; i < he.size();) {
         std::size_t j = i;
@@ -194,7 +189,13 @@ TopologyReport topology_report(const Mesh& mesh)
         if (count == 2 && nfwd != 1) ++r.orientation_conflicts;
         i = j;
     }
+    return boundary;
+}
 
+// Isolated vertices (in no face) and the components of the others.
+void count_components(const Mesh& mesh, UnionFind& comp, TopologyReport& r)
+{
+    const std::size_t n = mesh.n_vertices();
     std::vector<char> used(n, 0);
     for (const Face& t : mesh.faces)
         for (auto v : t) used[std::size_t(v)] = 1;
@@ -207,94 +208,119 @@ TopologyReport topology_report(const Mesh& mesh)
         if (comp.find(std::uint32_t(v)) == v) ++roots;
     }
     r.components = roots;
-    check_cancelled(progress);
+}
 
-    // Boundary loops: connected components of the boundary-edge graph.
-    {
-        UnionFind bl(n);
-        std::vector<char> on_boundary(n, 0);
-        for (auto k : boundary) {
-            auto a = std::uint32_t(k >> 32), b = std::uint32_t(k & 0xffffffffu);
-            on_boundary[a] = on_boundary[b] = 1;
-            bl.unite(a, b);
-        }
-        for (std::size_t v = 0; v < n; ++v)
-            if (on_boundary[v] && bl.find(std::uint32_t(v)) == v) ++r.boundary_loops;
+// Boundary loops: connected components of the boundary-edge graph.
+void count_boundary_loops(std::size_t n, const std::vector<std::uint64_t>& boundary, TopologyReport& r)
+{
+    UnionFind bl(n);
+    std::vector<char> on_boundary(n, 0);
+    for (auto k : boundary) {
+        auto a = std::uint32_t(k >> 32), b = std::uint32_t(k & 0xffffffffu);
+        on_boundary[a] = on_boundary[b] = 1;
+        bl.unite(a, b);
     }
+    for (std::size_t v = 0; v < n; ++v)
+        if (on_boundary[v] && bl.find(std::uint32_t(v)) == v) ++r.boundary_loops;
+}
 
-    check_cancelled(progress);
-    // Duplicate faces: same vertex set. The sorted corners of each face,
-    // bucketed by the smallest (a counting sort), then the other two sorted
-    // within each bucket: every face equal to the one before it counts.
-    {
-        std::vector<std::uint32_t> start(n + 1, 0);
-        for (const Face& t : mesh.faces) ++start[std::size_t(std::min({t[0], t[1], t[2]})) + 1];
-        for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
-        std::vector<std::uint64_t> rest(mesh.n_faces());  // the two larger corners, packed
-        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-        for (const Face& t : mesh.faces) {
-            std::array<std::uint32_t, 3> c{std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])};
-            std::sort(c.begin(), c.end());
-            rest[fill[c[0]]++] = (std::uint64_t(c[1]) << 32) | c[2];
-        }
-        for (std::size_t v = 0; v < n; ++v) {
-            const auto b = rest.begin() + start[v], e = rest.begin() + start[v + 1];
-            std::sort(b, e);
-            for (auto it = b; it != e; ++it)
-                if (it != b && *it == *(it - 1)) ++r.duplicate_faces;
-        }
+// Duplicate faces: same vertex set. The sorted corners of each face,
+// bucketed by the smallest (a counting sort), then the other two sorted
+// within each bucket: every face equal to the one before it counts.
+void count_duplicate_faces(const Mesh& mesh, TopologyReport& r)
+{
+    const std::size_t n = mesh.n_vertices();
+    std::vector<std::uint32_t> start(n + 1, 0);
+    for (const Face& t : mesh.faces) ++start[std::size_t(std::min({t[0], t[1], t[2]})) + 1];
+    for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+    std::vector<std::uint64_t> rest(mesh.n_faces());  // the two larger corners, packed
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (const Face& t : mesh.faces) {
+        std::array<std::uint32_t, 3> c{std::uint32_t(t[0]), std::uint32_t(t[1]), std::uint32_t(t[2])};
+        std::sort(c.begin(), c.end());
+        rest[fill[c[0]]++] = (std::uint64_t(c[1]) << 32) | c[2];
     }
+    for (std::size_t v = 0; v < n; ++v) {
+        const auto b = rest.begin() + start[v], e = rest.begin() + start[v + 1];
+        std::sort(b, e);
+        for (auto it = b; it != e; ++it)
+            if (it != b && *it == *(it - 1)) ++r.duplicate_faces;
+    }
+}
 
+// Non-manifold vertices: the faces around v, linked through shared edges
+// (v, w), form more than one fan. Each incident face gives two "other"
+// vertices (v itself standing in for a repeated corner); two faces are
+// linked when they share one. Up to kPairwiseFanDegree faces every pair is
+// tested; above (a hub) the faces are grouped by their other vertices
+// (a sort), so a vertex costs O(deg log deg), not O(deg^2). Both give the
+// same count: the number of classes does not depend on the union order.
+void count_non_manifold_vertices(const Mesh& mesh, TopologyReport& r)
+{
+    const std::size_t n = mesh.n_vertices();
+    constexpr std::size_t kPairwiseFanDegree = 16;
+    const Adjacency vf = vertex_faces(mesh);
+    std::vector<std::uint32_t> other;                         // the two other vertices per incident face
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> by;  // (other vertex, face slot), hubs only
+    UnionFind fan;
+    for (std::size_t v = 0; v < n; ++v) {
+        const std::size_t deg = vf.degree(v);
+        if (deg <= 1) continue;
+        other.clear();
+        for (auto it = vf.begin(v); it != vf.end(v); ++it) {
+            const Face& t = mesh.faces[*it];
+            const std::size_t start = other.size();
+            for (auto w : t)
+                if (std::size_t(w) != v) other.push_back(std::uint32_t(w));
+            // A face with a repeated corner: v stands for the missing ones
+            // (two of them if all three corners are v).
+            while (other.size() < start + 2) other.push_back(std::uint32_t(v));
+        }
+        fan.reset(deg);
+        std::size_t fans = deg;
+        if (deg <= kPairwiseFanDegree) {
+            for (std::size_t a = 0; a < deg; ++a)
+                for (std::size_t b = a + 1; b < deg; ++b) {
+                    const bool share = other[2 * a] == other[2 * b] || other[2 * a] == other[2 * b + 1] ||
+                                       other[2 * a + 1] == other[2 * b] || other[2 * a + 1] == other[2 * b + 1];
+                    if (share && fan.unite(std::uint32_t(a), std::uint32_t(b))) --fans;
+                }
+        } else {
+            by.resize(2 * deg);
+            for (std::size_t k = 0; k < 2 * deg; ++k) by[k] = {other[k], std::uint32_t(k / 2)};
+            std::sort(by.begin(), by.end());
+            for (std::size_t k = 1; k < by.size(); ++k)
+                if (by[k].first == by[k - 1].first && fan.unite(by[k].second, by[k - 1].second)) --fans;
+        }
+        if (fans > 1) ++r.non_manifold_vertices;
+    }
+}
+
+}  // namespace
+
+TopologyReport topology_report(const Mesh& mesh)
+{
+    TopologyReport r;
+    const std::size_t n = mesh.n_vertices();
+    r.vertices = n;
+    r.faces = mesh.n_faces();
+
+    // A Progress (progress.h) can stop the report between its serial steps.
+    const Progress* progress = current_progress();
+    const auto he = sorted_half_edges(mesh);
+    check_cancelled(progress);
+    UnionFind comp(n);
+    const std::vector<std::uint64_t> boundary = half_edge_pass(he, comp, r);
+    count_components(mesh, comp, r);
+    check_cancelled(progress);
+    count_boundary_loops(n, boundary, r);
+    check_cancelled(progress);
+    count_duplicate_faces(mesh, r);
     check_cancelled(progress);
     const auto degenerate = degenerate_face_mask(mesh);
     r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
     check_cancelled(progress);
-
-    // Non-manifold vertices: the faces around v, linked through shared edges
-    // (v, w), form more than one fan. Each incident face gives two "other"
-    // vertices (v itself standing in for a repeated corner); two faces are
-    // linked when they share one. Up to kPairwiseFanDegree faces every pair is
-    // tested; above (a hub) the faces are grouped by their other vertices
-    // (a sort), so a vertex costs O(deg log deg), not O(deg^2). Both give the
-    // same count: the number of classes does not depend on the union order.
-    {
-        constexpr std::size_t kPairwiseFanDegree = 16;
-        const Adjacency vf = vertex_faces(mesh);
-        std::vector<std::uint32_t> other;                         // the two other vertices per incident face
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> by;  // (other vertex, face slot), hubs only
-        UnionFind fan;
-        for (std::size_t v = 0; v < n; ++v) {
-            const std::size_t deg = vf.degree(v);
-            if (deg <= 1) continue;
-            other.clear();
-            for (auto it = vf.begin(v); it != vf.end(v); ++it) {
-                const Face& t = mesh.faces[*it];
-                const std::size_t start = other.size();
-                for (auto w : t)
-                    if (std::size_t(w) != v) other.push_back(std::uint32_t(w));
-                // A face with a repeated corner: v stands for the missing ones
-                // (two of them if all three corners are v).
-                while (other.size() < start + 2) other.push_back(std::uint32_t(v));
-            }
-            fan.reset(deg);
-            std::size_t fans = deg;
-            if (deg <= kPairwiseFanDegree) {
-                for (std::size_t a = 0; a < deg; ++a)
-                    for (std::size_t b = a + 1; b < deg; ++b) {
-                        const bool share = other[2 * a] == other[2 * b] || other[2 * a] == other[2 * b + 1] ||
-                                           other[2 * a + 1] == other[2 * b] || other[2 * a + 1] == other[2 * b + 1];
-                        if (share && fan.unite(std::uint32_t(a), std::uint32_t(b))) --fans;
-                    }
-            } else {
-                by.resize(2 * deg);
-                for (std::size_t k = 0; k < 2 * deg; ++k) by[k] = {other[k], std::uint32_t(k / 2)};
-                std::sort(by.begin(), by.end());
-                for (std::size_t k = 1; k < by.size(); ++k)
-                    if (by[k].first == by[k - 1].first && fan.unite(by[k].second, by[k - 1].second)) --fans;
-            }
-            if (fans > 1) ++r.non_manifold_vertices;
-        }
-    }
+    count_non_manifold_vertices(mesh, r);
     return r;
 }
 

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <utility>
 
 namespace meshdiff::detail {
 
@@ -216,12 +217,16 @@ private:
     std::size_t pos_ = 0;
 };
 
-}  // namespace
-
-PlySoup read_ply(const std::string& path)
+// What the header declares: the body's format and its elements in order.
+struct Header
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(fmt::format("{}: cannot open for reading", path));
+    Format format = Format::Ascii;
+    std::vector<Element> elements;
+};
+
+// The header from the magic line to end_header; leaves `in` at the body.
+Header read_header(const std::string& path, std::ifstream& in)
+{
     std::string line;
     if (!std::getline(in, line) || line.rfind("ply", 0) != 0)
         throw IoError(fmt::format("{}: not a PLY file (no 'ply' magic line)", path));
@@ -285,75 +290,107 @@ PlySoup read_ply(const std::string& path)
         }
     }
     if (!ended || !have_format) throw IoError(fmt::format("{}: PLY header without format or end_header", path));
+    return {format, std::move(elements)};
+}
 
-    Source src(path, in, format);
-    PlySoup soup;
-    for (const Element& e : elements) {
-        int ix = -1, iy = -1, iz = -1, iface = -1;
+// Where an element's properties go: the x, y, z and face-index properties
+// (-1 if absent) and, per property, its slot in soup.scalar_values (-1 if none).
+struct Slots
+{
+    int ix = -1, iy = -1, iz = -1, iface = -1;
+    std::vector<int> scalar_slot;
+};
+
+// Finds the slots of element e, adding its extra vertex scalars to the soup.
+Slots element_slots(const Element& e, PlySoup& soup)
+{
+    Slots s;
+    for (std::size_t k = 0; k < e.props.size(); ++k) {
+        const auto& p = e.props[k];
+        if (e.name == "vertex" && !p.is_list) {
+            if (p.name == "x") s.ix = int(k);
+            if (p.name == "y") s.iy = int(k);
+            if (p.name == "z") s.iz = int(k);
+        }
+        if (e.name == "face" && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) s.iface = int(k);
+    }
+    s.scalar_slot.assign(e.props.size(), -1);
+    if (e.name == "vertex") {
+        for (std::size_t k = 0; k < e.props.size(); ++k)
+            if (!e.props[k].is_list && int(k) != s.ix && int(k) != s.iy && int(k) != s.iz) {
+                s.scalar_slot[k] = int(soup.scalar_names.size());
+                soup.scalar_names.push_back(e.props[k].name);
+                soup.scalar_values.emplace_back();
+            }
+    }
+    return s;
+}
+
+// Reads the e.count rows of element e from the body.
+void read_rows(const std::string& path, Source& src, const Element& e, const Slots& s, PlySoup& soup)
+{
+    double xyz[3] = {0, 0, 0};
+    std::vector<int> poly;
+    const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
+    for (std::uint64_t i = 0; i < e.count; ++i) {
         for (std::size_t k = 0; k < e.props.size(); ++k) {
             const auto& p = e.props[k];
-            if (e.name == "vertex" && !p.is_list) {
-                if (p.name == "x") ix = int(k);
-                if (p.name == "y") iy = int(k);
-                if (p.name == "z") iz = int(k);
-            }
-            if (e.name == "face" && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index"))
-                iface = int(k);
-        }
-        std::vector<int> scalar_slot(e.props.size(), -1);
-        if (e.name == "vertex") {
-            for (std::size_t k = 0; k < e.props.size(); ++k)
-                if (!e.props[k].is_list && int(k) != ix && int(k) != iy && int(k) != iz) {
-                    scalar_slot[k] = int(soup.scalar_names.size());
-                    soup.scalar_names.push_back(e.props[k].name);
-                    soup.scalar_values.emplace_back();
-                }
-        }
-        if (e.name == "vertex" && (ix < 0 || iy < 0 || iz < 0))
-            throw IoError(fmt::format("{}: PLY vertex element lacks x, y or z", path));
-        if (e.name == "face" && iface < 0)
-            throw IoError(fmt::format("{}: PLY face element lacks vertex_indices", path));
-        if (e.props.empty()) continue;  // no data, whatever the count
-        // Check the count against the bytes left before looping or allocating:
-        // an ASCII value takes at least 2 bytes, a binary one its size (a list
-        // at least its count).
-        std::uint64_t min_bytes = 0;
-        for (const auto& p : e.props)
-            min_bytes += format == Format::Ascii ? 2 : type_size(p.is_list ? p.count_type : p.type);
-        check_count(path, e.count, min_bytes, src.bytes_left(), fmt::format("{} elements", quote(e.name)));
-        if (e.name == "vertex") soup.points.reserve(std::size_t(e.count));
-        if (e.name == "face") soup.polygons.reserve(std::size_t(e.count));
-        double xyz[3] = {0, 0, 0};
-        std::vector<int> poly;
-        const bool is_vertex = e.name == "vertex", is_face = e.name == "face";
-        for (std::uint64_t i = 0; i < e.count; ++i) {
-            for (std::size_t k = 0; k < e.props.size(); ++k) {
-                const auto& p = e.props[k];
-                if (p.is_list) {
-                    const double cnt = src.value(p.count_type);
-                    if (!(cnt >= 0 && cnt < 1e6))
-                        throw IoError(fmt::format("{}: {} {} has a list of {} entries", path, quote(e.name), i, cnt));
-                    if (int(k) == iface) poly.clear();
-                    for (std::size_t j = 0; j < std::size_t(cnt); ++j) {
-                        const double v = src.value(p.type);
-                        if (int(k) == iface) {
-                            if (!(v >= -2147483648.0 && v <= 2147483647.0))
-                                throw IoError(fmt::format("{}: face {} has index {}", path, i, v));
-                            poly.push_back(int(v));
-                        }
-                    }
-                } else {
+            if (p.is_list) {
+                const double cnt = src.value(p.count_type);
+                if (!(cnt >= 0 && cnt < 1e6))
+                    throw IoError(fmt::format("{}: {} {} has a list of {} entries", path, quote(e.name), i, cnt));
+                if (int(k) == s.iface) poly.clear();
+                for (std::size_t j = 0; j < std::size_t(cnt); ++j) {
                     const double v = src.value(p.type);
-                    if (int(k) == ix) xyz[0] = v;
-                    if (int(k) == iy) xyz[1] = v;
-                    if (int(k) == iz) xyz[2] = v;
-                    if (scalar_slot[k] >= 0) soup.scalar_values[std::size_t(scalar_slot[k])].push_back(v);
+                    if (int(k) == s.iface) {
+                        if (!(v >= -2147483648.0 && v <= 2147483647.0))
+                            throw IoError(fmt::format("{}: face {} has index {}", path, i, v));
+                        poly.push_back(int(v));
+                    }
                 }
+            } else {
+                const double v = src.value(p.type);
+                if (int(k) == s.ix) xyz[0] = v;
+                if (int(k) == s.iy) xyz[1] = v;
+                if (int(k) == s.iz) xyz[2] = v;
+                if (s.scalar_slot[k] >= 0) soup.scalar_values[std::size_t(s.scalar_slot[k])].push_back(v);
             }
-            if (is_vertex) soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
-            if (is_face) soup.polygons.push_back(poly);
         }
+        if (is_vertex) soup.points.emplace_back(xyz[0], xyz[1], xyz[2]);
+        if (is_face) soup.polygons.push_back(poly);
     }
+}
+
+// Checks element e against the header and the bytes left, then reads it.
+void read_element(const std::string& path, Source& src, Format format, const Element& e, PlySoup& soup)
+{
+    const Slots s = element_slots(e, soup);
+    if (e.name == "vertex" && (s.ix < 0 || s.iy < 0 || s.iz < 0))
+        throw IoError(fmt::format("{}: PLY vertex element lacks x, y or z", path));
+    if (e.name == "face" && s.iface < 0) throw IoError(fmt::format("{}: PLY face element lacks vertex_indices", path));
+    if (e.props.empty()) return;  // no data, whatever the count
+    // Check the count against the bytes left before looping or allocating:
+    // an ASCII value takes at least 2 bytes, a binary one its size (a list
+    // at least its count).
+    std::uint64_t min_bytes = 0;
+    for (const auto& p : e.props)
+        min_bytes += format == Format::Ascii ? 2 : type_size(p.is_list ? p.count_type : p.type);
+    check_count(path, e.count, min_bytes, src.bytes_left(), fmt::format("{} elements", quote(e.name)));
+    if (e.name == "vertex") soup.points.reserve(std::size_t(e.count));
+    if (e.name == "face") soup.polygons.reserve(std::size_t(e.count));
+    read_rows(path, src, e, s, soup);
+}
+
+}  // namespace
+
+PlySoup read_ply(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError(fmt::format("{}: cannot open for reading", path));
+    const Header header = read_header(path, in);
+    Source src(path, in, header.format);
+    PlySoup soup;
+    for (const Element& e : header.elements) read_element(path, src, header.format, e, soup);
     src.expect_end();
     return soup;
 }
