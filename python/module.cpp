@@ -363,14 +363,36 @@ void def_reading(py::module_& m)
     m.def("read_mesh", &py_read_mesh, kReadMeshDoc, py::arg("path"), py::kw_only(), py::arg("report") = false);
 }
 
+// Registers \p name (compare() or compare_files()): its leading arguments
+// \p lead, then the keywords of every compare option with their defaults, one
+// list for both functions.
+template <class F, class... Lead>
+void def_compare_like(py::module_& m, const char* name, F&& f, const std::string& doc, Lead... lead)
+{
+    const CompareOptions defaults;
+    m.def(name, std::forward<F>(f), doc.c_str(), lead..., py::kw_only(), py::arg("levels") = py::none(),
+          py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(defaults.profile.global),
+          py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
+          py::arg("unbiased_variance") = py::bool_(defaults.corsini_unbiased), py::arg("k") = py::none(),
+          py::arg("roughness") = py::bool_(defaults.roughness), py::arg("distance") = py::bool_(defaults.distance),
+          py::arg("samples") = py::none(), py::arg("density") = py::none(), py::arg("face_sampling") = py::none(),
+          py::arg("seed") = py::none(), py::arg("vertex_samples") = py::bool_(defaults.sampling.vertices),
+          py::arg("edge_samples") = py::bool_(defaults.sampling.edges),
+          py::arg("face_samples") = py::bool_(defaults.sampling.faces), py::arg("hausdorff") = py::none(),
+          py::arg("hausdorff_tolerance") = py::none(), py::arg("hausdorff_abs_tolerance") = py::none(),
+          py::arg("hausdorff_budget") = py::none(), py::arg("fscore") = py::none(), py::arg("histogram") = py::none(),
+          py::arg("json") = py::none(), py::arg("distance_map") = py::none(),
+          py::arg("distance_map_original") = py::none(), py::arg("distance_maps") = py::none(),
+          py::arg("samples_out") = py::none(), py::arg("color_range") = py::none(), py::arg("threads") = py::none());
+}
+
 // compare() and compare_files().
 void def_compare(py::module_& m)
 {
     const std::string compare_doc = std::string(kCompareDoc) + kCompareOptionsDoc;
     const std::string compare_files_doc = std::string(kCompareFilesDoc) + kCompareOptionsDoc;
-    const CompareOptions defaults;
-    m.def(
-        "compare",
+    def_compare_like(
+        m, "compare",
         [](const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V2, const ArrayLike& F2, Obj levels, Obj radii,
            Obj global_level, Obj curvature, Obj weighting, Obj measure, Obj unbiased_variance, Obj k, Obj roughness,
            Obj distance, Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples,
@@ -385,23 +407,9 @@ void def_compare(py::module_& m)
                                  hausdorff_budget, fscore, histogram, json, distance_map, distance_map_original,
                                  distance_maps, samples_out, color_range, threads));
         },
-        compare_doc.c_str(), py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"), py::kw_only(),
-        py::arg("levels") = py::none(), py::arg("radii") = py::none(),
-        py::arg("global_level") = py::bool_(defaults.profile.global), py::arg("curvature") = py::none(),
-        py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
-        py::arg("unbiased_variance") = py::bool_(defaults.corsini_unbiased), py::arg("k") = py::none(),
-        py::arg("roughness") = py::bool_(defaults.roughness), py::arg("distance") = py::bool_(defaults.distance),
-        py::arg("samples") = py::none(), py::arg("density") = py::none(), py::arg("face_sampling") = py::none(),
-        py::arg("seed") = py::none(), py::arg("vertex_samples") = py::bool_(defaults.sampling.vertices),
-        py::arg("edge_samples") = py::bool_(defaults.sampling.edges),
-        py::arg("face_samples") = py::bool_(defaults.sampling.faces), py::arg("hausdorff") = py::none(),
-        py::arg("hausdorff_tolerance") = py::none(), py::arg("hausdorff_abs_tolerance") = py::none(),
-        py::arg("hausdorff_budget") = py::none(), py::arg("fscore") = py::none(), py::arg("histogram") = py::none(),
-        py::arg("json") = py::none(), py::arg("distance_map") = py::none(),
-        py::arg("distance_map_original") = py::none(), py::arg("distance_maps") = py::none(),
-        py::arg("samples_out") = py::none(), py::arg("color_range") = py::none(), py::arg("threads") = py::none());
-    m.def(
-        "compare_files",
+        compare_doc, py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"));
+    def_compare_like(
+        m, "compare_files",
         [](Obj original, Obj processed, Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting,
            Obj measure, Obj unbiased_variance, Obj k, Obj roughness, Obj distance, Obj samples, Obj density,
            Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples, Obj face_samples, Obj hausdorff,
@@ -416,21 +424,7 @@ void def_compare(py::module_& m)
                                  hausdorff_budget, fscore, histogram, json, distance_map, distance_map_original,
                                  distance_maps, samples_out, color_range, threads));
         },
-        compare_files_doc.c_str(), py::arg("original"), py::arg("processed"), py::kw_only(),
-        py::arg("levels") = py::none(), py::arg("radii") = py::none(),
-        py::arg("global_level") = py::bool_(defaults.profile.global), py::arg("curvature") = py::none(),
-        py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
-        py::arg("unbiased_variance") = py::bool_(defaults.corsini_unbiased), py::arg("k") = py::none(),
-        py::arg("roughness") = py::bool_(defaults.roughness), py::arg("distance") = py::bool_(defaults.distance),
-        py::arg("samples") = py::none(), py::arg("density") = py::none(), py::arg("face_sampling") = py::none(),
-        py::arg("seed") = py::none(), py::arg("vertex_samples") = py::bool_(defaults.sampling.vertices),
-        py::arg("edge_samples") = py::bool_(defaults.sampling.edges),
-        py::arg("face_samples") = py::bool_(defaults.sampling.faces), py::arg("hausdorff") = py::none(),
-        py::arg("hausdorff_tolerance") = py::none(), py::arg("hausdorff_abs_tolerance") = py::none(),
-        py::arg("hausdorff_budget") = py::none(), py::arg("fscore") = py::none(), py::arg("histogram") = py::none(),
-        py::arg("json") = py::none(), py::arg("distance_map") = py::none(),
-        py::arg("distance_map_original") = py::none(), py::arg("distance_maps") = py::none(),
-        py::arg("samples_out") = py::none(), py::arg("color_range") = py::none(), py::arg("threads") = py::none());
+        compare_files_doc, py::arg("original"), py::arg("processed"));
 }
 
 // profile() and profile_file().
