@@ -63,6 +63,36 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
     return c;
 }
 
+// The two sigma profiles, their distance and, if asked for, the local
+// difference (options checked).
+void sigma_half(Comparison& c, const LoadedMesh& a, const LoadedMesh& b, const CompareOptions& options)
+{
+    ProfileOptions po = options.profile;
+    po.keep_vertex_data = po.keep_vertex_data || options.local;
+    if (po.normalize == NormalizeMethod::Original) {
+        Normalization frame = unit_normalization(a.mesh);
+        frame.method = NormalizeMethod::Original;
+        c.original_profile = roughness_profile(a.mesh, po, frame);
+        c.processed_profile = roughness_profile(b.mesh, po, frame);
+    } else {
+        c.original_profile = roughness_profile(a.mesh, po);
+        c.processed_profile = roughness_profile(b.mesh, po);
+    }
+    c.roughness = roughness_distance(*c.original_profile, *c.processed_profile, options.k);
+    if (!options.local) return;
+    // Over the original's vertices, against the processed surface (local_roughness.h).
+    const ClosestPointIndex index(b.mesh);
+    c.local_roughness = local_roughness_distance(a.mesh, *c.original_profile, b.mesh, *c.processed_profile, index,
+                                                 options.vertex_distances);
+    if (!options.profile.keep_vertex_data)
+        for (RoughnessProfile* p : {&*c.original_profile, &*c.processed_profile}) {
+            p->H = {};
+            p->D = {};
+            p->D_global = {};
+            p->D_radii = {};
+        }
+}
+
 }  // namespace
 
 void validate(const CompareOptions& options)
@@ -74,6 +104,8 @@ void validate(const CompareOptions& options)
     if (!is_known(options.measure)) throw OptionError("measure", "not a known roughness measure");
     if (options.corsini_unbiased && options.measure != RoughnessMeasure::Corsini)
         throw OptionError("corsini_unbiased", "needs {measure} corsini");
+    if (options.measure == RoughnessMeasure::Corsini && options.profile.normalize != NormalizeMethod::Paper)
+        throw OptionError("profile.normalize", "the dihedral angles of {measure} corsini do not depend on a scaling");
     if (options.measure == RoughnessMeasure::Corsini && !options.profile.radii.empty())
         throw OptionError("profile.radii", "metric levels are not defined for {measure} corsini");
     validate(options.profile);
@@ -111,9 +143,7 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         c.processed_corsini = corsini_profile(b.mesh, co);
         c.corsini = corsini_distance(*c.original_corsini, *c.processed_corsini, options.k);
     } else if (options.roughness) {
-        c.original_profile = roughness_profile(a.mesh, options.profile);
-        c.processed_profile = roughness_profile(b.mesh, options.profile);
-        c.roughness = roughness_distance(*c.original_profile, *c.processed_profile, options.k);
+        sigma_half(c, a, b, options);
     }
     if (options.distance) {
         c.distance = surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff,

@@ -267,6 +267,7 @@ TEST(CorsiniDistance, IsTheLogOfTheRelativeChangeShiftedByK)
     a.has_global = b.has_global = true;
     a.global.roughness = 0.05;
     b.global.roughness = 0.04;
+    a.global.vertices_used = b.global.vertices_used = 10;
     a.multiscale = 0.025;
     b.multiscale = 0.03;
     const double k = 1e-3;

@@ -197,8 +197,12 @@ TEST(Progress, CompareReportsEveryStageToTheEnd)
         }
         if (s.name == "distances") samples_seen += s.total;
     }
-    // The vertices' distances (for the certification) and the other samples'.
-    EXPECT_EQ(samples_seen, c.distance->forward.n_samples() + c.distance->backward.n_samples());
+    // The vertices' distances (for the certification) and the other samples',
+    // and the closest points of the original's vertices for the local
+    // roughness difference.
+    ASSERT_TRUE(c.local_roughness);
+    EXPECT_EQ(samples_seen,
+              c.distance->forward.n_samples() + c.distance->backward.n_samples() + c.local_roughness->vertices);
     EXPECT_EQ(c.options.progress, nullptr);  // not kept in the result
     ASSERT_TRUE(c.distance && c.distance->forward_hausdorff);
     EXPECT_TRUE(c.distance->forward_hausdorff->certified);

@@ -23,7 +23,9 @@ std::string cli_spelling(const std::string& field)
         {"profile.global", "--no-global"},
         {"profile.curvature.method", "--curvature"},
         {"profile.curvature.weighting", "--weighting"},
+        {"profile.normalize", "--normalize"},
         {"measure", "--measure"},
+        {"local", "--no-local"},
         {"corsini_unbiased", "--unbiased-variance"},
         {"k", "--k"},
         {"roughness", "--no-roughness"},
@@ -139,6 +141,11 @@ void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii, b
         to_string(defaults.curvature.method));
     add(sub, "--weighting", o.weighting, "row weighting of the fitting estimators: " + choices<RowWeighting>(),
         to_string(defaults.curvature.weighting));
+    add(sub, "--normalize", o.normalize,
+        "scaling before curvature: paper (vertex centroid, mean vertex distance 1), area (area-weighted centroid, "
+        "sqrt(area / 4 pi) = 1; does not drift under decimation), original (compare only: both meshes in the "
+        "original's paper frame)",
+        to_string(defaults.normalize));
     o.levels.option->type_name("LIST");
     if (with_radii) o.radii.option->type_name("LIST");
     if (!with_measure) return;
@@ -156,6 +163,7 @@ ProfileOptions to_profile_options(const ProfileCliOptions& o, ProfileOptions def
     if (o.levels.given()) p.levels = parse_levels(o.levels.text);
     if (o.radii.given()) p.radii = parse_radii(o.radii.text);
     p.global = !o.no_global;
+    if (o.normalize.given()) p.normalize = parse_enum_option<NormalizeMethod>("profile.normalize", o.normalize.text);
     if (o.curvature.given())
         p.curvature.method = parse_enum_option<CurvatureMethod>("profile.curvature.method", o.curvature.text);
     if (o.weighting.given())
@@ -177,6 +185,9 @@ void add_compare_options(CLI::App* sub, CompareCliOptions& o)
     o.k.option = sub->add_option("-k,--k", o.k.text, "constant k of the roughness distance (eq. 10)")
                      ->default_str(fmt::format("{}", defaults.k));
     sub->add_flag("--no-roughness", o.no_roughness, "skip the roughness half");
+    sub->add_flag("--no-local", o.no_local,
+                  "skip the local roughness difference (each processed vertex's D_L against the original's at the "
+                  "closest point, RMS per level)");
     sub->add_flag("--no-distance", o.no_distance, "skip the surface distance half");
     o.samples.option = sub->add_option("-n,--samples", o.samples.text,
                                        "samples per direction (default: 10 x the larger face count, as Metro)");
@@ -220,6 +231,7 @@ CompareOptions to_compare_options(const CompareCliOptions& o)
     c.corsini_unbiased = o.profile.unbiased_variance;
     if (o.k.given()) c.k = parse_number("k", o.k.text);
     c.roughness = !o.no_roughness;
+    c.local = !o.no_local;
     c.distance = !o.no_distance;
     if (o.samples.given()) c.sampling.samples = parse_whole_number("sampling.samples", o.samples.text);
     if (o.density.given()) c.sampling.density = parse_number("sampling.density", o.density.text);

@@ -33,7 +33,7 @@ struct Given
 //! Options of the roughness profile shared by profile, compare and batch.
 struct ProfileCliOptions
 {
-    Given levels, radii, curvature, weighting, measure;
+    Given levels, radii, curvature, weighting, measure, normalize;
     bool no_global = false;
     bool unbiased_variance = false;
 };
@@ -58,6 +58,7 @@ struct CompareCliOptions
     Given k, samples, density, face_sampling, seed, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
         hausdorff_budget, fscore, histogram;
     bool no_roughness = false;
+    bool no_local = false;
     bool no_distance = false;
     bool no_vertex_samples = false, no_edge_samples = false, no_face_samples = false;
 };

@@ -15,6 +15,7 @@
 #include "meshdiff/io/facts.h"
 #include "meshdiff/io/io.h"
 #include "meshdiff/roughness/corsini.h"
+#include "meshdiff/roughness/local_roughness.h"
 #include "meshdiff/roughness/roughness.h"
 #include "meshdiff/roughness/roughness_distance.h"
 
@@ -35,8 +36,12 @@ struct CompareOptions
     //! then be empty and the curvature options are not used.
     RoughnessMeasure measure = RoughnessMeasure::Sigma;
     bool corsini_unbiased = false;  //!< CorsiniOptions::unbiased
-    bool distance = true;           //!< compute the surface distance
-    SamplingOptions sampling{};     //!< surface sampling (Metro defaults)
+    //! With the sigma measure, also the local roughness difference
+    //! (local_roughness.h): each processed vertex's D_L against the
+    //! original's at the closest point, pooled as an RMS per level.
+    bool local = true;
+    bool distance = true;        //!< compute the surface distance
+    SamplingOptions sampling{};  //!< surface sampling (Metro defaults)
     //! Certify both one-sided Hausdorff distances (hausdorff.h) with these
     //! options, the lower bounds seeded with the sampled maxima; std::nullopt
     //! keeps the sampled maximum only (`--hausdorff sampled`).
@@ -68,6 +73,9 @@ struct Comparison
     std::optional<RoughnessProfile> original_profile;
     std::optional<RoughnessProfile> processed_profile;
     std::optional<RoughnessDistance> roughness;
+    //! With CompareOptions::local (sigma measure): the local roughness
+    //! difference; per-vertex maps kept with vertex_distances.
+    std::optional<LocalRoughnessDistance> local_roughness;
     //! With RoughnessMeasure::Corsini, instead of the three above.
     std::optional<CorsiniProfile> original_corsini;
     std::optional<CorsiniProfile> processed_corsini;

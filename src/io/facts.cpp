@@ -76,7 +76,19 @@ std::vector<Warning> warnings(const MeshFacts& f, const RoughnessProfile* p)
                 w.back().radius = l.radius;
             }
             if (l.vertices_used == 0) {
-                add(WarningKind::NoDefinedD, 0.0, fmt::format("{}: no vertex has a defined D (sigma set to 0)", name),
+                add(WarningKind::NoDefinedD, 0.0,
+                    fmt::format("{}: no vertex has a defined D, so no sigma (null, '-'; no d_L either)", name), level);
+                w.back().radius = l.radius;
+                return;
+            }
+            // A share of the vertices with curvature but no neighbourhood:
+            // sigma then speaks for the others only.
+            const std::size_t with_h = l.vertices_used + l.no_neighborhood;
+            const double share = with_h ? double(l.no_neighborhood) / double(with_h) : 0.0;
+            if (share > kSparseNeighbourhoodShare) {
+                add(WarningKind::SparseNeighbourhoods, share,
+                    fmt::format("{}: {:.0f}% of the vertices have no neighbourhood; sigma is of the other {}", name,
+                                100.0 * share, l.vertices_used),
                     level);
                 w.back().radius = l.radius;
             }

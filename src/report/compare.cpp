@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <optional>
 #include <utility>
 
@@ -25,7 +26,7 @@ nlohmann::json roughness_distance_json(const RoughnessDistance& d)
         nlohmann::json undefined = nlohmann::json::array();
         for (const auto& l : list) {
             k.push_back(key(l));
-            dist.push_back(l.distance);
+            dist.push_back(l.defined ? nlohmann::json(l.distance) : nlohmann::json(nullptr));
             rel.push_back(l.relative_change_defined ? nlohmann::json(l.relative_change) : nlohmann::json(nullptr));
             if (l.reference_zero) undefined.push_back(key(l));
         }
@@ -38,7 +39,7 @@ nlohmann::json roughness_distance_json(const RoughnessDistance& d)
         d.levels, [](const auto& l) { return l.level; }, "levels", "distance", "relative_change",
         "reference_zero_levels");
     if (d.has_global)
-        j["global"] = {{"distance", d.global.distance},
+        j["global"] = {{"distance", d.global.defined ? nlohmann::json(d.global.distance) : nlohmann::json(nullptr)},
                        {"relative_change", d.global.relative_change_defined ? nlohmann::json(d.global.relative_change)
                                                                             : nlohmann::json(nullptr)},
                        {"reference_zero", d.global.reference_zero}};
@@ -49,20 +50,42 @@ nlohmann::json roughness_distance_json(const RoughnessDistance& d)
     return j;
 }
 
+nlohmann::json local_roughness_json(const LocalRoughnessDistance& d)
+{
+    auto numbers = [](const std::vector<double>& v) {
+        nlohmann::json a = nlohmann::json::array();
+        for (double x : v) a.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr));
+        return a;
+    };
+    nlohmann::json j;
+    j["definition"] =
+        "rms_L = sqrt(mean over the original's vertices i of (D_L(i) - D'_L(cp(i)))^2), D'_L(cp(i)) the processed "
+        "mesh's D_L interpolated linearly on its triangle holding the closest point to i";
+    j["levels"] = d.levels;
+    j["rms"] = numbers(d.rms);
+    j["vertices_used"] = d.used;
+    j["radii"] = d.radii;
+    j["rms_radii"] = numbers(d.rms_radii);
+    j["global"] = d.has_global && std::isfinite(d.global) ? nlohmann::json(d.global) : nlohmann::json(nullptr);
+    j["vertices"] = d.vertices;
+    return j;
+}
+
 nlohmann::json corsini_distance_json(const CorsiniDistance& d)
 {
     auto change = [](const LevelDistance& l) {
         return l.relative_change_defined ? nlohmann::json(l.relative_change) : nlohmann::json(nullptr);
     };
     auto one = [&](const LevelDistance& l) {
-        return nlohmann::json{
-            {"distance", l.distance}, {"relative_change", change(l)}, {"reference_zero", l.reference_zero}};
+        return nlohmann::json{{"distance", l.defined ? nlohmann::json(l.distance) : nlohmann::json(nullptr)},
+                              {"relative_change", change(l)},
+                              {"reference_zero", l.reference_zero}};
     };
     nlohmann::json levels = nlohmann::json::array(), dist = nlohmann::json::array(), rel = nlohmann::json::array();
     nlohmann::json zero = nlohmann::json::array();
     for (const auto& l : d.levels) {
         levels.push_back(l.level);
-        dist.push_back(l.distance);
+        dist.push_back(l.defined ? nlohmann::json(l.distance) : nlohmann::json(nullptr));
         rel.push_back(change(l));
         if (l.reference_zero) zero.push_back(l.level);
     }
@@ -110,6 +133,7 @@ nlohmann::json comparison_json(const Comparison& c)
     j["original"] = side(c.original, c.original_profile);
     j["processed"] = side(c.processed, c.processed_profile);
     j["roughness_distance"] = c.roughness ? roughness_distance_json(*c.roughness) : nlohmann::json(nullptr);
+    if (c.roughness && c.local_roughness) j["roughness_distance"]["local"] = local_roughness_json(*c.local_roughness);
     if (c.corsini) {  // only with --measure corsini: other reports are unchanged
         j["measure"] = "corsini";
         j["original"]["corsini"] = corsini_json(*c.original_corsini);
@@ -170,6 +194,47 @@ std::string facts_text(const std::string& title, const MeshFacts& f)
     return s;
 }
 
+// One row of a per-level table: its name, the distance (with both values)
+// and the local difference (when the table has that column; NaN: no data).
+struct LevelRow
+{
+    std::string name;
+    const LevelDistance* d;
+    double local;
+};
+
+struct LevelColumns
+{
+    const char* key;
+    const char* original;
+    const char* processed;
+    const char* distance;
+    bool local;
+    const char* note = "";
+};
+
+// The table of a per-level measure (sigma, Corsini's R): a value without data
+// and a distance or change that is no number print as "-".
+std::string level_table(const LevelColumns& c, const std::vector<LevelRow>& rows)
+{
+    std::string s =
+        fmt::format("  {:>7} {:>13} {:>13} {:>10} {:>9}", c.key, c.original, c.processed, "change", c.distance);
+    s += (c.local ? fmt::format(" {:>11}", "local") : std::string()) + c.note + "\n";
+    auto value = [](bool has, double x) { return has ? fmt::format("{:.6g}", x) : std::string("-"); };
+    for (const auto& r : rows) {
+        const LevelDistance& d = *r.d;
+        const std::string change = d.relative_change_defined ? fmt::format("{:+.2f}%", 100.0 * d.relative_change)
+                                   : d.defined               ? "undef"
+                                                             : "-";
+        s += fmt::format("  {:>7} {:>13} {:>13} {:>10} {:>9}", r.name, value(d.original_data, d.original),
+                         value(d.processed_data, d.processed), change,
+                         d.defined ? fmt::format("{:.4f}", d.distance) : std::string("-"));
+        if (c.local) s += fmt::format(" {:>11}", std::isfinite(r.local) ? fmt::format("{:.6g}", r.local) : "-");
+        s += "\n";
+    }
+    return s;
+}
+
 std::string same_connectivity_text(const Comparison& c)
 {
     if (!c.same_connectivity)
@@ -198,66 +263,61 @@ std::string comparison_text(const Comparison& c)
     if (c.roughness) {
         const auto& pa = *c.original_profile;
         const auto& pb = *c.processed_profile;
-        s += fmt::format(
-            "\nRoughness profiles ({} mean curvature on each mesh scaled to unit mean radius: s = {:.6g} "
-            "and {:.6g})\n",
-            to_string(pa.curvature_options.method), pa.normalization.scale, pb.normalization.scale);
+        if (pa.normalization.method == NormalizeMethod::Paper)
+            s += fmt::format(
+                "\nRoughness profiles ({} mean curvature on each mesh scaled to unit mean radius: s = {:.6g} "
+                "and {:.6g})\n",
+                to_string(pa.curvature_options.method), pa.normalization.scale, pb.normalization.scale);
+        else
+            s += fmt::format("\nRoughness profiles ({} mean curvature; normalisation {}: s = {:.6g} and {:.6g}, {})\n",
+                             to_string(pa.curvature_options.method), to_string(pa.normalization.method),
+                             pa.normalization.scale, pb.normalization.scale,
+                             detail::scale_meaning(pa.normalization.method));
         s += fmt::format("  d_L = ln(|s' - s| / s + k) - ln(k), k = {:g}; change = (s' - s) / s\n", c.roughness->k);
-        s += fmt::format("  {:>7} {:>13} {:>13} {:>10} {:>9}\n", "level", "sigma orig", "sigma proc", "change", "d_L");
-        auto row = [&](const std::string& name, double sa, double sb, const LevelDistance& d) {
-            const std::string change =
-                d.relative_change_defined ? fmt::format("{:+.2f}%", 100.0 * d.relative_change) : "undef";
-            s += fmt::format("  {:>7} {:>13.6g} {:>13.6g} {:>10} {:>9.4f}\n", name, sa, sb, change, d.distance);
+        const LocalRoughnessDistance* local = c.local_roughness ? &*c.local_roughness : nullptr;
+        if (local)
+            s += "  local = RMS over the original's vertices of D_L minus the processed D'_L at the closest point\n";
+        auto local_at = [&](const std::vector<int>& keys, const std::vector<double>& rms, int key) {
+            for (std::size_t i = 0; i < keys.size(); ++i)
+                if (keys[i] == key) return rms[i];
+            return std::nan("");
         };
-        for (const auto& d : c.roughness->levels) {
-            double sa = 0, sb = 0;
-            for (const auto& l : pa.levels)
-                if (l.level == d.level) sa = l.sigma;
-            for (const auto& l : pb.levels)
-                if (l.level == d.level) sb = l.sigma;
-            row(std::to_string(d.level), sa, sb, d);
-        }
-        if (c.roughness->has_global) row("global", pa.global.sigma, pb.global.sigma, c.roughness->global);
-        if (!c.roughness->radii.empty())
-            s += fmt::format("  {:>7} {:>13} {:>13} {:>10} {:>9}   (metric levels, area-weighted)\n", "radius",
-                             "sigma orig", "sigma proc", "change", "d_r");
-        for (const auto& d : c.roughness->radii) {
-            double sa = 0, sb = 0;
-            for (const auto& l : pa.radii)
-                if (l.radius == d.radius) sa = l.sigma;
-            for (const auto& l : pb.radii)
-                if (l.radius == d.radius) sb = l.sigma;
-            row(fmt::format("{:g}", d.radius), sa, sb, d);
+        std::vector<LevelRow> rows;
+        for (const auto& d : c.roughness->levels)
+            rows.push_back({std::to_string(d.level), &d, local ? local_at(local->levels, local->rms, d.level) : 0.0});
+        if (c.roughness->has_global)
+            rows.push_back({"global", &c.roughness->global, local && local->has_global ? local->global : std::nan("")});
+        s += level_table({"level", "sigma orig", "sigma proc", "d_L", local != nullptr}, rows);
+        if (!c.roughness->radii.empty()) {
+            rows.clear();
+            for (const auto& d : c.roughness->radii) {
+                double l = std::nan("");
+                if (local)
+                    for (std::size_t i = 0; i < local->radii.size(); ++i)
+                        if (local->radii[i] == d.radius) l = local->rms_radii[i];
+                rows.push_back({fmt::format("{:g}", d.radius), &d, l});
+            }
+            s += level_table(
+                {"radius", "sigma orig", "sigma proc", "d_r", local != nullptr, "   (metric levels, area-weighted)"},
+                rows);
         }
         if (pa.curvature_undefined || pb.curvature_undefined)
             s += fmt::format("  undefined curvature: {} and {} vertices left out\n", pa.curvature_undefined,
                              pb.curvature_undefined);
         for (const auto* p : {&pa, &pb})
             for (const auto& w : warnings(p == &pa ? c.original : c.processed, p))
-                if (w.kind == WarningKind::OutliersDominate || w.kind == WarningKind::CappedNeighbourhoods)
+                if (w.kind == WarningKind::OutliersDominate || w.kind == WarningKind::CappedNeighbourhoods ||
+                    w.kind == WarningKind::NoDefinedD || w.kind == WarningKind::SparseNeighbourhoods)
                     s += fmt::format("  ! {}: {}\n", p == &pa ? "original" : "processed", w.text);
     }
     if (c.corsini) {
-        const auto& pa = *c.original_corsini;
-        const auto& pb = *c.processed_corsini;
         s += "\nCorsini roughness (variance of dihedral angles, rad^2; Corsini et al. 2007, METHOD.md 6a)\n";
         s += fmt::format("  R(M, M') = ln(|R' - R| / R + k) - ln(k), k = {:g}; change = (R' - R) / R\n", c.corsini->k);
-        s += fmt::format("  {:>7} {:>13} {:>13} {:>10} {:>9}\n", "level", "R orig", "R proc", "change", "R(M,M')");
-        auto row = [&](const std::string& name, double ra, double rb, const LevelDistance& d) {
-            const std::string change =
-                d.relative_change_defined ? fmt::format("{:+.2f}%", 100.0 * d.relative_change) : "undef";
-            s += fmt::format("  {:>7} {:>13.6g} {:>13.6g} {:>10} {:>9.4f}\n", name, ra, rb, change, d.distance);
-        };
-        for (const auto& d : c.corsini->levels) {
-            double ra = 0, rb = 0;
-            for (const auto& l : pa.levels)
-                if (l.level == d.level) ra = l.roughness;
-            for (const auto& l : pb.levels)
-                if (l.level == d.level) rb = l.roughness;
-            row(std::to_string(d.level), ra, rb, d);
-        }
-        if (c.corsini->has_global) row("global", pa.global.roughness, pb.global.roughness, c.corsini->global);
-        if (c.corsini->has_multiscale) row("multi", pa.multiscale, pb.multiscale, c.corsini->multiscale);
+        std::vector<LevelRow> rows;
+        for (const auto& d : c.corsini->levels) rows.push_back({std::to_string(d.level), &d, 0.0});
+        if (c.corsini->has_global) rows.push_back({"global", &c.corsini->global, 0.0});
+        if (c.corsini->has_multiscale) rows.push_back({"multi", &c.corsini->multiscale, 0.0});
+        s += level_table({"level", "R orig", "R proc", "R(M,M')", false}, rows);
     }
     if (!c.roughness_unavailable.empty()) s += fmt::format("\nRoughness: skipped: {}\n", c.roughness_unavailable);
     if (c.distance) s += detail::surface_distance_text(c);

@@ -3,6 +3,8 @@
 
 #include "meshdiff/version.h"
 
+#include "sections.h"
+
 #include <fmt/format.h>
 
 #include <cmath>
@@ -53,10 +55,15 @@ nlohmann::json mesh_json(const MeshFacts& f)
 }
 
 namespace {
+// sigma, or null at a level without data (no number where there is none).
+nlohmann::json sigma_json(const LevelRoughness& l)
+{
+    return l.vertices_used ? number_or_null(l.sigma) : nlohmann::json(nullptr);
+}
 nlohmann::json level_json(const LevelRoughness& l)
 {
     return {{"level", l.level},
-            {"sigma", number_or_null(l.sigma)},
+            {"sigma", sigma_json(l)},
             {"vertices_used", l.vertices_used},
             {"no_neighborhood", l.no_neighborhood},
             {"top_share", number_or_null(l.top_share)},
@@ -79,7 +86,8 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
     j["mesh"] = mesh_json(f);
     j["mesh"]["normalization"] = {
         {"center", {p.normalization.center.x(), p.normalization.center.y(), p.normalization.center.z()}},
-        {"scale", p.normalization.scale}};
+        {"scale", p.normalization.scale},
+        {"method", to_string(p.normalization.method)}};
     j["mesh"]["scale_factor"] = p.normalization.scale;
     j["curvature"] = {{"method", to_string(p.curvature_options.method)},
                       {"row_weighting", to_string(p.curvature_options.weighting)},
@@ -99,12 +107,12 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
     nlohmann::json levels = nlohmann::json::array(), sigma = nlohmann::json::array(), details = nlohmann::json::array();
     for (const auto& l : p.levels) {
         levels.push_back(l.level);
-        sigma.push_back(number_or_null(l.sigma));
+        sigma.push_back(sigma_json(l));
         details.push_back(level_json(l));
     }
     j["levels"] = levels;
     j["sigma"] = sigma;
-    j["sigma_global"] = p.has_global ? number_or_null(p.global.sigma) : nlohmann::json(nullptr);
+    j["sigma_global"] = p.has_global ? sigma_json(p.global) : nlohmann::json(nullptr);
     j["level_details"] = details;
     if (p.has_global) j["global"] = level_json(p.global);
     j["neighborhood"] = "N_L(i) = vertices within L edges of i, i excluded; global: all other vertices";
@@ -113,7 +121,7 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
                        details_r = nlohmann::json::array();
         for (const auto& l : p.radii) {
             radii.push_back(l.radius);
-            sigma_r.push_back(number_or_null(l.sigma));
+            sigma_r.push_back(sigma_json(l));
             details_r.push_back(radius_json(l));
         }
         j["radii"] = radii;
@@ -210,6 +218,23 @@ nlohmann::json corsini_profile_json(const MeshFacts& f, const CorsiniProfile& p)
 namespace {
 
 // The mesh and defect lines that head a profile report.
+}  // namespace
+
+const char* detail::scale_meaning(NormalizeMethod method)
+{
+    switch (method) {
+        case NormalizeMethod::Paper:
+            break;
+        case NormalizeMethod::Area:
+            return "sqrt(area / 4 pi), about the area-weighted centroid";
+        case NormalizeMethod::Original:
+            return "the original's frame: its centroid and mean vertex distance";
+    }
+    return "mean vertex distance to centroid";
+}
+
+namespace {
+
 std::string mesh_header(const MeshFacts& f)
 {
     const auto& t = f.topology;
@@ -231,9 +256,9 @@ std::string mesh_header(const MeshFacts& f)
 std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
 {
     std::string s = mesh_header(f);
-    s += fmt::format("scale      centroid ({:.6g}, {:.6g}, {:.6g}), s = {:.6g} (mean vertex distance to centroid)\n",
-                     p.normalization.center.x(), p.normalization.center.y(), p.normalization.center.z(),
-                     p.normalization.scale);
+    s += fmt::format("scale      centroid ({:.6g}, {:.6g}, {:.6g}), s = {:.6g} ({})\n", p.normalization.center.x(),
+                     p.normalization.center.y(), p.normalization.center.z(), p.normalization.scale,
+                     detail::scale_meaning(p.normalization.method));
     s += fmt::format("curvature  {}{}; undefined {}, 2-ring {}, normal rows dropped {}, quadric fallback {}\n",
                      to_string(p.curvature_options.method),
                      p.curvature_options.method == CurvatureMethod::MeyerCotangent
@@ -243,8 +268,9 @@ std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
     s += fmt::format("\n   level        sigma     used   no-nbhd {:>9}\n",
                      fmt::format("top{:g}%", 100.0 * p.outlier_fraction));
     auto row = [&](const std::string& name, const LevelRoughness& l) {
-        s += fmt::format("{:>8} {:>12.6g} {:>8} {:>9} {:>8.1f}%\n", name, l.sigma, l.vertices_used, l.no_neighborhood,
-                         100.0 * l.top_share);
+        s += fmt::format("{:>8} {:>12} {:>8} {:>9} {:>8.1f}%\n", name,
+                         l.vertices_used ? fmt::format("{:.6g}", l.sigma) : std::string("-"), l.vertices_used,
+                         l.no_neighborhood, 100.0 * l.top_share);
     };
     for (const auto& l : p.levels) row(std::to_string(l.level), l);
     if (p.has_global) row("global", p.global);

@@ -16,4 +16,7 @@ namespace meshdiff::detail {
 //! inputs, the distances of clouds (cloud_distance.h).
 std::string surface_distance_text(const Comparison& c);
 
+//! What the scale s of a normalisation is, for the text reports (profile.cpp).
+const char* scale_meaning(NormalizeMethod method);
+
 }  // namespace meshdiff::detail

@@ -270,20 +270,27 @@ CorsiniProfile corsini_profile(const Mesh& mesh, const CorsiniOptions& options)
     return p;
 }
 
+namespace {
+LevelValue corsini_value(const CorsiniLevel& l)
+{
+    return {l.level, 0.0, l.roughness, l.vertices_used > 0};
+}
+}  // namespace
+
 CorsiniDistance corsini_distance(const CorsiniProfile& a, const CorsiniProfile& b, double k)
 {
     if (!(k > 0.0) || !std::isfinite(k)) throw OptionError("k", fmt::format("{} must be finite and > 0", k));
+    auto values = [](const CorsiniProfile& p) {
+        std::vector<LevelValue> v;
+        for (const auto& l : p.levels) v.push_back(corsini_value(l));
+        return v;
+    };
     CorsiniDistance d;
     d.k = k;
-    for (const auto& la : a.levels)
-        for (const auto& lb : b.levels)
-            if (la.level == lb.level) {
-                d.levels.push_back(level_distance(la.level, la.roughness, lb.roughness, k));
-                break;
-            }
+    d.levels = level_distances(values(a), values(b), k);
     if (a.has_global && b.has_global) {
         d.has_global = true;
-        d.global = level_distance(0, a.global.roughness, b.global.roughness, k);
+        d.global = level_distance(corsini_value(a.global), corsini_value(b.global), k);
     }
     if (!a.levels.empty() && a.options.levels == b.options.levels) {
         d.has_multiscale = true;

@@ -33,6 +33,7 @@ void validate(const ProfileOptions& options)
     if (options.levels.empty() && options.radii.empty() && !options.global)
         throw OptionError("profile.levels",
                           "no level to compute: no ring level, no {profile.radii} and no {profile.global} level");
+    if (!is_known(options.normalize)) throw OptionError("profile.normalize", "not a known normalisation");
     if (!is_known(options.curvature.method))
         throw OptionError("profile.curvature.method", "not a known curvature method");
     if (!is_known(options.curvature.weighting))
@@ -148,14 +149,33 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
 
 }  // namespace
 
+Normalization normalization_of(const Mesh& mesh, NormalizeMethod method)
+{
+    switch (method) {
+        case NormalizeMethod::Paper:
+            return unit_normalization(mesh);
+        case NormalizeMethod::Area:
+            return area_normalization(mesh);
+        case NormalizeMethod::Original:
+            break;
+    }
+    throw OptionError("profile.normalize", "original needs two meshes: it is the frame of a comparison's original");
+}
+
 RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options)
+{
+    validate(options);
+    return roughness_profile(mesh, options, normalization_of(mesh, options.normalize));
+}
+
+RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options, const Normalization& frame)
 {
     validate(options);
     const ProgressScope scope(options.progress ? options.progress : current_progress());
     check_cancelled(current_progress());
     RoughnessProfile p;
     p.vertices = mesh.n_vertices();
-    p.normalization = unit_normalization(mesh);
+    p.normalization = frame;
     const Mesh unit = apply_normalization(mesh, p.normalization);
     check_cancelled(current_progress());  // the serial steps are checked in between
     const Adjacency adj = vertex_adjacency(unit);
@@ -185,7 +205,7 @@ RoughnessProfile roughness_profile_from_curvature(const Mesh& mesh, const std::v
             fmt::format("profile: {} curvature values for {} vertices", H_in.size(), mesh.n_vertices()));
     RoughnessProfile p;
     p.vertices = mesh.n_vertices();
-    p.normalization = unit_normalization(mesh);
+    p.normalization = normalization_of(mesh, options.normalize);
     const Mesh unit = apply_normalization(mesh, p.normalization);
     std::vector<double> H(H_in);
     std::size_t undefined = 0;

@@ -45,14 +45,15 @@ enum class WarningKind
     UndefinedCurvature,    //!< value: vertices with undefined H
     OutliersDominate,      //!< level: the level; value: top_share (above 0.5)
     NoDefinedD,            //!< level: the level; value: 0 (no vertex has a defined D)
-    CappedNeighbourhoods   //!< value: curvature fits on a capped 2-ring (curvature.h, kMaxFitNeighbors)
+    CappedNeighbourhoods,  //!< value: curvature fits on a capped 2-ring (curvature.h, kMaxFitNeighbors)
+    SparseNeighbourhoods   //!< level: the level; value: share of vertices without a neighbourhood (above 0.1)
 };
 
 template <>
 struct EnumNames<WarningKind>
 {
     static constexpr const char* what = "warning kind";
-    static constexpr std::array<EnumName<WarningKind>, 13> names{
+    static constexpr std::array<EnumName<WarningKind>, 14> names{
         {{WarningKind::UnreferencedVertices, "unreferenced-vertices"},
          {WarningKind::RepeatedCornerFaces, "repeated-corner-faces"},
          {WarningKind::IsolatedVertices, "isolated-vertices"},
@@ -65,7 +66,8 @@ struct EnumNames<WarningKind>
          {WarningKind::UndefinedCurvature, "undefined-curvature"},
          {WarningKind::OutliersDominate, "outliers-dominate"},
          {WarningKind::NoDefinedD, "no-defined-d"},
-         {WarningKind::CappedNeighbourhoods, "capped-neighbourhoods"}}};
+         {WarningKind::CappedNeighbourhoods, "capped-neighbourhoods"},
+         {WarningKind::SparseNeighbourhoods, "sparse-neighbourhoods"}}};
 };
 
 //! One warning about a mesh or its profile.

@@ -42,6 +42,10 @@ nlohmann::json exact_profile_json(const RoughnessProfile& estimated, const Exact
 //! The roughness_distance object of "meshdiff.compare/2".
 nlohmann::json roughness_distance_json(const RoughnessDistance& d);
 
+//! The "local" block of roughness_distance: the local roughness difference
+//! per level (null where no vertex has data).
+nlohmann::json local_roughness_json(const LocalRoughnessDistance& d);
+
 //! The "corsini" block of a profile or of one side of a comparison: the
 //! roughness per level, global and multi-scale, with counts and definition.
 nlohmann::json corsini_json(const CorsiniProfile& profile);

@@ -30,13 +30,21 @@ std::vector<int> default_levels();
 constexpr std::size_t kMaxLevels = 200;
 constexpr int kMaxLevel = 100'000;
 
+//! A level where more than this share of the vertices with curvature have no
+//! neighbourhood warns (sigma then speaks for the others only).
+constexpr double kSparseNeighbourhoodShare = 0.1;
+
 struct ProfileOptions
 {
     std::vector<int> levels = default_levels();  //!< ring levels, each >= 1, in the order reported
-    bool global = true;                          //!< also compute the global level
-    CurvatureOptions curvature{};                //!< estimator of H
-    bool keep_vertex_data = false;               //!< keep H and D per vertex in the result
-    double outlier_fraction = 0.001;             //!< share of vertices in the top-|D| diagnostic
+    //! The scaling before curvature (normalize.h): the paper's by default.
+    //! Original is for comparisons only (compare.h); roughness_profile()
+    //! refuses it without a frame.
+    NormalizeMethod normalize = NormalizeMethod::Paper;
+    bool global = true;               //!< also compute the global level
+    CurvatureOptions curvature{};     //!< estimator of H
+    bool keep_vertex_data = false;    //!< keep H and D per vertex in the result
+    double outlier_fraction = 0.001;  //!< share of vertices in the top-|D| diagnostic
     //! Metric levels (metric_levels.h, METHOD.md section 5a): radii on the
     //! normalised mesh, each finite and > 0, in the order reported. Empty by
     //! default (default_radii() is what `--radii default` asks for).
@@ -101,6 +109,17 @@ void validate(const ProfileOptions& options);
 //! \throw OptionError as validate().
 //! \throw InvalidMeshError for a mesh without extent.
 RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options = {});
+
+//! The roughness profile of \p mesh scaled by \p frame (c and s given, e.g.
+//! the original's in a comparison) instead of its own normalisation.
+//! \throw OptionError as validate().
+RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options, const Normalization& frame);
+
+//! The normalisation of \p mesh that \p method asks for (Paper or Area).
+//! \throw OptionError("profile.normalize") for Original, which needs the
+//!        original's frame (a comparison).
+//! \throw InvalidMeshError for a mesh without extent (or area).
+Normalization normalization_of(const Mesh& mesh, NormalizeMethod method);
 
 //! The profile of \p mesh with H given per vertex (in the mesh's own units,
 //! NaN = undefined) instead of estimated: for example the exact H of an
