@@ -88,6 +88,8 @@ void translate_exceptions(std::exception_ptr p)
         PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const SolverError& e) {
         PyErr_SetString(PyExc_RuntimeError, e.what());
+    } catch (const Cancelled&) {
+        translate_cancelled();  // Ctrl-C, or an exception of the progress hook
     } catch (const Error& e) {
         PyErr_SetString(PyExc_RuntimeError, e.what());
     }
@@ -473,10 +475,14 @@ ThreadScope::ThreadScope(Obj threads) : saved_(omp_get_max_threads())
         PyErr_WarnEx(PyExc_RuntimeWarning, (py_spelling("threads") + ": " + warning).c_str(), 2) < 0)
         throw py::error_already_set();
     if (use > 0) omp_set_num_threads(use);
+    progress_ = std::make_unique<CallProgress>(current_hook());
+    progress_scope_ = std::make_unique<ProgressScope>(progress_.get());
 }
 
 ThreadScope::~ThreadScope()
 {
+    progress_scope_.reset();
+    progress_->settle(std::uncaught_exceptions() > 0);
     omp_set_num_threads(saved_);
 }
 

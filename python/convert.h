@@ -11,6 +11,7 @@
 //! with the GIL held.
 #pragma once
 
+#include "interrupt.h"
 #include "meshdiff/compare.h"
 #include "meshdiff/distance/surface_distance.h"
 #include "meshdiff/geometry/sampling.h"
@@ -27,6 +28,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -209,6 +211,8 @@ ProfileRequest profile_request(const ProfileKeywords& a);
 //! Sets the OpenMP thread count of the calling thread for one call (None or
 //! 0: leave the default, all cores or OMP_NUM_THREADS, as the CLI does) and
 //! restores it. A count the system cannot start is lowered with a RuntimeWarning.
+//! Also the call's Progress (interrupt.h): Ctrl-C and the progress hook.
+//! Constructed and destroyed with the GIL held, around the GIL's release.
 class ThreadScope
 {
 public:
@@ -219,6 +223,8 @@ public:
 
 private:
     int saved_;
+    std::unique_ptr<CallProgress> progress_;
+    std::unique_ptr<ProgressScope> progress_scope_;
 };
 
 // ---------------------------------------------------------------- results out

@@ -6,6 +6,7 @@
 // so the numbers are bit for bit those of `meshdiff ... --json`.
 #include "convert.h"
 #include "docs.h"
+#include "interrupt.h"
 #include "meshdiff/compare.h"
 #include "meshdiff/distance/surface_distance.h"
 #include "meshdiff/geometry/closest_point.h"
@@ -512,7 +513,7 @@ void def_distance_index(py::module_& m)
 }  // namespace
 }  // namespace meshdiff::python
 
-PYBIND11_MODULE(meshdiff, m)
+PYBIND11_MODULE(_meshdiff, m)
 {
     using namespace meshdiff::python;
     m.doc() = kModuleDoc;
@@ -526,4 +527,5 @@ PYBIND11_MODULE(meshdiff, m)
     def_roughness(m);
     def_distances(m);
     def_distance_index(m);
+    def_progress(m);
 }
