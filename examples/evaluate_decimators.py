@@ -41,6 +41,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import warnings
 from typing import Any, Callable, Dict, List, Sequence, Tuple
 
 import matplotlib
@@ -51,6 +52,10 @@ import numpy as np  # noqa: E402
 import open3d as o3d  # noqa: E402
 
 import meshdiff  # noqa: E402
+
+# Decimations leave the reports' warnings (non-manifold edges, outlier-dominated levels) in each result's
+# "warnings"; shown once each here rather than for every comparison.
+warnings.simplefilter("once", meshdiff.MeshWarning)
 
 COLUMNS = ["mesh", "decimator", "ratio", "vertices", "faces", "hausdorff", "hausdorff_relative", "rms", "d_r0.2",
            "seconds"]

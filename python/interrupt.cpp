@@ -63,6 +63,10 @@ CallProgress::~CallProgress()
 void CallProgress::stage(std::string_view name, std::size_t total)
 {
     if (std::this_thread::get_id() != owner_) return;
+    if (!stage_.empty() && total_ != 0) {  // the previous stage's end (its last advance() may not have been shown)
+        done_ = total_;
+        poll(true);
+    }
     stage_ = name;
     total_ = total;
     done_ = 0;
