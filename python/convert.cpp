@@ -434,6 +434,16 @@ CompareOptions compare_options(const CompareKeywords& a)
     return c;
 }
 
+std::optional<HausdorffOptions> surface_distance_hausdorff(Obj hausdorff, Obj tolerance, Obj abs_tolerance, Obj budget)
+{
+    HausdorffRequest h;
+    h.method = choice<HausdorffMethod>(hausdorff, "hausdorff").value_or(HausdorffMethod::Sampled);
+    h.relative_tolerance = number(tolerance, "hausdorff.relative_tolerance");
+    h.absolute_tolerance = number(abs_tolerance, "hausdorff.absolute_tolerance");
+    if (auto b = whole(budget, "hausdorff.max_evaluations")) h.budget = std::size_t(*b);
+    return hausdorff_options(h);
+}
+
 CompareOutputs compare_outputs(const CompareKeywords& a)
 {
     CompareOutputs o;

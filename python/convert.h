@@ -181,6 +181,11 @@ ProfileOptions profile_options(Obj levels, Obj radii, Obj global_level, Obj curv
 SamplingOptions sampling_options(Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples,
                                  Obj edge_samples, Obj face_samples);
 
+//! The certification of surface_distance() (hausdorff=..., as compare()'s
+//! keywords, by the library's hausdorff_options()): None, its default, keeps
+//! the sampled maxima (then no tolerance or budget may be given).
+std::optional<HausdorffOptions> surface_distance_hausdorff(Obj hausdorff, Obj tolerance, Obj abs_tolerance, Obj budget);
+
 //! The comparison options (compare(), compare_files()).
 struct CompareKeywords
 {

@@ -40,7 +40,8 @@ rm -rf "$venv"
 start=$SECONDS
 MESHDIFF_CMAKE_BUILD_DIR="$PWD/build" "$venv/bin/python" -m pip install --no-build-isolation --no-index -q .
 echo "pip install: $((SECONDS - start)) s"
-(cd / && "$PWD/$venv/bin/python" -c "import meshdiff; print('installed:', meshdiff.__file__)")
+venv_python="$PWD/$venv/bin/python"
+(cd / && "$venv_python" -c "import meshdiff; print('installed:', meshdiff.__file__)")
 # The tests import the installed package (conftest.py refuses the build or source tree's); they run
 # stubtest and mypy on it too (test_typing.py). pytest exits 5 when it collects no test: a failure here.
 status=0

@@ -295,6 +295,10 @@ def surface_distance(
     face_samples: bool = ...,
     return_samples: bool = ...,
     threads: Optional[int] = ...,
+    hausdorff: Optional[str] = ...,
+    hausdorff_tolerance: Optional[float] = ...,
+    hausdorff_abs_tolerance: Optional[float] = ...,
+    hausdorff_budget: Optional[int] = ...,
     progress: _Progress = ...,
 ) -> _Report: ...
 @overload
@@ -310,6 +314,10 @@ def surface_distance(
     face_samples: bool = ...,
     return_samples: bool = ...,
     threads: Optional[int] = ...,
+    hausdorff: Optional[str] = ...,
+    hausdorff_tolerance: Optional[float] = ...,
+    hausdorff_abs_tolerance: Optional[float] = ...,
+    hausdorff_budget: Optional[int] = ...,
     progress: _Progress = ...,
 ) -> _Report: ...
 @overload

@@ -79,3 +79,26 @@ def test_distance_index_pickles(pair):
     for a, b in zip(index.query(V2), again.query(V2)):
         assert np.array_equal(a, b)
     assert again._threads == 1
+
+
+def test_surface_distance_certifies_like_compare(pair):
+    (V1, F1), (V2, F2) = pair
+    certified = meshdiff.surface_distance(V1, F1, V2, F2, hausdorff="certified")
+    assert certified == meshdiff.compare(V1, F1, V2, F2, roughness=False)["surface_distance"]
+    h = certified["hausdorff"]
+    assert h["certified"] and h["lower"] <= h["upper"]
+    # the default stays the sampled maxima, which the certified interval bounds from above
+    sampled = meshdiff.surface_distance(V1, F1, V2, F2)
+    assert sampled["hausdorff"]["method"] == "sampled" and sampled["hausdorff"]["upper"] is None
+    assert sampled["hausdorff"]["lower"] <= h["upper"]
+    assert sampled == meshdiff.surface_distance(V1, F1, V2, F2, hausdorff="sampled")
+    # with the samples kept, the same report
+    kept = meshdiff.surface_distance(V1, F1, V2, F2, hausdorff="certified", hausdorff_tolerance=1e-3,
+                                     return_samples=True)
+    loose = meshdiff.surface_distance(V1, F1, V2, F2, hausdorff="certified", hausdorff_tolerance=1e-3)
+    for side in ("forward", "backward"):
+        for key in ("points", "distances", "signed_distances", "kinds", "elements"):
+            kept[side].pop(key)
+    assert kept == loose
+    with pytest.raises(ValueError, match="^hausdorff_tolerance"):
+        meshdiff.surface_distance(V1, F1, V2, F2, hausdorff_tolerance=1e-3)
