@@ -28,11 +28,56 @@ __all__ = [
 _ORIGINAL_PROCESSED = ("original", "processed")
 
 
+_MESH_OBJECTS = """
+A mesh object may stand for each V, F pair: an object with .vertices and .faces
+(trimesh), an Open3D TriangleMesh (.vertices, .triangles) or a meshio.Mesh
+(.points, triangle cells only; other cells: ValueError)."""
+
+_PROGRESS = """
+progress=None: a callable progress(stage, done, total), called about every 20 ms
+while the library works (total 0: not known in advance), or True for a tqdm bar
+per stage; an exception it raises stops the call. Ctrl-C stops the call with
+KeyboardInterrupt."""
+
+# The package's additions to the extension's docstrings (python/docs.h): its keywords, and an example.
+_EXTRA_DOC = {
+    "read_mesh": """
+Example: V, F = meshdiff.read_mesh("bunny.ply")""",
+    "compare": _MESH_OBJECTS + _PROGRESS + """
+maps=False: with True, result["maps"] holds per-vertex numpy arrays:
+distance_original (n1,) and distance_processed (n2,) float64, the exact distance
+of each vertex to the other surface in the meshes' unit (when the distance is
+computed); D_original (n1, L) and D_processed (n2, L) float64, D_L per vertex on
+the unit-scaled mesh, a column per level and a last one for the global level
+(when the roughness is; NaN where undefined). Report warnings are also raised as
+meshdiff.MeshWarning.
+
+Example: meshdiff.compare(mesh_a, mesh_b, maps=True)["maps"]["distance_original"]""",
+    "compare_files": _PROGRESS + """
+Report warnings are also raised as meshdiff.MeshWarning.
+
+Example: meshdiff.compare_files("a.ply", "b.ply")["surface_distance"]["hausdorff"]["upper"]""",
+    "profile": _MESH_OBJECTS + _PROGRESS + """
+Example: meshdiff.profile(V, F, levels=[1, 5, 20])["sigma"]""",
+    "profile_file": _PROGRESS + """
+Example: meshdiff.profile_file("bunny.ply", levels=[1, 5, 20])["sigma_global"]""",
+    "corsini_profile": _MESH_OBJECTS + _PROGRESS + """
+Example: meshdiff.corsini_profile(V, F)["corsini"]["multiscale"]""",
+    "mean_curvature": _MESH_OBJECTS + _PROGRESS + """
+Example: H = meshdiff.mean_curvature(V, F)  # (n,), 1/length unit""",
+    "roughness": _MESH_OBJECTS + _PROGRESS + """
+Example: D, sigma = meshdiff.roughness(V, F, levels=[1, 5])  # D (n, 2), sigma (2,)""",
+    "surface_distance": _MESH_OBJECTS + _PROGRESS,
+    "vertex_distances": _MESH_OBJECTS + _PROGRESS + """
+Example: d = meshdiff.vertex_distances(V1, F1, V2, F2)  # (n1,), the meshes' unit""",
+}
+
+
 def _public(fn: Callable[..., Any], name: str) -> Callable[..., Any]:
-    """fn as the package's function name, with the extension's docstring."""
+    """fn as the package's function name, with the extension's docstring and the package's additions."""
     fn.__name__ = fn.__qualname__ = name
     fn.__module__ = __name__
-    fn.__doc__ = getattr(_meshdiff, name).__doc__
+    fn.__doc__ = (getattr(_meshdiff, name).__doc__ or "") + _EXTRA_DOC.get(name, "")
     return fn
 
 
@@ -113,7 +158,12 @@ compare_files = _public(compare_files, "compare_files")
 
 
 class DistanceIndex(_meshdiff.DistanceIndex):
-    __doc__ = _meshdiff.DistanceIndex.__doc__
+    __doc__ = (_meshdiff.DistanceIndex.__doc__ or "") + """
+DistanceIndex(V, F, *, threads=None) or DistanceIndex(mesh): threads is the
+default of query(). The index pickles (for Dask or multiprocessing): it keeps
+V, F as arrays for that; unpickling builds it again.
+
+Example: distance, face, closest = meshdiff.DistanceIndex(V, F).query(P)"""
 
     def __init__(self, *args: Any, threads: Any = None) -> None:
         arrays = expand(args, ("mesh",))

@@ -102,3 +102,13 @@ def test_surface_distance_certifies_like_compare(pair):
     assert kept == loose
     with pytest.raises(ValueError, match="^hausdorff_tolerance"):
         meshdiff.surface_distance(V1, F1, V2, F2, hausdorff_tolerance=1e-3)
+
+
+@pytest.mark.parametrize("name", ["read_mesh", "compare", "compare_files", "profile", "profile_file",
+                                  "corsini_profile", "mean_curvature", "roughness", "surface_distance",
+                                  "vertex_distances", "DistanceIndex"])
+def test_every_function_documents_an_example(name):
+    doc = getattr(meshdiff, name).__doc__
+    assert "Example" in doc and getattr(meshdiff, name).__module__ == "meshdiff"
+    if name not in ("read_mesh", "compare_files", "profile_file", "DistanceIndex"):
+        assert "mesh object" in doc  # the package's additions are in help() too
