@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 #include <omp.h>
+#include <pybind11_json/pybind11_json.hpp>
 
 #include <algorithm>
 #include <cerrno>
@@ -500,33 +501,7 @@ ThreadScope::~ThreadScope()
 
 py::object to_python(const nlohmann::json& j)
 {
-    switch (j.type()) {
-        case nlohmann::json::value_t::null:
-            return py::none();
-        case nlohmann::json::value_t::boolean:
-            return py::bool_(j.get<bool>());
-        case nlohmann::json::value_t::number_integer:
-            return py::int_(j.get<std::int64_t>());
-        case nlohmann::json::value_t::number_unsigned:
-            return py::int_(j.get<std::uint64_t>());
-        case nlohmann::json::value_t::number_float:
-            return py::float_(j.get<double>());
-        case nlohmann::json::value_t::string:
-            return py::str(j.get_ref<const std::string&>());
-        case nlohmann::json::value_t::array: {
-            py::list l(j.size());
-            std::size_t i = 0;
-            for (const auto& v : j) l[i++] = to_python(v);
-            return std::move(l);
-        }
-        case nlohmann::json::value_t::object: {
-            py::dict d;
-            for (const auto& item : j.items()) d[py::str(item.key())] = to_python(item.value());
-            return std::move(d);
-        }
-        default:
-            throw std::runtime_error("meshdiff: a JSON value of an unexpected type (binary or discarded)");
-    }
+    return pyjson::from_json(j);  // pybind11_json: the same conversion value by value, kept by its library
 }
 
 py::array_t<double> vector_array(const std::vector<double>& v)

@@ -13,7 +13,7 @@ pkgs=(build-essential cmake pkg-config
       procps bsdutils
       # The Python module (python/) and its tests, for Debian's /usr/bin/python3;
       # OpenMesh's command-line decimater for examples/evaluate_decimators.py.
-      pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib libopenmesh-apps
+      pybind11-dev pybind11-json-dev python3-dev python3-numpy python3-pytest python3-matplotlib libopenmesh-apps
       # The Python package (pyproject.toml, setup.py): `pip install --no-build-isolation .` in a venv and
       # `python3 -m build --no-isolation --wheel`, offline; stubtest and mypy; the mesh objects of its tests
       # (meshio, Open3D); its Dask recipe and test (distributed); progress=True (tqdm).
