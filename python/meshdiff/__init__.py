@@ -146,8 +146,9 @@ def compare(*args: Any, maps: bool = False, **options: Any) -> Any:
     arrays = expand(args, _ORIGINAL_PROCESSED)
     result = call("compare", _meshdiff.compare, arrays, options)
     warn_report(result, _ORIGINAL_PROCESSED)
-    if maps:
-        result["maps"] = _maps(arrays, result, options)
+    if maps:  # V1, F1, V2, F2 by position or by name
+        named = [options.get(name) for name in ("V1", "F1", "V2", "F2")[len(arrays):]]
+        result["maps"] = _maps(list(arrays) + named, result, options)
     return result
 
 
@@ -165,14 +166,13 @@ V, F as arrays for that; unpickling builds it again.
 
 Example: distance, face, closest = meshdiff.DistanceIndex(V, F).query(P)"""
 
-    def __init__(self, *args: Any, threads: Any = None) -> None:
-        arrays = expand(args, ("mesh",))
-        if len(arrays) != 2:
-            raise TypeError(f"DistanceIndex(): takes a mesh object or V, F; {len(arrays)} arrays given")
-        super().__init__(*arrays)  # checks the arrays, with the messages of the extension
+    def __init__(self, *args: Any, threads: Any = None, **arrays: Any) -> None:
+        given = expand(args, ("mesh",))
+        super().__init__(*given, **arrays)  # checks the arrays (V, F by position or name) as the extension does
+        V, F = (list(given) + [arrays.get(name) for name in ("V", "F")[len(given):]])[:2]
         # Copies for pickling (the index keeps its own copy of the mesh, not exposed).
-        self._V = np.array(arrays[0], dtype=np.float64)
-        self._F = np.array(arrays[1], dtype=np.int64)
+        self._V = np.array(V, dtype=np.float64)
+        self._F = np.array(F, dtype=np.int64)
         self._threads = threads
 
     def query(self, P: Any, *, threads: Any = None) -> Any:

@@ -112,3 +112,11 @@ def test_every_function_documents_an_example(name):
     assert "Example" in doc and getattr(meshdiff, name).__module__ == "meshdiff"
     if name not in ("read_mesh", "compare_files", "profile_file", "DistanceIndex"):
         assert "mesh object" in doc  # the package's additions are in help() too
+
+
+def test_arrays_by_name_still_work(pair):
+    (V1, F1), (V2, F2) = pair
+    index = meshdiff.DistanceIndex(V=V1, F=F1)
+    assert pickle.loads(pickle.dumps(index)).n_faces == index.n_faces == len(F1)
+    r = meshdiff.compare(V1, F1, V2=V2, F2=F2, levels=[1], maps=True)
+    assert np.array_equal(r["maps"]["distance_processed"], meshdiff.vertex_distances(V2, F2, V1, F1))
