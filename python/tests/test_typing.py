@@ -39,7 +39,7 @@ def test_stubtest_finds_the_stub_true_to_the_module(tmp_path):
     config = tmp_path / "mypy.ini"
     config.write_text("[mypy]\nignore_missing_imports = True\n")
     allow = tmp_path / "allowlist"
-    # A pybind11 class has pybind11's metaclass, which no stub names; the private helper modules are
+    # A pybind11 class has pybind11's metaclass, which no stub names; the private modules _calls and _meshes are
     # plain Python that mypy checks as such.
     allow.write_text("meshdiff.DistanceIndex\nmeshdiff._calls.*\nmeshdiff._meshes.*\n")
     r = subprocess.run([sys.executable, "-m", "mypy.stubtest", "meshdiff", "--mypy-config-file", str(config),
