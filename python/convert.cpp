@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 #include <omp.h>
+#include <pybind11_json/pybind11_json.hpp>
 
 #include <algorithm>
 #include <cerrno>
@@ -88,6 +89,8 @@ void translate_exceptions(std::exception_ptr p)
         PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const SolverError& e) {
         PyErr_SetString(PyExc_RuntimeError, e.what());
+    } catch (const Cancelled&) {
+        translate_cancelled();  // Ctrl-C, or an exception of the progress hook
     } catch (const Error& e) {
         PyErr_SetString(PyExc_RuntimeError, e.what());
     }
@@ -432,6 +435,16 @@ CompareOptions compare_options(const CompareKeywords& a)
     return c;
 }
 
+std::optional<HausdorffOptions> surface_distance_hausdorff(Obj hausdorff, Obj tolerance, Obj abs_tolerance, Obj budget)
+{
+    HausdorffRequest h;
+    h.method = choice<HausdorffMethod>(hausdorff, "hausdorff").value_or(HausdorffMethod::Sampled);
+    h.relative_tolerance = number(tolerance, "hausdorff.relative_tolerance");
+    h.absolute_tolerance = number(abs_tolerance, "hausdorff.absolute_tolerance");
+    if (auto b = whole(budget, "hausdorff.max_evaluations")) h.budget = std::size_t(*b);
+    return hausdorff_options(h);
+}
+
 CompareOutputs compare_outputs(const CompareKeywords& a)
 {
     CompareOutputs o;
@@ -473,10 +486,14 @@ ThreadScope::ThreadScope(Obj threads) : saved_(omp_get_max_threads())
         PyErr_WarnEx(PyExc_RuntimeWarning, (py_spelling("threads") + ": " + warning).c_str(), 2) < 0)
         throw py::error_already_set();
     if (use > 0) omp_set_num_threads(use);
+    progress_ = std::make_unique<CallProgress>(current_hook());
+    progress_scope_ = std::make_unique<ProgressScope>(progress_.get());
 }
 
 ThreadScope::~ThreadScope()
 {
+    progress_scope_.reset();
+    progress_->settle(std::uncaught_exceptions() > 0);
     omp_set_num_threads(saved_);
 }
 
@@ -484,33 +501,7 @@ ThreadScope::~ThreadScope()
 
 py::object to_python(const nlohmann::json& j)
 {
-    switch (j.type()) {
-        case nlohmann::json::value_t::null:
-            return py::none();
-        case nlohmann::json::value_t::boolean:
-            return py::bool_(j.get<bool>());
-        case nlohmann::json::value_t::number_integer:
-            return py::int_(j.get<std::int64_t>());
-        case nlohmann::json::value_t::number_unsigned:
-            return py::int_(j.get<std::uint64_t>());
-        case nlohmann::json::value_t::number_float:
-            return py::float_(j.get<double>());
-        case nlohmann::json::value_t::string:
-            return py::str(j.get_ref<const std::string&>());
-        case nlohmann::json::value_t::array: {
-            py::list l(j.size());
-            std::size_t i = 0;
-            for (const auto& v : j) l[i++] = to_python(v);
-            return std::move(l);
-        }
-        case nlohmann::json::value_t::object: {
-            py::dict d;
-            for (const auto& item : j.items()) d[py::str(item.key())] = to_python(item.value());
-            return std::move(d);
-        }
-        default:
-            throw std::runtime_error("meshdiff: a JSON value of an unexpected type (binary or discarded)");
-    }
+    return pyjson::from_json(j);  // pybind11_json: the same conversion value by value, kept by its library
 }
 
 py::array_t<double> vector_array(const std::vector<double>& v)

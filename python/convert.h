@@ -11,6 +11,7 @@
 //! with the GIL held.
 #pragma once
 
+#include "interrupt.h"
 #include "meshdiff/compare.h"
 #include "meshdiff/distance/surface_distance.h"
 #include "meshdiff/geometry/sampling.h"
@@ -27,6 +28,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <exception>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -179,6 +181,11 @@ ProfileOptions profile_options(Obj levels, Obj radii, Obj global_level, Obj curv
 SamplingOptions sampling_options(Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples,
                                  Obj edge_samples, Obj face_samples);
 
+//! The certification of surface_distance() (hausdorff=..., as compare()'s
+//! keywords, by the library's hausdorff_options()): None, its default, keeps
+//! the sampled maxima (then no tolerance or budget may be given).
+std::optional<HausdorffOptions> surface_distance_hausdorff(Obj hausdorff, Obj tolerance, Obj abs_tolerance, Obj budget);
+
 //! The comparison options (compare(), compare_files()).
 struct CompareKeywords
 {
@@ -209,6 +216,8 @@ ProfileRequest profile_request(const ProfileKeywords& a);
 //! Sets the OpenMP thread count of the calling thread for one call (None or
 //! 0: leave the default, all cores or OMP_NUM_THREADS, as the CLI does) and
 //! restores it. A count the system cannot start is lowered with a RuntimeWarning.
+//! Also the call's Progress (interrupt.h): Ctrl-C and the progress hook.
+//! Constructed and destroyed with the GIL held, around the GIL's release.
 class ThreadScope
 {
 public:
@@ -219,6 +228,8 @@ public:
 
 private:
     int saved_;
+    std::unique_ptr<CallProgress> progress_;
+    std::unique_ptr<ProgressScope> progress_scope_;
 };
 
 // ---------------------------------------------------------------- results out

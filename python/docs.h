@@ -199,6 +199,14 @@ the other surface), kinds (k,) uint8 (0 vertex, 1 edge, 2 face: see
 SAMPLE_KINDS), elements (k,) int64 (the vertex, a face of the edge, or the
 face sampled) and signed_distances (k,) float64 (positive outside the other
 surface; None when "signed" is None). The statistics are the same bit for bit.
+
+hausdorff="certified" certifies both one-sided Hausdorff distances as compare()
+does (its default there): "hausdorff" then holds an interval [lower, upper] and
+where it is attained; hausdorff_tolerance, hausdorff_abs_tolerance and
+hausdorff_budget are compare()'s. None (the default here) or "sampled": the
+sampled maxima only, as before.
+
+Example: meshdiff.surface_distance(V1, F1, V2, F2, hausdorff="certified")["hausdorff"]["upper"]
 )doc";
 
 //! vertex_distances().

@@ -6,6 +6,7 @@
 // so the numbers are bit for bit those of `meshdiff ... --json`.
 #include "convert.h"
 #include "docs.h"
+#include "interrupt.h"
 #include "meshdiff/compare.h"
 #include "meshdiff/distance/surface_distance.h"
 #include "meshdiff/geometry/closest_point.h"
@@ -187,11 +188,14 @@ py::tuple py_roughness(const ArrayLike& V, const ArrayLike& F, Obj levels, Obj g
 
 py::dict py_surface_distance(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V2, const ArrayLike& F2,
                              Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples,
-                             Obj edge_samples, Obj face_samples, Obj return_samples, Obj threads)
+                             Obj edge_samples, Obj face_samples, Obj return_samples, Obj threads, Obj hausdorff,
+                             Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance, Obj hausdorff_budget)
 {
     const SamplingOptions o =
         sampling_options(samples, density, face_sampling, seed, vertex_samples, edge_samples, face_samples);
     const bool with_samples = flag(return_samples, "return_samples", false);
+    const std::optional<HausdorffOptions> certify =
+        surface_distance_hausdorff(hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget);
     const LoadedMesh a = mesh_from(V1, F1, "V1", "F1");
     const LoadedMesh b = mesh_from(V2, F2, "V2", "F2");
     SampledSurfaceDistance r;
@@ -199,10 +203,11 @@ py::dict py_surface_distance(const ArrayLike& V1, const ArrayLike& F1, const Arr
     {
         ThreadScope scope(threads);
         py::gil_scoped_release release;
-        if (with_samples)
+        if (with_samples && !certify)
             r = surface_distance_samples(a.mesh, b.mesh, o);
         else
-            r.distance = surface_distance(a.mesh, b.mesh, o);
+            r.distance = surface_distance(a.mesh, b.mesh, o, false, certify, {}, with_samples ? &r.forward : nullptr,
+                                          with_samples ? &r.backward : nullptr);
         j = surface_distance_json(r.distance, o);
     }
     if (!with_samples) return to_python(j);
@@ -490,7 +495,9 @@ void def_distances(py::module_& m)
           py::arg("face_sampling") = py::none(), py::arg("seed") = py::none(),
           py::arg("vertex_samples") = py::bool_(true), py::arg("edge_samples") = py::bool_(true),
           py::arg("face_samples") = py::bool_(true), py::arg("return_samples") = py::bool_(false),
-          py::arg("threads") = py::none());
+          py::arg("threads") = py::none(), py::arg("hausdorff") = py::none(),
+          py::arg("hausdorff_tolerance") = py::none(), py::arg("hausdorff_abs_tolerance") = py::none(),
+          py::arg("hausdorff_budget") = py::none());
     m.def("vertex_distances", &py_vertex_distances, kVertexDistancesDoc, py::arg("V1"), py::arg("F1"), py::arg("V2"),
           py::arg("F2"), py::kw_only(), py::arg("threads") = py::none());
 }
@@ -512,7 +519,7 @@ void def_distance_index(py::module_& m)
 }  // namespace
 }  // namespace meshdiff::python
 
-PYBIND11_MODULE(meshdiff, m)
+PYBIND11_MODULE(_meshdiff, m)
 {
     using namespace meshdiff::python;
     m.doc() = kModuleDoc;
@@ -526,4 +533,5 @@ PYBIND11_MODULE(meshdiff, m)
     def_roughness(m);
     def_distances(m);
     def_distance_index(m);
+    def_progress(m);
 }

@@ -12,8 +12,13 @@ pkgs=(build-essential cmake pkg-config
       # kill(1) of a process group and script(1) for a pseudo-terminal: tests/cli_progress_test.sh.
       procps bsdutils
       # The Python module (python/) and its tests, for Debian's /usr/bin/python3;
-      # OpenMesh's command-line decimater for examples/evaluate_decimation.py.
-      pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib libopenmesh-apps
+      # OpenMesh's command-line decimater for examples/evaluate_decimators.py.
+      pybind11-dev pybind11-json-dev python3-dev python3-numpy python3-pytest python3-matplotlib libopenmesh-apps
+      # The Python package (pyproject.toml, setup.py): `pip install --no-build-isolation .` in a venv and
+      # `python3 -m build --no-isolation --wheel`, offline; stubtest and mypy; the mesh objects of its tests
+      # (meshio, Open3D); its Dask recipe and test (distributed); progress=True (tqdm).
+      python3-setuptools python3-wheel python3-build python3-venv python3-mypy
+      python3-meshio python3-open3d python3-distributed python3-tqdm
       # The fuzzing of the readers (scripts/fuzz.sh): clang with libFuzzer and its OpenMP runtime.
       clang libclang-rt-14-dev libomp-dev)
 if [[ "${1:-}" == "--reference" ]]; then

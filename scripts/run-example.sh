@@ -2,7 +2,7 @@
 # Installs the dependencies, builds meshdiff and runs it on a bundled example:
 # the roughness profile of a real mesh, then the comparison of Stanford's
 # bunny decimation res3 against res4 (both bundled in tests/data/), and the
-# same comparison from Python (the module build/python/meshdiff*.so).
+# same comparison from Python (the package build/python/meshdiff/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh

@@ -3,8 +3,10 @@
 #  1. a Release build with warnings as errors (with the Python module), and
 #     ctest; installs it into a temporary prefix and builds tests/consumer
 #     against it;
-#  2. the Python module: pytest (python/tests) with the interpreter CMake chose,
-#     and an import of the module installed by cmake --install;
+#  2. the Python package: `pip install .` into a virtual environment (reusing
+#     the Release tree: MESHDIFF_CMAKE_BUILD_DIR), pytest (python/tests, with
+#     stubtest and mypy) against that installed package, and an import of the
+#     package installed by cmake --install;
 #  3. a Debug build with AddressSanitizer + UndefinedBehaviorSanitizer, and ctest;
 #  4. the fuzzing of the readers (scripts/fuzz.sh: libFuzzer with clang, ASan + UBSan, 45 s per format) and of
 #     the Python array path (scripts/fuzz_arrays.py, 45 s: no crash, no hang, only ValueError/TypeError);
@@ -24,15 +26,27 @@ ctest --test-dir build --output-on-failure -j"$jobs"
 echo "== install and build a consumer against the installed package"
 tests/consumer_test.sh build
 
-echo "== Python module + pytest"
+echo "== Python package: pip install into a virtual environment, pytest, stubtest, mypy"
 # The interpreter CMake chose: one that imports numpy (/usr/bin/python3 on
 # Debian; the python3 first on PATH may be another one without numpy).
 py=$(sed -n 's/^MESHDIFF_PYTHON_EXECUTABLE:[A-Z]*=//p' build/CMakeCache.txt)
 [[ -x "$py" ]] || { echo "no Python interpreter in build/CMakeCache.txt (MESHDIFF_PYTHON_EXECUTABLE)" >&2; exit 1; }
 echo "python: $py"
-# pytest exits 5 when it collects no test: a failure here, like any non-zero code.
+# `pip install .` as a user runs it (docs/python.md), offline; MESHDIFF_CMAKE_BUILD_DIR makes the
+# build backend (setup.py) reuse the Release tree built above instead of building the extension again.
+venv=build/venv
+rm -rf "$venv"
+"$py" -m venv --system-site-packages "$venv"
+start=$SECONDS
+MESHDIFF_CMAKE_BUILD_DIR="$PWD/build" "$venv/bin/python" -m pip install --no-build-isolation --no-index -q .
+echo "pip install: $((SECONDS - start)) s"
+venv_python="$PWD/$venv/bin/python"
+(cd / && "$venv_python" -c "import meshdiff; print('installed:', meshdiff.__file__)")
+# The tests import the installed package (conftest.py refuses the build or source tree's); they run
+# stubtest and mypy on it too (test_typing.py). pytest exits 5 when it collects no test: a failure here.
 status=0
-MESHDIFF_BUILD_DIR="$PWD/build" "$py" -m pytest python/tests -q -p no:cacheprovider || status=$?
+MESHDIFF_TEST_INSTALLED=1 MESHDIFF_BUILD_DIR="$PWD/build" "$venv/bin/python" -m pytest python/tests -q \
+    -p no:cacheprovider || status=$?
 if ((status == 5)); then
     echo "pytest collected no tests (exit 5)" >&2
     exit 1
@@ -40,7 +54,7 @@ elif ((status != 0)); then
     echo "pytest failed (exit $status)" >&2
     exit 1
 fi
-# cmake --install puts the module where that interpreter imports it from the prefix.
+# cmake --install puts the package where that interpreter imports it from the prefix.
 pyprefix=$(mktemp -d "${TMPDIR:-/tmp}/meshdiff-python.XXXXXX")
 cmake --install build --prefix "$pyprefix" --component python > /dev/null
 pydir=$(sed -n 's/^MESHDIFF_PYTHON_INSTALL_DIR:[A-Z]*=//p' build/CMakeCache.txt)

@@ -1,6 +1,5 @@
 """Bad arrays, options and files raise the documented exceptions; nothing
 crashes the interpreter."""
-import os
 import subprocess
 import sys
 import textwrap
@@ -9,6 +8,7 @@ import numpy as np
 import pytest
 
 import meshdiff
+from conftest import child_env
 
 
 @pytest.fixture(scope="module")
@@ -147,7 +147,7 @@ def test_hostile_input_never_crashes_the_interpreter(build_dir):
                 print(i, type(e).__name__, str(e)[:80])
         print("done")
     """)
-    env = dict(os.environ, PYTHONPATH=str(build_dir / "python"))
+    env = child_env()
     r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env, timeout=300)
     assert r.returncode == 0, r.stdout + r.stderr
     assert r.stdout.rstrip().endswith("done"), r.stdout + r.stderr

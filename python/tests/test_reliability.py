@@ -2,7 +2,6 @@
 hang on huge coordinates), DistanceIndex.query is finite or refused, a failing
 call leaves no output file, an empty path is refused, a cloud without extent is
 an error, not NaN."""
-import os
 import subprocess
 import sys
 import textwrap
@@ -11,6 +10,7 @@ import numpy as np
 import pytest
 
 import meshdiff
+from conftest import child_env
 
 
 @pytest.fixture(scope="module")
@@ -20,8 +20,7 @@ def sphere(data):
 
 def run_isolated(code, timeout=60):
     """Runs \\p code in a child interpreter (a hang is a failed test, not a stuck run)."""
-    from conftest import BUILD
-    env = dict(os.environ, PYTHONPATH=str(BUILD / "python"))
+    env = child_env()
     return subprocess.run([sys.executable, "-c", textwrap.dedent(code)], env=env, capture_output=True, text=True,
                           timeout=timeout)
 
