@@ -33,6 +33,8 @@ std::string py_spelling(const std::string& field)
         {"profile.curvature.weighting", "weighting"},
         {"measure", "measure"},
         {"corsini_unbiased", "unbiased_variance"},
+        {"profile.normalize", "normalize"},
+        {"local", "local"},
         {"k", "k"},
         {"roughness", "roughness"},
         {"distance", "distance"},
@@ -418,6 +420,8 @@ CompareOptions compare_options(const CompareKeywords& a)
     c.profile = profile_options(a.levels, a.radii, a.global_level, a.curvature, a.weighting);
     if (auto m = choice<RoughnessMeasure>(a.measure, "measure")) c.measure = *m;
     c.corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", c.corsini_unbiased);
+    if (auto n = choice<NormalizeMethod>(a.normalize, "profile.normalize")) c.profile.normalize = *n;
+    c.local = flag(a.local, "local", c.local);
     if (auto k = number(a.k, "k")) c.k = *k;
     c.roughness = flag(a.roughness, "roughness", c.roughness);
     c.distance = flag(a.distance, "distance", c.distance);
@@ -468,6 +472,7 @@ ProfileRequest profile_request(const ProfileKeywords& a)
     r.profile = profile_options(a.levels, a.radii, a.global_level, a.curvature, a.weighting);
     if (auto m = choice<RoughnessMeasure>(a.measure, "measure")) r.measure = *m;
     r.corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", r.corsini_unbiased);
+    if (auto n = choice<NormalizeMethod>(a.normalize, "profile.normalize")) r.profile.normalize = *n;
     r.json = output_path(a.json, "outputs.json");
     r.vertex_data = output_path(a.vertex_data, "outputs.vertex_data");
     if (auto c = number(a.color_range, "outputs.color_range")) r.color_range = *c;

@@ -66,6 +66,11 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
   weighting=None        row weighting of the fits: none (default), inverse-square  [--weighting]
   measure=None          sigma (default) or corsini (METHOD.md 6a)          [--measure]
   unbiased_variance=False  corsini: variance with divisor n - 1            [--unbiased-variance]
+  normalize=None        scaling before curvature: paper (default), area (sqrt(area/4pi), does
+                        not drift under decimation), original (both in the original's frame)  [--normalize]
+  local=True            the local roughness difference: per level, the RMS over the original's
+                        vertices of D_L minus the processed D_L at the closest point, in
+                        ["roughness_distance"]["local"] (levels, rms, radii, rms_radii, global)  [--no-local]
   k=None                the constant of d_L = ln(|s'-s|/s + k) - ln(k); 1e-4  [-k]
   roughness=True        compute both profiles and d_L                      [--no-roughness]
   distance=True         compute the surface distance                       [--no-distance]
@@ -127,7 +132,8 @@ Raises FileNotFoundError / OSError for missing or unreadable files.
 constexpr const char* kProfileOptionsDoc = R"doc(
 Options (keyword-only, as `meshdiff profile`; None: the library's default):
   levels=None, radii=None, global_level=True, curvature=None, weighting=None,
-  measure=None, unbiased_variance=False, threads=None   (see compare());
+  measure=None, unbiased_variance=False, normalize=None (paper or area),
+  threads=None   (see compare());
   with radii (or "default": 0.0125 * 2**(k/2), k = 0..8) the dict also holds
   "radii", "sigma_radii" and "radius_details" (METHOD.md 5a); with
   measure="corsini" it is the dict of `meshdiff profile --measure corsini`.

@@ -97,6 +97,17 @@ COMPARE = [
         ok(["--weighting", "inverse-square"], dict(weighting="inverse-square")),
         value(["--weighting", "heavy"], dict(weighting="heavy")),
     ]),
+    Option("--normalize", "normalize", [
+        ok(["--normalize", "area"], dict(normalize="area")),
+        ok(["--normalize", "original", "--levels", "1,2"], dict(normalize="original", levels=[1, 2])),
+        value(["--normalize", "unit"], dict(normalize="unit")),
+        value(["--normalize", "area", "--measure", "corsini"], dict(normalize="area", measure="corsini"),
+              "corsini's angles take no scaling"),
+    ]),
+    Option("--no-local", "local", [
+        ok(["--no-local"], dict(local=False)),
+        type_(["--no-local=maybe"], dict(local="maybe")),
+    ]),
     Option("--measure", "measure", [
         ok(["--measure", "corsini", "--levels", "1,2"], dict(measure="corsini", levels=[1, 2])),
         value(["--measure", "bogus"], dict(measure="bogus")),
@@ -241,6 +252,10 @@ PROFILE = [
         value(["--curvature", "foo"], dict(curvature="foo")),
     ]),
     Option("--weighting", "weighting", [ok(["--weighting", "inverse-square"], dict(weighting="inverse-square"))]),
+    Option("--normalize", "normalize", [
+        ok(["--normalize", "area"], dict(normalize="area")),
+        value(["--normalize", "original"], dict(normalize="original"), "a profile has no original"),
+    ]),
     Option("--measure", "measure", [
         ok(["--measure", "corsini"], dict(measure="corsini")),
         value(["--measure", "corsini", "--radii", "0.1"], dict(measure="corsini", radii=[0.1])),
@@ -317,7 +332,7 @@ def test_every_option_is_in_the_table(cli):
     assert python_keywords(meshdiff.profile) == python_keywords(meshdiff.profile_file)
     passed = {o.flag for o in COMPARE if o.batch is True}
     assert cli_options(cli, "batch") == passed | set(BATCH_ONLY)
-    assert counts == {"compare": 32, "profile": 15}, counts  # the options covered, stated
+    assert counts == {"compare": 34, "profile": 16}, counts  # the options covered, stated
 
 
 CASES = [pytest.param("compare", o, c, id=f"compare {o.flag}: {c!r}") for o in COMPARE for c in o.cases] + [
@@ -415,7 +430,7 @@ def test_regression_batch_with_every_boolean_flag(cli, meshes, tmp_path):
     pairs = tmp_path / "pairs.csv"
     pairs.write_text(f"{a},{b},p1\n")
     flags = [o.flag for o in COMPARE if o.batch is True and o.flag.startswith("--no-")] + ["--unbiased-variance"]
-    assert len(flags) == 7
+    assert len(flags) == 8
     for flag in flags:
         extra = ["--measure", "corsini"] if flag == "--unbiased-variance" else []
         out = tmp_path / f"{flag}.jsonl"
