@@ -34,7 +34,9 @@ std::string py_spelling(const std::string& field)
         {"measure", "measure"},
         {"corsini_unbiased", "unbiased_variance"},
         {"profile.normalize", "normalize"},
+        {"profile.trim", "trim"},
         {"local", "local"},
+        {"local_trim", "local_trim"},
         {"k", "k"},
         {"roughness", "roughness"},
         {"distance", "distance"},
@@ -421,7 +423,9 @@ CompareOptions compare_options(const CompareKeywords& a)
     if (auto m = choice<RoughnessMeasure>(a.measure, "measure")) c.measure = *m;
     c.corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", c.corsini_unbiased);
     if (auto n = choice<NormalizeMethod>(a.normalize, "profile.normalize")) c.profile.normalize = *n;
+    if (auto t = number(a.trim, "profile.trim")) c.profile.trim = *t;
     c.local = flag(a.local, "local", c.local);
+    if (auto t = number(a.local_trim, "local_trim")) c.local_trim = *t;
     if (auto k = number(a.k, "k")) c.k = *k;
     c.roughness = flag(a.roughness, "roughness", c.roughness);
     c.distance = flag(a.distance, "distance", c.distance);
@@ -473,6 +477,7 @@ ProfileRequest profile_request(const ProfileKeywords& a)
     if (auto m = choice<RoughnessMeasure>(a.measure, "measure")) r.measure = *m;
     r.corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", r.corsini_unbiased);
     if (auto n = choice<NormalizeMethod>(a.normalize, "profile.normalize")) r.profile.normalize = *n;
+    if (auto t = number(a.trim, "profile.trim")) r.profile.trim = *t;
     r.json = output_path(a.json, "outputs.json");
     r.vertex_data = output_path(a.vertex_data, "outputs.vertex_data");
     if (auto c = number(a.color_range, "outputs.color_range")) r.color_range = *c;

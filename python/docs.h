@@ -68,9 +68,13 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
   unbiased_variance=False  corsini: variance with divisor n - 1            [--unbiased-variance]
   normalize=None        scaling before curvature: paper (default), area (sqrt(area/4pi), does
                         not drift under decimation), original (both in the original's frame)  [--normalize]
+  trim=None             trimmed sigma: the share (0..0.25) of vertices with the largest |D|
+                        left out at every level; None: 0, the paper's      [--trim]
   local=True            the local roughness difference: per level, the RMS over the original's
                         vertices of D_L minus the processed D_L at the closest point, in
                         ["roughness_distance"]["local"] (levels, rms, radii, rms_radii, global)  [--no-local]
+  local_trim=None       the share of the original's vertices with the largest |difference| left
+                        out of each local RMS (0..0.25); None: 0.05       [--local-trim]
   k=None                the constant of d_L = ln(|s'-s|/s + k) - ln(k); 1e-4  [-k]
   roughness=True        compute both profiles and d_L                      [--no-roughness]
   distance=True         compute the surface distance                       [--no-distance]
@@ -132,7 +136,7 @@ Raises FileNotFoundError / OSError for missing or unreadable files.
 constexpr const char* kProfileOptionsDoc = R"doc(
 Options (keyword-only, as `meshdiff profile`; None: the library's default):
   levels=None, radii=None, global_level=True, curvature=None, weighting=None,
-  measure=None, unbiased_variance=False, normalize=None (paper or area),
+  measure=None, unbiased_variance=False, normalize=None (paper or area), trim=None,
   threads=None   (see compare());
   with radii (or "default": 0.0125 * 2**(k/2), k = 0..8) the dict also holds
   "radii", "sigma_radii" and "radius_details" (METHOD.md 5a); with

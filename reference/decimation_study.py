@@ -44,8 +44,9 @@ def measures(report):
     """The measures of one comparison, by name (None where there is no number)."""
     out = {}
     sd = report["surface_distance"]
-    out["hausdorff"] = sd["hausdorff"]["upper"] if "upper" in sd["hausdorff"] else sd["hausdorff"]["value"]
-    out["rms_distance"] = max(sd["forward"]["rms"], sd["backward"]["rms"])
+    if sd:  # not with --no-distance
+        out["hausdorff"] = sd["hausdorff"]["upper"] if "upper" in sd["hausdorff"] else sd["hausdorff"]["value"]
+        out["rms_distance"] = max(sd["forward"]["rms"], sd["backward"]["rms"])
     rd = report["roughness_distance"]
     for L in LEVELS:
         i = rd["levels"].index(L)
@@ -71,6 +72,8 @@ def main():
     ap.add_argument("--decimators", default="openmesh,open3d")
     ap.add_argument("--normalize", default="paper,area,original")
     ap.add_argument("--radii", default="0.05,0.1,0.2")
+    ap.add_argument("--extra", default="", help="further options of every comparison, e.g. '--trim 0.01'")
+    ap.add_argument("--tag", default="", help="a name for this run's JSON files (with --extra)")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     rows = []
@@ -84,15 +87,16 @@ def main():
                 if not os.path.exists(dst):
                     DECIMATORS[dec](mesh, dst, ratio)
                 for norm in args.normalize.split(","):
-                    js = os.path.join(args.out, f"{name}_{dec}_{ratio:g}_{norm}.json")
-                    cmd = [args.meshdiff, mesh, dst, "--normalize", norm, "--radii", args.radii, "--json", js]
+                    js = os.path.join(args.out, f"{name}_{dec}_{ratio:g}_{norm}{args.tag}.json")
+                    cmd = [args.meshdiff, mesh, dst, "--normalize", norm, "--radii", args.radii, "--json", js,
+                           *args.extra.split()]
                     subprocess.run(cmd, check=True, capture_output=True)
                     with open(js) as f:
                         m = measures(json.load(f))
                     rows.append(dict(mesh=name, decimator=dec, ratio=ratio, normalize=norm, **m))
                     series.setdefault((name, dec, norm), []).append(m)
     keys = list(rows[0].keys())
-    with open(os.path.join(args.out, "decimation_study.csv"), "w", newline="") as f:
+    with open(os.path.join(args.out, f"decimation_study{args.tag}.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
         w.writeheader()
         w.writerows(rows)
@@ -108,7 +112,7 @@ def main():
             cells.append(f"{good}/{len(ss)}")
         lines.append(f"| {measure} | " + " | ".join(cells) + " |")
     table = "\n".join(lines)
-    with open(os.path.join(args.out, "decimation_study.md"), "w") as f:
+    with open(os.path.join(args.out, f"decimation_study{args.tag}.md"), "w") as f:
         f.write("Series whose measure grows strictly from 50 % to 5 % kept (ratios "
                 + ", ".join(f"{r:g}" for r in RATIOS) + "):\n\n" + table + "\n")
     print(table)

@@ -83,7 +83,7 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const LoadedMesh& b, const C
     // Over the original's vertices, against the processed surface (local_roughness.h).
     const ClosestPointIndex index(b.mesh);
     c.local_roughness = local_roughness_distance(a.mesh, *c.original_profile, b.mesh, *c.processed_profile, index,
-                                                 options.vertex_distances);
+                                                 options.local_trim, options.vertex_distances);
     if (!options.profile.keep_vertex_data)
         for (RoughnessProfile* p : {&*c.original_profile, &*c.processed_profile}) {
             p->H = {};
@@ -106,6 +106,10 @@ void validate(const CompareOptions& options)
         throw OptionError("corsini_unbiased", "needs {measure} corsini");
     if (options.measure == RoughnessMeasure::Corsini && options.profile.normalize != NormalizeMethod::Paper)
         throw OptionError("profile.normalize", "the dihedral angles of {measure} corsini do not depend on a scaling");
+    if (!(options.local_trim >= 0.0 && options.local_trim <= kMaxTrim))
+        throw OptionError("local_trim", fmt::format("{} is not a share in [0, {}]", options.local_trim, kMaxTrim));
+    if (options.measure == RoughnessMeasure::Corsini && options.profile.trim > 0.0)
+        throw OptionError("profile.trim", "trims sigma and the local difference, not {measure} corsini");
     if (options.measure == RoughnessMeasure::Corsini && !options.profile.radii.empty())
         throw OptionError("profile.radii", "metric levels are not defined for {measure} corsini");
     validate(options.profile);

@@ -49,7 +49,7 @@ TEST(LocalRoughness, ZeroForAMeshAgainstItself)
     o.radii = {0.2};
     const RoughnessProfile p = roughness_profile(m, o);
     const ClosestPointIndex index(m);
-    const LocalRoughnessDistance d = local_roughness_distance(m, p, m, p, index, true);
+    const LocalRoughnessDistance d = local_roughness_distance(m, p, m, p, index, 0.0, true);
     ASSERT_EQ(d.levels, (std::vector<int>{1, 2, 5}));
     for (std::size_t k = 0; k < d.levels.size(); ++k) {
         EXPECT_EQ(d.rms[k], 0.0) << d.levels[k];
@@ -71,7 +71,7 @@ TEST(LocalRoughness, EqualsABruteForcePoolOnSmallMeshes)
     const Mesh b = noisy_sphere(1, 0.01, 2).mesh;  // coarser: a "decimation"
     const RoughnessProfile pa = roughness_profile(a, with_data());
     const RoughnessProfile pb = roughness_profile(b, with_data());
-    const LocalRoughnessDistance d = local_roughness_distance(a, pa, b, pb, ClosestPointIndex(b), true);
+    const LocalRoughnessDistance d = local_roughness_distance(a, pa, b, pb, ClosestPointIndex(b), 0.0, true);
     ASSERT_EQ(d.levels.size(), 3u);
     for (std::size_t k = 0; k < 3; ++k) {
         double total = 0.0;
@@ -252,4 +252,62 @@ TEST(RoughnessDistance, NoDataIsNoNumber)
     bool warned = false;
     for (const auto& w : j["original"]["warnings"]) warned = warned || w.get<std::string>().find("radius 0.001") == 0;
     EXPECT_TRUE(warned);
+}
+
+// Trimmed sigma: the share of largest |D| left out, by count; nothing moves
+// without a trim.
+TEST(TrimmedSigma, LeavesOutTheLargestValues)
+{
+    const std::vector<double> D = {1.0, -2.0, std::nan(""), 3.0, -10.0};
+    std::size_t dropped = 0;
+    EXPECT_EQ(trimmed_rms(D, 0.0, nullptr, &dropped), std::sqrt((1.0 + 4.0 + 9.0 + 100.0) / 4.0));
+    EXPECT_EQ(dropped, 0u);
+    EXPECT_EQ(trimmed_rms(D, 0.25, nullptr, &dropped), std::sqrt((1.0 + 4.0 + 9.0) / 3.0));  // ceil(0.25 x 4) = 1
+    EXPECT_EQ(dropped, 1u);
+    EXPECT_EQ(trimmed_rms(D, 0.26, nullptr, &dropped), std::sqrt((1.0 + 4.0) / 2.0));  // ceil(1.04) = 2
+    const std::vector<double> w = {1.0, 1.0, 1.0, 3.0, 1.0};
+    EXPECT_NEAR(trimmed_rms(D, 0.25, &w), std::sqrt((1.0 + 4.0 + 27.0) / 5.0), 1e-15);
+    EXPECT_TRUE(std::isnan(trimmed_rms({std::nan("")}, 0.1)));
+
+    const Mesh m = noisy_sphere(3, 0.02, 7).mesh;
+    ProfileOptions o;
+    o.levels = {1, 4};
+    o.radii = {0.3};
+    const RoughnessProfile plain = roughness_profile(m, o);
+    EXPECT_EQ(plain.levels[0].trimmed, 0u);
+    o.trim = 0.05;
+    o.keep_vertex_data = true;
+    const RoughnessProfile t = roughness_profile(m, o);
+    for (std::size_t k = 0; k < 2; ++k) {
+        EXPECT_LT(t.levels[k].sigma, plain.levels[k].sigma);
+        EXPECT_EQ(t.levels[k].trimmed, std::size_t(std::ceil(0.05 * double(m.n_vertices()))));
+        EXPECT_EQ(t.levels[k].sigma, trimmed_rms(t.D[k], 0.05));
+        EXPECT_EQ(t.levels[k].top_share, plain.levels[k].top_share);  // the diagnostic stays on all vertices
+    }
+    EXPECT_LT(t.global.sigma, plain.global.sigma);
+    EXPECT_LT(t.radii[0].sigma, plain.radii[0].sigma);
+    o.trim = 0.3;
+    EXPECT_THROW(validate(o), OptionError);
+    o.trim = -0.01;
+    EXPECT_THROW(validate(o), OptionError);
+}
+
+TEST(LocalRoughness, TrimLeavesOutTheLargestDifferences)
+{
+    const Mesh a = noisy_sphere(2, 0.03, 1).mesh;
+    const Mesh b = noisy_sphere(1, 0.01, 2).mesh;
+    const RoughnessProfile pa = roughness_profile(a, with_data());
+    const RoughnessProfile pb = roughness_profile(b, with_data());
+    const ClosestPointIndex index(b);
+    const LocalRoughnessDistance all = local_roughness_distance(a, pa, b, pb, index, 0.0, true);
+    const LocalRoughnessDistance t = local_roughness_distance(a, pa, b, pb, index, 0.05);
+    EXPECT_EQ(t.trim, 0.05);
+    for (std::size_t k = 0; k < 3; ++k) {
+        EXPECT_EQ(t.rms[k], trimmed_rms(all.vertex[k], 0.05));
+        EXPECT_LT(t.rms[k], all.rms[k]);
+    }
+    EXPECT_THROW(local_roughness_distance(a, pa, b, pb, index, 0.3), OptionError);
+    CompareOptions o;
+    o.local_trim = -1.0;
+    EXPECT_THROW(validate(o), OptionError);
 }

@@ -24,8 +24,10 @@ std::string cli_spelling(const std::string& field)
         {"profile.curvature.method", "--curvature"},
         {"profile.curvature.weighting", "--weighting"},
         {"profile.normalize", "--normalize"},
+        {"profile.trim", "--trim"},
         {"measure", "--measure"},
         {"local", "--no-local"},
+        {"local_trim", "--local-trim"},
         {"corsini_unbiased", "--unbiased-variance"},
         {"k", "--k"},
         {"roughness", "--no-roughness"},
@@ -146,6 +148,11 @@ void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii, b
         "sqrt(area / 4 pi) = 1; does not drift under decimation), original (compare only: both meshes in the "
         "original's paper frame)",
         to_string(defaults.normalize));
+    add(sub, "--trim", o.trim,
+        fmt::format("trimmed sigma: leave out this share of the vertices with the largest |D| at every level, in "
+                    "[0, {:g}]; 0: the paper's sigma",
+                    kMaxTrim),
+        fmt::format("{:g}", defaults.trim), "NUMBER");
     o.levels.option->type_name("LIST");
     if (with_radii) o.radii.option->type_name("LIST");
     if (!with_measure) return;
@@ -163,6 +170,7 @@ ProfileOptions to_profile_options(const ProfileCliOptions& o, ProfileOptions def
     if (o.levels.given()) p.levels = parse_levels(o.levels.text);
     if (o.radii.given()) p.radii = parse_radii(o.radii.text);
     p.global = !o.no_global;
+    if (o.trim.given()) p.trim = parse_number("profile.trim", o.trim.text);
     if (o.normalize.given()) p.normalize = parse_enum_option<NormalizeMethod>("profile.normalize", o.normalize.text);
     if (o.curvature.given())
         p.curvature.method = parse_enum_option<CurvatureMethod>("profile.curvature.method", o.curvature.text);
@@ -188,6 +196,11 @@ void add_compare_options(CLI::App* sub, CompareCliOptions& o)
     sub->add_flag("--no-local", o.no_local,
                   "skip the local roughness difference (each processed vertex's D_L against the original's at the "
                   "closest point, RMS per level)");
+    add(sub, "--local-trim", o.local_trim,
+        fmt::format("share of the original's vertices with the largest |difference| left out of each local RMS, in "
+                    "[0, {:g}]",
+                    kMaxTrim),
+        fmt::format("{:g}", defaults.local_trim), "NUMBER");
     sub->add_flag("--no-distance", o.no_distance, "skip the surface distance half");
     o.samples.option = sub->add_option("-n,--samples", o.samples.text,
                                        "samples per direction (default: 10 x the larger face count, as Metro)");
@@ -232,6 +245,7 @@ CompareOptions to_compare_options(const CompareCliOptions& o)
     if (o.k.given()) c.k = parse_number("k", o.k.text);
     c.roughness = !o.no_roughness;
     c.local = !o.no_local;
+    if (o.local_trim.given()) c.local_trim = parse_number("local_trim", o.local_trim.text);
     c.distance = !o.no_distance;
     if (o.samples.given()) c.sampling.samples = parse_whole_number("sampling.samples", o.samples.text);
     if (o.density.given()) c.sampling.density = parse_number("sampling.density", o.density.text);

@@ -33,7 +33,7 @@ struct Given
 //! Options of the roughness profile shared by profile, compare and batch.
 struct ProfileCliOptions
 {
-    Given levels, radii, curvature, weighting, measure, normalize;
+    Given levels, radii, curvature, weighting, measure, normalize, trim;
     bool no_global = false;
     bool unbiased_variance = false;
 };
@@ -55,7 +55,7 @@ RoughnessMeasure to_measure(const ProfileCliOptions& o);
 struct CompareCliOptions
 {
     ProfileCliOptions profile;
-    Given k, samples, density, face_sampling, seed, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
+    Given k, local_trim, samples, density, face_sampling, seed, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
         hausdorff_budget, fscore, histogram;
     bool no_roughness = false;
     bool no_local = false;

@@ -40,6 +40,13 @@ struct CompareOptions
     //! (local_roughness.h): each processed vertex's D_L against the
     //! original's at the closest point, pooled as an RMS per level.
     bool local = true;
+    //! The share of the original's vertices with the largest |difference|
+    //! left out of each local RMS, in [0, kMaxTrim]: a few vertices (open
+    //! boundaries, sharp CAD edges, curvature outliers) otherwise decide it.
+    //! The default is the decimation study's (reference/README.md): with 0.05
+    //! the local RMS grew with decimation on 9 of 12 series at level 1, with 0
+    //! on 2.
+    double local_trim = 0.05;
     bool distance = true;        //!< compute the surface distance
     SamplingOptions sampling{};  //!< surface sampling (Metro defaults)
     //! Certify both one-sided Hausdorff distances (hausdorff.h) with these

@@ -68,6 +68,7 @@ nlohmann::json local_roughness_json(const LocalRoughnessDistance& d)
     j["rms_radii"] = numbers(d.rms_radii);
     j["global"] = d.has_global && std::isfinite(d.global) ? nlohmann::json(d.global) : nlohmann::json(nullptr);
     j["vertices"] = d.vertices;
+    j["trim"] = d.trim;
     return j;
 }
 
@@ -275,8 +276,12 @@ std::string comparison_text(const Comparison& c)
                              detail::scale_meaning(pa.normalization.method));
         s += fmt::format("  d_L = ln(|s' - s| / s + k) - ln(k), k = {:g}; change = (s' - s) / s\n", c.roughness->k);
         const LocalRoughnessDistance* local = c.local_roughness ? &*c.local_roughness : nullptr;
+        if (pa.trim > 0.0)
+            s += fmt::format("  sigma trimmed: the {:g}% of vertices with the largest |D| left out\n", 100.0 * pa.trim);
         if (local)
-            s += "  local = RMS over the original's vertices of D_L minus the processed D'_L at the closest point\n";
+            s += fmt::format(
+                "  local = RMS over the original's vertices of D_L minus the processed D'_L at the closest point{}\n",
+                local->trim > 0.0 ? fmt::format(" (the {:g}% largest left out)", 100.0 * local->trim) : "");
         auto local_at = [&](const std::vector<int>& keys, const std::vector<double>& rms, int key) {
             for (std::size_t i = 0; i < keys.size(); ++i)
                 if (keys[i] == key) return rms[i];

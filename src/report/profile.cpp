@@ -62,12 +62,14 @@ nlohmann::json sigma_json(const LevelRoughness& l)
 }
 nlohmann::json level_json(const LevelRoughness& l)
 {
-    return {{"level", l.level},
-            {"sigma", sigma_json(l)},
-            {"vertices_used", l.vertices_used},
-            {"no_neighborhood", l.no_neighborhood},
-            {"top_share", number_or_null(l.top_share)},
-            {"worst_vertices", l.worst_vertices}};
+    nlohmann::json j = {{"level", l.level},
+                        {"sigma", sigma_json(l)},
+                        {"vertices_used", l.vertices_used},
+                        {"no_neighborhood", l.no_neighborhood},
+                        {"top_share", number_or_null(l.top_share)},
+                        {"worst_vertices", l.worst_vertices}};
+    if (l.trimmed) j["trimmed"] = l.trimmed;  // only with a trim: other reports are unchanged
+    return j;
 }
 nlohmann::json radius_json(const LevelRoughness& l)
 {
@@ -116,6 +118,9 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
     j["level_details"] = details;
     if (p.has_global) j["global"] = level_json(p.global);
     j["neighborhood"] = "N_L(i) = vertices within L edges of i, i excluded; global: all other vertices";
+    if (p.trim > 0.0)
+        j["trim"] = {{"share", p.trim},
+                     {"definition", "sigma without the ceil(share x count) vertices of largest |D| at each level"}};
     if (!p.radii.empty()) {  // only then: reports without metric levels are unchanged
         nlohmann::json radii = nlohmann::json::array(), sigma_r = nlohmann::json::array(),
                        details_r = nlohmann::json::array();
@@ -265,6 +270,9 @@ std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
                          ? ""
                          : fmt::format(" (row weighting {})", to_string(p.curvature_options.weighting)),
                      p.curvature_undefined, p.curvature_widened, p.curvature_normal_rows_dropped, p.curvature_fallback);
+    if (p.trim > 0.0)
+        s += fmt::format("trim       sigma without the {:g}% of vertices with the largest |D| at each level\n",
+                         100.0 * p.trim);
     s += fmt::format("\n   level        sigma     used   no-nbhd {:>9}\n",
                      fmt::format("top{:g}%", 100.0 * p.outlier_fraction));
     auto row = [&](const std::string& name, const LevelRoughness& l) {

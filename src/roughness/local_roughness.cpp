@@ -55,26 +55,25 @@ struct Pooled
     std::size_t used = 0;
 };
 
-// The RMS over the vertices j of D(j) - D'(cp(j)); the per-vertex
-// differences into \p out when it is not null.
+// The RMS over the vertices j of D(j) - D'(cp(j)), without the share \p trim
+// of largest magnitude (trimmed_rms()); the per-vertex differences into \p out
+// when it is not null.
 Pooled pool(const Mesh& other, const std::vector<Anchor>& at, const std::vector<double>& D,
-            const std::vector<double>& D_other, std::vector<double>* out)
+            const std::vector<double>& D_other, double trim, std::vector<double>* out)
 {
-    if (out) out->assign(D.size(), kNaN);
-    double total = 0.0;  // in vertex order: deterministic
+    std::vector<double> diff(D.size(), kNaN);
     std::size_t used = 0;
     for (std::size_t j = 0; j < D.size(); ++j) {
         if (std::isnan(D[j])) continue;
         const double d_other = interpolate(D_other, other.faces[at[j].face], at[j].w);
         if (std::isnan(d_other)) continue;
-        const double diff = D[j] - d_other;
-        total += diff * diff;
+        diff[j] = D[j] - d_other;
         ++used;
-        if (out) (*out)[j] = diff;
     }
     Pooled p;
     p.used = used;
-    if (used) p.rms = std::sqrt(total / double(used));
+    if (used) p.rms = trimmed_rms(diff, trim);
+    if (out) *out = std::move(diff);
     return p;
 }
 
@@ -100,7 +99,7 @@ Vec3 barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
 }
 
 LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const RoughnessProfile& pa, const Mesh& other,
-                                                const RoughnessProfile& pb, const ClosestPointIndex& index,
+                                                const RoughnessProfile& pb, const ClosestPointIndex& index, double trim,
                                                 bool keep_vertex_data)
 {
     if (pa.D.size() != pa.levels.size() || pb.D.size() != pb.levels.size() || pa.D_radii.size() != pa.radii.size() ||
@@ -111,14 +110,17 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
         throw InvalidArgumentError(
             fmt::format("local roughness: profiles of {} and {} vertices for meshes of {} and {}", pa.vertices,
                         pb.vertices, mesh.n_vertices(), other.n_vertices()));
+    if (!(trim >= 0.0 && trim <= kMaxTrim))
+        throw OptionError("local_trim", fmt::format("{} is not a share in [0, {}]", trim, kMaxTrim));
     LocalRoughnessDistance r;
     r.vertices = mesh.n_vertices();
+    r.trim = trim;
     const std::vector<Anchor> at = anchors(other, mesh, index);
     for (std::size_t ia = 0; ia < pa.levels.size(); ++ia)
         for (std::size_t ib = 0; ib < pb.levels.size(); ++ib) {
             if (pa.levels[ia].level != pb.levels[ib].level) continue;
             std::vector<double> map;
-            const Pooled p = pool(other, at, pa.D[ia], pb.D[ib], keep_vertex_data ? &map : nullptr);
+            const Pooled p = pool(other, at, pa.D[ia], pb.D[ib], trim, keep_vertex_data ? &map : nullptr);
             r.levels.push_back(pa.levels[ia].level);
             r.rms.push_back(p.rms);
             r.used.push_back(p.used);
@@ -127,13 +129,13 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
         }
     if (pa.has_global && pb.has_global) {
         r.has_global = true;
-        r.global = pool(other, at, pa.D_global, pb.D_global, nullptr).rms;
+        r.global = pool(other, at, pa.D_global, pb.D_global, trim, nullptr).rms;
     }
     for (std::size_t ia = 0; ia < pa.radii.size(); ++ia)
         for (std::size_t ib = 0; ib < pb.radii.size(); ++ib) {
             if (pa.radii[ia].radius != pb.radii[ib].radius) continue;
             r.radii.push_back(pa.radii[ia].radius);
-            r.rms_radii.push_back(pool(other, at, pa.D_radii[ia], pb.D_radii[ib], nullptr).rms);
+            r.rms_radii.push_back(pool(other, at, pa.D_radii[ia], pb.D_radii[ib], trim, nullptr).rms);
             break;
         }
     return r;

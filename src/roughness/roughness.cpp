@@ -40,6 +40,8 @@ void validate(const ProfileOptions& options)
         throw OptionError("profile.curvature.weighting", "not a known row weighting");
     if (!(options.outlier_fraction > 0.0 && options.outlier_fraction <= 1.0))
         throw OptionError("profile.outlier_fraction", "must be in (0, 1]");
+    if (!(options.trim >= 0.0 && options.trim <= kMaxTrim))
+        throw OptionError("profile.trim", fmt::format("{} is not a share in [0, {}]", options.trim, kMaxTrim));
 }
 
 LevelRoughness level_roughness(int level, const std::vector<double>& D, double outlier_fraction)
@@ -86,7 +88,40 @@ LevelRoughness level_roughness(int level, const std::vector<double>& D, double o
     return r;
 }
 
+double trimmed_rms(const std::vector<double>& D, double trim, const std::vector<double>* weights, std::size_t* dropped)
+{
+    // The kept vertices: all but the k of largest |D| (ties by id).
+    std::vector<std::uint32_t> ids;
+    ids.reserve(D.size());
+    for (std::size_t i = 0; i < D.size(); ++i)
+        if (!std::isnan(D[i])) ids.push_back(std::uint32_t(i));
+    const auto k = std::min(ids.size(), std::size_t(std::ceil(trim * double(ids.size()))));
+    if (dropped) *dropped = k;
+    auto worse = [&](std::uint32_t a, std::uint32_t b) {
+        const double da = std::abs(D[a]), db = std::abs(D[b]);
+        return da != db ? da > db : a < b;
+    };
+    if (k > 0) std::nth_element(ids.begin(), ids.begin() + std::ptrdiff_t(k - 1), ids.end(), worse);
+    std::sort(ids.begin() + std::ptrdiff_t(k), ids.end());  // the sums in vertex order: deterministic
+    double total = 0.0, wtotal = 0.0;
+    for (std::size_t j = k; j < ids.size(); ++j) {
+        const double w = weights ? (*weights)[ids[j]] : 1.0;
+        total += w * D[ids[j]] * D[ids[j]];
+        wtotal += w;
+    }
+    return wtotal > 0.0 ? std::sqrt(total / wtotal) : std::numeric_limits<double>::quiet_NaN();
+}
+
 namespace {
+
+// sigma of \p l trimmed as \p options ask (nothing changes without a trim).
+void apply_trim(LevelRoughness& l, const std::vector<double>& D, const ProfileOptions& options,
+                const std::vector<double>* weights = nullptr)
+{
+    if (!(options.trim > 0.0) || l.vertices_used == 0) return;
+    const double s = trimmed_rms(D, options.trim, weights, &l.trimmed);
+    l.sigma = std::isnan(s) ? 0.0 : s;
+}
 
 // Levels and global level from H on the normalised mesh; fills p.
 void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj, std::vector<double> H,
@@ -94,6 +129,7 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
 {
     const std::size_t n = H.size();
     p.outlier_fraction = options.outlier_fraction;
+    p.trim = options.trim;
     const DiskMeans means = disk_means(unit, adj, H, options.levels);
     // Levels are independent: one per thread, each result in its own slot.
     const std::size_t n_levels = options.levels.size();
@@ -107,6 +143,7 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
             const auto li = std::size_t(il);
             for (std::size_t i = 0; i < n; ++i) Dl[i] = H[i] - means.mean[li][i];  // NaN propagates
             LevelRoughness lr = level_roughness(options.levels[li], Dl, options.outlier_fraction);
+            apply_trim(lr, Dl, options);
             lr.no_neighborhood = (n - undefined) - lr.vertices_used;
             p.levels[li] = std::move(lr);
             if (options.keep_vertex_data) p.D[li] = Dl;
@@ -127,6 +164,7 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
             D[i] = (std::isnan(H[i]) || m < 2) ? std::numeric_limits<double>::quiet_NaN()
                                                : H[i] - double((sum - H[i]) / (long double)(m - 1));
         p.global = level_roughness(0, D, options.outlier_fraction);
+        apply_trim(p.global, D, options);
         p.global.no_neighborhood = (n - undefined) - p.global.vertices_used;
         if (options.keep_vertex_data) p.D_global = D;
     }
@@ -139,6 +177,7 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
         for (std::size_t k = 0; k < options.radii.size(); ++k) {
             for (std::size_t i = 0; i < n; ++i) D[i] = H[i] - balls.mean[k][i];  // NaN propagates
             LevelRoughness lr = weighted_level_roughness(options.radii[k], D, area, options.outlier_fraction);
+            apply_trim(lr, D, options, &area);
             lr.no_neighborhood = (n - undefined) - lr.vertices_used;
             p.radii[k] = std::move(lr);
             if (options.keep_vertex_data) p.D_radii[k] = D;

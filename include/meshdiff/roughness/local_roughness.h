@@ -40,6 +40,7 @@ struct LocalRoughnessDistance
     bool has_global = false;        //!< both profiles have the global level
     double global = 0.0;            //!< local_G (NaN: no data)
     std::size_t vertices = 0;       //!< vertices pooled over (of the first mesh)
+    double trim = 0.0;              //!< the share left out of each RMS, as used
     std::vector<std::size_t> used;  //!< vertices with both values, aligned with levels
     //! With keep_vertex_data: D_L(i) - D'_L(cp(i)) per level (aligned with
     //! levels) and vertex i of the first mesh, NaN where either is undefined.
@@ -49,12 +50,14 @@ struct LocalRoughnessDistance
 //! The local roughness difference of the vertices of \p mesh against the
 //! surface of \p other. Both profiles must carry their per-vertex D
 //! (ProfileOptions::keep_vertex_data); \p other_index is the closest-point
-//! index of \p other.
+//! index of \p other. \p trim: the share of the vertices with the largest
+//! |difference| left out of each RMS (trimmed_rms()), in [0, kMaxTrim].
 //! \throw InvalidArgumentError if a profile has no per-vertex D or a mesh
 //!        does not match its profile.
 LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const RoughnessProfile& profile, const Mesh& other,
                                                 const RoughnessProfile& other_profile,
-                                                const ClosestPointIndex& other_index, bool keep_vertex_data = false);
+                                                const ClosestPointIndex& other_index, double trim = 0.0,
+                                                bool keep_vertex_data = false);
 
 //! Barycentric coordinates of \p p (a point of the triangle's plane) in
 //! triangle (a, b, c); for a degenerate triangle, 1 at the corner nearest p.

@@ -34,6 +34,9 @@ constexpr int kMaxLevel = 100'000;
 //! neighbourhood warns (sigma then speaks for the others only).
 constexpr double kSparseNeighbourhoodShare = 0.1;
 
+//! The largest share ProfileOptions::trim may leave out.
+constexpr double kMaxTrim = 0.25;
+
 struct ProfileOptions
 {
     std::vector<int> levels = default_levels();  //!< ring levels, each >= 1, in the order reported
@@ -45,6 +48,12 @@ struct ProfileOptions
     CurvatureOptions curvature{};     //!< estimator of H
     bool keep_vertex_data = false;    //!< keep H and D per vertex in the result
     double outlier_fraction = 0.001;  //!< share of vertices in the top-|D| diagnostic
+    //! Trimmed sigma: the share of the vertices with the largest |D| left out
+    //! of sigma at every level (ceil(trim x count) of them), so that a few
+    //! bad vertices cannot decide it; in [0, kMaxTrim]. 0 (the default): the
+    //! paper's sigma over all vertices. The local roughness difference of a
+    //! comparison is trimmed by the same share.
+    double trim = 0.0;
     //! Metric levels (metric_levels.h, METHOD.md section 5a): radii on the
     //! normalised mesh, each finite and > 0, in the order reported. Empty by
     //! default (default_radii() is what `--radii default` asks for).
@@ -68,6 +77,7 @@ struct LevelRoughness
     //! well-spread roughness; above 0.5 means a few vertices dominate sigma.
     double top_share = 0.0;
     std::vector<std::uint32_t> worst_vertices;  //!< the ids of those vertices, largest |D| first (at most 10)
+    std::size_t trimmed = 0;                    //!< vertices left out of sigma by ProfileOptions::trim
 };
 
 struct RoughnessProfile
@@ -82,6 +92,7 @@ struct RoughnessProfile
     std::size_t curvature_capped = 0;                      //!< 2-ring neighbourhoods capped (CurvatureField::capped)
     std::vector<std::uint32_t> curvature_capped_vertices;  //!< the lowest ids of those (at most 10)
     double outlier_fraction = 0.001;                       //!< ProfileOptions::outlier_fraction as used (top_share)
+    double trim = 0.0;                                     //!< ProfileOptions::trim as used
     std::vector<LevelRoughness> levels;                    //!< in the order of ProfileOptions::levels
     bool has_global = false;
     LevelRoughness global;  //!< level 0
@@ -146,5 +157,12 @@ ExactProfile exact_profile(const Mesh& mesh, const std::vector<double>& exact_H,
 //! sigma of one level computed from D values (NaN skipped), with the counts
 //! and the outlier diagnostic. Exposed for tests and for other D sources.
 LevelRoughness level_roughness(int level, const std::vector<double>& D, double outlier_fraction = 0.001);
+
+//! The RMS of the values of \p D (NaN skipped) without the ceil(trim x count)
+//! of largest magnitude, weighted by \p weights when given (then
+//! sqrt(sum w D^2 / sum w) over the vertices kept); NaN if none is kept.
+//! \param dropped set to the number left out
+double trimmed_rms(const std::vector<double>& D, double trim, const std::vector<double>* weights = nullptr,
+                   std::size_t* dropped = nullptr);
 
 }  // namespace meshdiff
