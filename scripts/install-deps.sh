@@ -15,7 +15,10 @@ pkgs=(build-essential cmake pkg-config
       # OpenMesh's command-line decimater for examples/evaluate_decimation.py.
       pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib libopenmesh-apps
       # The fuzzing of the readers (scripts/fuzz.sh): clang with libFuzzer and its OpenMP runtime.
-      clang libclang-rt-14-dev libomp-dev)
+      clang libclang-rt-14-dev libomp-dev
+      # The HTML report: three.js with its OrbitControls, inlined at build time (CMakeLists.txt), and its
+      # test in a real browser (tests/html_browser_test.py: headless chromium driven by selenium, PIL).
+      libjs-three chromium chromium-driver python3-selenium python3-pil)
 if [[ "${1:-}" == "--reference" ]]; then
     pkgs+=(meshlab xvfb xauth gnuplot-nox hyperfine)
 fi

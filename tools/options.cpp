@@ -47,6 +47,7 @@ std::string cli_spelling(const std::string& field)
         {"outputs.distance_map_original", "--distance-map-original"},
         {"outputs.distance_maps", "--distance-maps"},
         {"outputs.samples_out", "--samples-out"},
+        {"outputs.html", "--html"},
         {"outputs.color_range", "--color-range"},
         {"outputs.vertex_data", "--vertex-data"},
         {"outputs.exact", "--exact"},
@@ -257,6 +258,9 @@ void add_compare_output_options(CLI::App* sub, CompareOutputCliOptions& o)
     sub->add_option("--samples-out", out.samples_out,
                     "write the samples of both directions with their distances as a binary PLY point cloud "
                     "(x y z distance signed_distance kind direction face)");
+    sub->add_option("--html", out.html,
+                    "write the HTML report to FILE: one self-contained page (no network) with the summary, plots and "
+                    "both meshes in 3D coloured by distance or roughness D_L (docs/cli.md)");
     sub->add_option("--color-range", o.color_range, "fix the distance colour range: MIN MAX")->expected(2);
 }
 

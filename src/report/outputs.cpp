@@ -6,6 +6,7 @@
 #include "meshdiff/io/facts.h"
 #include "meshdiff/io/output_file.h"
 #include "meshdiff/options.h"
+#include "meshdiff/report/html.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/text.h"
 #include "meshdiff/report/vertex_maps.h"
@@ -73,10 +74,12 @@ void validate(const CompareOutputs& o, const CompareOptions& options, const std:
         if (!processed_map.empty()) throw OptionError(processed_field, "needs the surface distance");
         if (!original_map.empty()) throw OptionError(original_field, "needs the surface distance");
     }
+    if (o.html == "-") throw OptionError("outputs.html", "is a file: '-' (standard output) is not offered");
     check_targets({{"outputs.json", o.json},
                    {processed_field, processed_map},
                    {original_field, original_map},
-                   {"outputs.samples_out", o.samples_out}},
+                   {"outputs.samples_out", o.samples_out},
+                   {"outputs.html", o.html}},
                   inputs);
 }
 
@@ -85,6 +88,11 @@ CompareOptions with_outputs(CompareOptions options, const CompareOutputs& o)
     const auto [original_map, processed_map] = map_paths(o);
     options.vertex_distances = !original_map.empty() || !processed_map.empty();
     options.keep_samples = !o.samples_out.empty();
+    if (!o.html.empty()) {
+        options.vertex_distances = options.distance;
+        options.profile.keep_vertex_data = true;
+        if (options.summary.histogram_bins == 0) options.summary.histogram_bins = kHtmlHistogramBins;
+    }
     return options;
 }
 
@@ -110,6 +118,13 @@ std::string write_outputs(const Comparison& c, const LoadedMesh& original, const
     if (!o.samples_out.empty())
         write_sample_cloud(o.samples_out, original.mesh, c.forward_samples, processed.mesh, c.backward_samples,
                            {"original " + original_name, "processed " + processed_name});
+    if (!o.html.empty()) {
+        HtmlOptions html;
+        html.command = o.command;
+        html.color_range = o.color_range;
+        write_html_file(o.html, comparison_html(c, original.mesh, processed.mesh, comparison_json(c), html));
+        legend += fmt::format("HTML report: {}\n", o.html);
+    }
     return legend;
 }
 

@@ -30,6 +30,13 @@ struct CompareOutputs
     std::string distance_map_original;  //!< the original with its distances to the processed mesh (PLY)
     std::string distance_maps;          //!< prefix of both: PREFIX_original.ply, PREFIX_processed.ply
     std::string samples_out;            //!< both directions' samples with their distances (PLY point cloud)
+    //! The HTML report (html.h): one self-contained page with the summary, the
+    //! plots and both meshes in 3D coloured by their distances and roughness.
+    //! It makes the comparison keep its per-vertex distances and D_L, and
+    //! histograms of HtmlOptions's bins unless summary.histogram_bins is set
+    //! (the JSON report then carries them too).
+    std::string html;
+    std::string command;  //!< the command line (or call) the HTML report shows
     //! The colour range [MIN, MAX] of the distance maps, MIN < MAX, both
     //! finite; unset: [0, the largest distance] (of both maps when both are
     //! written).
@@ -46,14 +53,18 @@ std::pair<std::string, std::string> map_paths(const CompareOutputs& o);
 //! \throw OptionError naming the field.
 void validate(const CompareOutputs& o, const CompareOptions& options, const std::vector<std::string>& inputs);
 
-//! \p options with what \p o needs computed (vertex distances for maps, the
-//! samples for samples_out).
+//! Histogram bins of the HTML report when the options ask for none.
+constexpr std::size_t kHtmlHistogramBins = 40;
+
+//! \p options with what \p o needs computed (vertex distances for maps and
+//! the HTML report, the samples for samples_out; for the HTML report also the
+//! per-vertex D_L and, when none are asked, kHtmlHistogramBins histogram bins).
 CompareOptions with_outputs(CompareOptions options, const CompareOutputs& o);
 
-//! Writes the maps and the sample cloud of \p c (made with with_outputs())
-//! named in \p o, and returns the lines that name them for the text report.
-//! \p original_name / \p processed_name name the inputs in the files' comments.
-//! Not the JSON (write_json_file()).
+//! Writes the maps, the sample cloud and the HTML report of \p c (made with
+//! with_outputs()) named in \p o, and returns the lines that name them for
+//! the text report. \p original_name / \p processed_name name the inputs in
+//! the files' comments. Not the JSON (write_json_file()).
 std::string write_outputs(const Comparison& c, const LoadedMesh& original, const LoadedMesh& processed,
                           const CompareOutputs& o, const std::string& original_name, const std::string& processed_name);
 
