@@ -54,6 +54,7 @@ std::string py_spelling(const std::string& field)
         {"outputs.distance_map_original", "distance_map_original"},
         {"outputs.distance_maps", "distance_maps"},
         {"outputs.samples_out", "samples_out"},
+        {"outputs.html", "html"},
         {"outputs.color_range", "color_range"},
         {"outputs.vertex_data", "vertex_data"},
         {"outputs.exact", "exact"},
@@ -440,6 +441,7 @@ CompareOutputs compare_outputs(const CompareKeywords& a)
     o.distance_map_original = output_path(a.distance_map_original, "outputs.distance_map_original");
     o.distance_maps = output_path(a.distance_maps, "outputs.distance_maps");
     o.samples_out = output_path(a.samples_out, "outputs.samples_out");
+    o.html = output_path(a.html, "outputs.html");
     if (!a.color_range.is_none()) {
         const std::string expected = "a pair of numbers (MIN, MAX)";
         const std::vector<double> r = numbers_arg(a.color_range, "outputs.color_range", expected, 3);

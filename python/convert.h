@@ -185,7 +185,7 @@ struct CompareKeywords
     py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance, k, roughness, distance,
         samples, density, face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff,
         hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore, histogram;
-    py::object json, distance_map, distance_map_original, distance_maps, samples_out, color_range;
+    py::object json, distance_map, distance_map_original, distance_maps, samples_out, html, color_range;
     py::object threads;
 };
 

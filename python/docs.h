@@ -89,6 +89,7 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
   distance_map=None, distance_map_original=None, distance_maps=None
                         write distance maps (PLY), as the CLI              [--distance-map, ...]
   samples_out=None      write both directions' samples (PLY point cloud)   [--samples-out]
+  html=None             write the HTML report (one self-contained page)    [--html]
   color_range=None      (MIN, MAX) of the maps' colours                    [--color-range]
   threads=None          OpenMP threads; None or 0: all cores               [--threads]
 )doc";

@@ -55,9 +55,10 @@ py::object py_read_mesh(const py::object& path_obj, bool report)
 // compare_meshes() with the outputs \p a asks for, as `meshdiff compare` runs it.
 py::dict run_compare(const CompareKeywords& a, const std::function<std::pair<LoadedMesh, LoadedMesh>()>& load,
                      const std::string& original_name, const std::string& processed_name,
-                     const std::vector<std::string>& inputs)
+                     const std::vector<std::string>& inputs, const std::string& command)
 {
-    const CompareOutputs outputs = compare_outputs(a);
+    CompareOutputs outputs = compare_outputs(a);
+    outputs.command = command;  // shown by the HTML report
     const CompareOptions checked = compare_options(a);
     validate(outputs, checked, inputs);
     const CompareOptions options = with_outputs(checked, outputs);
@@ -81,13 +82,20 @@ py::dict py_compare(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V
 {
     auto meshes = std::make_shared<std::pair<LoadedMesh, LoadedMesh>>(mesh_or_cloud_from(V1, F1, "V1", "F1"),
                                                                       mesh_or_cloud_from(V2, F2, "V2", "F2"));
-    return run_compare(a, [meshes] { return std::move(*meshes); }, "<array V1>", "<array V2>", {});
+    return run_compare(
+        a, [meshes] { return std::move(*meshes); }, "<array V1>", "<array V2>", {},
+        "meshdiff.compare(V1, F1, V2, F2, ...) (Python)");
 }
 
 py::dict py_compare_files(Obj original, Obj processed, const CompareKeywords& a)
 {
     const std::string pa = path_from(original, "original"), pb = path_from(processed, "processed");
-    return run_compare(a, [&] { return std::pair{read_file(pa, true), read_file(pb, true)}; }, pa, pb, {pa, pb});
+    return run_compare(
+        a,
+        [&] {
+            return std::pair{read_file(pa, true), read_file(pb, true)};
+        },
+        pa, pb, {pa, pb}, "meshdiff.compare_files('" + pa + "', '" + pb + "', ...) (Python)");
 }
 
 py::dict run_profile(const ProfileKeywords& a, const std::function<LoadedMesh()>& load,
@@ -279,8 +287,8 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
                                  Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples, Obj face_samples,
                                  Obj hausdorff, Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance,
                                  Obj hausdorff_budget, Obj fscore, Obj histogram, Obj json, Obj distance_map,
-                                 Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj color_range,
-                                 Obj threads)
+                                 Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj html,
+                                 Obj color_range, Obj threads)
 {
     CompareKeywords kw;
     kw.levels = levels;
@@ -311,6 +319,7 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
     kw.distance_map_original = distance_map_original;
     kw.distance_maps = distance_maps;
     kw.samples_out = samples_out;
+    kw.html = html;
     kw.color_range = color_range;
     kw.threads = threads;
     return kw;
@@ -383,7 +392,8 @@ void def_compare_like(py::module_& m, const char* name, F&& f, const std::string
           py::arg("hausdorff_budget") = py::none(), py::arg("fscore") = py::none(), py::arg("histogram") = py::none(),
           py::arg("json") = py::none(), py::arg("distance_map") = py::none(),
           py::arg("distance_map_original") = py::none(), py::arg("distance_maps") = py::none(),
-          py::arg("samples_out") = py::none(), py::arg("color_range") = py::none(), py::arg("threads") = py::none());
+          py::arg("samples_out") = py::none(), py::arg("html") = py::none(), py::arg("color_range") = py::none(),
+          py::arg("threads") = py::none());
 }
 
 // compare() and compare_files().
@@ -398,14 +408,14 @@ void def_compare(py::module_& m)
            Obj distance, Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples,
            Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance, Obj hausdorff_budget,
            Obj fscore, Obj histogram, Obj json, Obj distance_map, Obj distance_map_original, Obj distance_maps,
-           Obj samples_out, Obj color_range, Obj threads) {
+           Obj samples_out, Obj html, Obj color_range, Obj threads) {
             return py_compare(
                 V1, F1, V2, F2,
                 compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance, k,
                                  roughness, distance, samples, density, face_sampling, seed, vertex_samples,
                                  edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
                                  hausdorff_budget, fscore, histogram, json, distance_map, distance_map_original,
-                                 distance_maps, samples_out, color_range, threads));
+                                 distance_maps, samples_out, html, color_range, threads));
         },
         compare_doc, py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"));
     def_compare_like(
@@ -414,15 +424,15 @@ void def_compare(py::module_& m)
            Obj measure, Obj unbiased_variance, Obj k, Obj roughness, Obj distance, Obj samples, Obj density,
            Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples, Obj face_samples, Obj hausdorff,
            Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance, Obj hausdorff_budget, Obj fscore, Obj histogram,
-           Obj json, Obj distance_map, Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj color_range,
-           Obj threads) {
+           Obj json, Obj distance_map, Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj html,
+           Obj color_range, Obj threads) {
             return py_compare_files(
                 original, processed,
                 compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance, k,
                                  roughness, distance, samples, density, face_sampling, seed, vertex_samples,
                                  edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
                                  hausdorff_budget, fscore, histogram, json, distance_map, distance_map_original,
-                                 distance_maps, samples_out, color_range, threads));
+                                 distance_maps, samples_out, html, color_range, threads));
         },
         compare_files_doc, py::arg("original"), py::arg("processed"));
 }
