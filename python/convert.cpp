@@ -442,8 +442,10 @@ CompareOutputs compare_outputs(const CompareKeywords& a)
     o.distance_maps = output_path(a.distance_maps, "outputs.distance_maps");
     o.samples_out = output_path(a.samples_out, "outputs.samples_out");
     o.html = output_path(a.html, "outputs.html");
-    if (!a.color_range.is_none()) {
-        const std::string expected = "a pair of numbers (MIN, MAX)";
+    if (py::isinstance<py::str>(a.color_range)) {
+        parse_color_range(a.color_range.cast<std::string>(), o);
+    } else if (!a.color_range.is_none()) {
+        const std::string expected = "a pair of numbers (MIN, MAX), or 'max', 'pNN', 'LO:HI'";
         const std::vector<double> r = numbers_arg(a.color_range, "outputs.color_range", expected, 3);
         if (r.size() != 2) type_error("outputs.color_range", expected, a.color_range);
         o.color_range = std::pair{r[0], r[1]};

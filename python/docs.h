@@ -90,7 +90,8 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
                         write distance maps (PLY), as the CLI              [--distance-map, ...]
   samples_out=None      write both directions' samples (PLY point cloud)   [--samples-out]
   html=None             write the HTML report (one self-contained page)    [--html]
-  color_range=None      (MIN, MAX) of the maps' colours                    [--color-range]
+  color_range=None      (MIN, MAX), 'LO:HI', 'max' or 'pNN' (percentile)   [--color-range]
+                        of the distance colours (maps: max, html: p99)
   threads=None          OpenMP threads; None or 0: all cores               [--threads]
 )doc";
 

@@ -3,6 +3,7 @@
 #include "meshdiff/error.h"
 #include "meshdiff/io/output_file.h"
 #include "meshdiff/report/colormap.h"
+#include "meshdiff/report/vertex_maps.h"
 #include "meshdiff/version.h"
 #include "report/html_assets.h"
 
@@ -60,14 +61,14 @@ nlohmann::json quantized(const std::vector<double>& values)
     return {{"encoding", "uint16"}, {"lo", lo}, {"step", step}, {"data", base64(q)}};
 }
 
-// The q-quantile (0..1) of the finite values of both arrays.
-double quantile(const std::vector<double>& a, const std::vector<double>& b, double q, bool absolute)
+// The q-quantile (0..1) of the absolute finite values of both arrays.
+double abs_quantile(const std::vector<double>& a, const std::vector<double>& b, double q)
 {
     std::vector<double> v;
     v.reserve(a.size() + b.size());
     for (const auto* s : {&a, &b})
         for (double x : *s)
-            if (std::isfinite(x)) v.push_back(absolute ? std::abs(x) : x);
+            if (std::isfinite(x)) v.push_back(std::abs(x));
     if (v.empty()) return 0.0;
     const auto k = std::size_t(std::llround(q * double(v.size() - 1)));
     std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
@@ -104,6 +105,14 @@ std::vector<Field> fields_of(const Comparison& c)
             b.D_global.size() == c.processed.topology.vertices)
             f.push_back({"D_global", "roughness D_global (curvature deviation, 1/length of the unit-scaled mesh)",
                          &a.D_global, &b.D_global});
+        // Metric levels (--radii): D within a radius of the unit-scaled mesh.
+        for (std::size_t k = 0; k < a.radii.size() && k < a.D_radii.size() && k < b.D_radii.size(); ++k)
+            if (a.D_radii[k].size() == c.original.topology.vertices &&
+                b.D_radii[k].size() == c.processed.topology.vertices)
+                f.push_back({fmt::format("D_r{:g}", a.radii[k].radius),
+                             fmt::format("roughness D within radius {:g} of the unit-scaled mesh (1/length)",
+                                         a.radii[k].radius),
+                             &a.D_radii[k], &b.D_radii[k]});
     }
     return f;
 }
@@ -139,16 +148,15 @@ nlohmann::json view_json(const Comparison& c, const Mesh& original, const Mesh& 
             r["map"] = "sequential";
             if (o.color_range) {
                 r["range"] = {o.color_range->first, o.color_range->second};
-                r["rule"] = "given";
+                r["rule"] = o.color_rule.empty() ? "given" : o.color_rule;
             } else {
-                double hi = quantile(*f.original, *f.processed, 0.99, false);
-                if (!(hi > 0.0)) hi = 1.0;
-                r["range"] = {0.0, hi};
+                const auto range = distance_color_range(c, kDefaultHtmlPercentile);
+                r["range"] = {range.first, range.second};
                 r["rule"] = "0 to the 99th percentile of both meshes' vertex distances";
             }
         } else {
             // The vertex data map's rule (vertex_maps.h profile_map(): robust_symmetric_range), over both meshes.
-            double R = quantile(*f.original, *f.processed, 0.95, true);
+            double R = abs_quantile(*f.original, *f.processed, 0.95);
             if (!(R > 0.0)) R = 1.0;
             r["map"] = "diverging";
             r["range"] = {-R, R};

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <future>
@@ -65,6 +66,10 @@ void validate(const CompareOutputs& o, const CompareOptions& options, const std:
                            o.color_range->first < o.color_range->second))
         throw OptionError("outputs.color_range", fmt::format("[{}, {}] is not MIN MAX with MIN < MAX, both finite",
                                                              o.color_range->first, o.color_range->second));
+    if (o.color_range && o.color_percentile)
+        throw OptionError("outputs.color_range", "a fixed range or a percentile, not both");
+    if (o.color_percentile && !(*o.color_percentile > 0.0 && *o.color_percentile <= 100.0))
+        throw OptionError("outputs.color_range", fmt::format("percentile {} is not in (0, 100]", *o.color_percentile));
     const auto [original_map, processed_map] = map_paths(o);
     const char* original_field = o.distance_maps.empty() ? "outputs.distance_map_original" : "outputs.distance_maps";
     const char* processed_field = o.distance_maps.empty() ? "outputs.distance_map" : "outputs.distance_maps";
@@ -100,8 +105,10 @@ std::string write_outputs(const Comparison& c, const LoadedMesh& original, const
                           const CompareOutputs& o, const std::string& original_name, const std::string& processed_name)
 {
     const auto [map_original, map_processed] = map_paths(o);
-    // Both maps share one colour scale: the given range, else [0, the largest distance of both].
+    // Both maps share one colour scale: the given range or percentile, else [0, the largest distance of both].
     std::optional<std::pair<double, double>> range = o.color_range;
+    if (!range && o.color_percentile && (!map_processed.empty() || !map_original.empty()))
+        range = distance_color_range(c, *o.color_percentile);
     if (!range && !map_processed.empty() && !map_original.empty()) range = distance_map_range(c);
     std::string legend;
     for (const auto& [path, side, mesh] : {std::tuple{map_original, MapSide::Original, &original.mesh},
@@ -109,7 +116,8 @@ std::string write_outputs(const Comparison& c, const LoadedMesh& original, const
         if (path.empty()) continue;
         const VertexMap map = distance_map(c, side, range);
         write_ply(path, *mesh, map);
-        const bool has_signed = map.scalars.size() > 1;
+        const bool has_signed = std::any_of(map.scalars.begin(), map.scalars.end(),
+                                            [](const VertexScalar& s) { return s.name == "signed_distance"; });
         legend += fmt::format("Distance map of the {}: {} (vertex property 'distance' to the {} surface{}; {})\n",
                               side == MapSide::Original ? "original" : "processed", path,
                               side == MapSide::Original ? "processed" : "original",
@@ -122,10 +130,32 @@ std::string write_outputs(const Comparison& c, const LoadedMesh& original, const
         HtmlOptions html;
         html.command = o.command;
         html.color_range = o.color_range;
+        if (o.color_percentile && !c.original_vertex_distance.empty()) {
+            html.color_range = distance_color_range(c, *o.color_percentile);
+            html.color_rule =
+                fmt::format("0 to the {:g}th percentile of both meshes' vertex distances", *o.color_percentile);
+        }
         write_html_file(o.html, comparison_html(c, original.mesh, processed.mesh, comparison_json(c), html));
         legend += fmt::format("HTML report: {}\n", o.html);
     }
     return legend;
+}
+
+void parse_color_range(const std::string& text, CompareOutputs& o)
+{
+    const char* field = "outputs.color_range";
+    o.color_range.reset();
+    o.color_percentile.reset();
+    if (text == "max") {
+        o.color_percentile = 100.0;
+    } else if (text.size() > 1 && text[0] == 'p') {
+        o.color_percentile = parse_number(field, text.substr(1));
+    } else if (const auto colon = text.find(':'); colon != std::string::npos) {
+        o.color_range =
+            std::pair{parse_number(field, text.substr(0, colon)), parse_number(field, text.substr(colon + 1))};
+    } else {
+        throw OptionError(field, fmt::format("'{}' is not max, pNN (a percentile) or LO:HI", text));
+    }
 }
 
 void validate(const ProfileRequest& r, const std::vector<std::string>& inputs)

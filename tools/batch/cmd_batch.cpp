@@ -282,8 +282,9 @@ void add_batch_command(CLI::App& app, Action& action)
         ->capture_default_str();
     add_compare_options(sub, args->compare);
     sub->add_option("--color-range", args->outputs.color_range,
-                    "with --maps-dir: one distance colour range MIN MAX for the maps of every pair")
-        ->expected(2);
+                    "with --maps-dir: the distance colour range of the maps of every pair: MIN MAX, LO:HI, max or "
+                    "pNN (as compare's)")
+        ->expected(1, 2);
     add_threads_option(sub, args->threads);
     auto* progress = sub->add_flag("--progress", args->progress,
                                    "show the progress (one line per pair on stderr; the default, as for compare "

@@ -29,6 +29,10 @@ namespace meshdiff {
 //! are always those of the full meshes.
 constexpr std::size_t kDefaultHtmlFaceBudget = 250'000;
 
+//! The default distance colour range of the page: [0, this percentile of both
+//! meshes' vertex distances] (vertex_maps.h distance_color_range()).
+constexpr double kDefaultHtmlPercentile = 99.0;
+
 struct HtmlOptions
 {
     std::string command;  //!< the command line (or call) that made the report, shown in the page
@@ -36,6 +40,7 @@ struct HtmlOptions
     //! unset: [0, the 99th percentile of both meshes' vertex distances], so
     //! that a few worst vertices do not turn every other one blue.
     std::optional<std::pair<double, double>> color_range;
+    std::string color_rule;  //!< how color_range was chosen, shown with the colour bar (empty: "given")
     std::size_t face_budget = kDefaultHtmlFaceBudget;  //!< most faces drawn per mesh (>= 1000)
 };
 

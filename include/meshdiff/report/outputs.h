@@ -41,13 +41,24 @@ struct CompareOutputs
     //! finite; unset: [0, the largest distance] (of both maps when both are
     //! written).
     std::optional<std::pair<double, double>> color_range;
+    //! Instead of a fixed range: [0, this percentile of both meshes' vertex
+    //! distances] (distance_color_range()), for the maps and the HTML report;
+    //! in (0, 100], 100 the largest. Neither set: the maps' range is [0, the
+    //! largest distance], the HTML report's [0, the 99th percentile].
+    std::optional<double> color_percentile;
 };
+
+//! Sets the colour range of \p o from its text: "max" (color_percentile 100),
+//! "pNN" (a percentile in (0, 100], e.g. p99 or p99.5) or "LO:HI" (color_range).
+//! \throw OptionError("outputs.color_range") for any other text.
+void parse_color_range(const std::string& text, CompareOutputs& o);
 
 //! The two map paths \p o asks for (distance_maps expanded): original, processed.
 std::pair<std::string, std::string> map_paths(const CompareOutputs& o);
 
 //! The rules of \p o with \p options: distance_maps excludes the two single
-//! map options; a colour range needs MIN < MAX, both finite; samples_out and
+//! map options; a colour range needs MIN < MAX, both finite, and excludes a
+//! colour percentile, which is in (0, 100]; samples_out and
 //! the maps need the surface distance; no two outputs name one file and no
 //! output is one of \p inputs (also through links).
 //! \throw OptionError naming the field.
