@@ -461,6 +461,7 @@ ProfileRequest profile_request(const ProfileKeywords& a)
     r.corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", r.corsini_unbiased);
     r.json = output_path(a.json, "outputs.json");
     r.vertex_data = output_path(a.vertex_data, "outputs.vertex_data");
+    r.html = output_path(a.html, "outputs.html");
     if (auto c = number(a.color_range, "outputs.color_range")) r.color_range = *c;
     r.exact = flag(a.exact, "outputs.exact", r.exact);
     if (auto p = text(a.exact_property, "outputs.exact_property")) r.exact_property = *p;

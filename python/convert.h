@@ -199,7 +199,7 @@ CompareOutputs compare_outputs(const CompareKeywords& a);
 struct ProfileKeywords
 {
     py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance;
-    py::object json, vertex_data, color_range, exact, exact_property;
+    py::object json, vertex_data, html, color_range, exact, exact_property;
     py::object threads;
 };
 

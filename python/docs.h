@@ -135,6 +135,7 @@ Options (keyword-only, as `meshdiff profile`; None: the library's default):
   measure="corsini" it is the dict of `meshdiff profile --measure corsini`.
   json=None          also write the JSON report to this path          [--json]
   vertex_data=None   write the normalised mesh with H, D_L per vertex [--vertex-data]
+  html=None          write the HTML report (one self-contained page)  [--html]
   color_range=None   R of the symmetric H colour range of vertex_data [--color-range]
   exact=False        also the profile of the exact H stored in the input
                      (under "exact"), and the error of the estimate   [--exact]

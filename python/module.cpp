@@ -99,9 +99,10 @@ py::dict py_compare_files(Obj original, Obj processed, const CompareKeywords& a)
 }
 
 py::dict run_profile(const ProfileKeywords& a, const std::function<LoadedMesh()>& load,
-                     const std::vector<std::string>& inputs)
+                     const std::vector<std::string>& inputs, const std::string& command)
 {
-    const ProfileRequest r = profile_request(a);
+    ProfileRequest r = profile_request(a);
+    r.command = command;  // shown by the HTML report
     validate(r, inputs);
     nlohmann::json j;
     {
@@ -119,13 +120,15 @@ py::dict run_profile(const ProfileKeywords& a, const std::function<LoadedMesh()>
 py::dict py_profile(const ArrayLike& V, const ArrayLike& F, const ProfileKeywords& a)
 {
     auto mesh = std::make_shared<LoadedMesh>(mesh_from(V, F, "V", "F"));
-    return run_profile(a, [mesh] { return std::move(*mesh); }, {});
+    return run_profile(
+        a, [mesh] { return std::move(*mesh); }, {}, "meshdiff.profile(V, F, ...) (Python)");
 }
 
 py::dict py_profile_file(Obj path_obj, const ProfileKeywords& a)
 {
     const std::string path = path_from(path_obj, "path");
-    return run_profile(a, [&] { return read_file(path); }, {path});
+    return run_profile(
+        a, [&] { return read_file(path); }, {path}, "meshdiff.profile_file('" + path + "', ...) (Python)");
 }
 
 py::dict py_corsini_profile(const ArrayLike& V, const ArrayLike& F, Obj levels, Obj global_level, Obj unbiased,
@@ -327,7 +330,7 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
 
 // The ProfileKeywords of the keywords of profile() and profile_file().
 ProfileKeywords profile_keywords(Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
-                                 Obj unbiased_variance, Obj json, Obj vertex_data, Obj color_range, Obj exact,
+                                 Obj unbiased_variance, Obj json, Obj vertex_data, Obj html, Obj color_range, Obj exact,
                                  Obj exact_property, Obj threads)
 {
     ProfileKeywords kw;
@@ -340,6 +343,7 @@ ProfileKeywords profile_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
     kw.unbiased_variance = unbiased_variance;
     kw.json = json;
     kw.vertex_data = vertex_data;
+    kw.html = html;
     kw.color_range = color_range;
     kw.exact = exact;
     kw.exact_property = exact_property;
@@ -446,34 +450,34 @@ void def_profile(py::module_& m)
     m.def(
         "profile",
         [](const ArrayLike& V, const ArrayLike& F, Obj levels, Obj radii, Obj global_level, Obj curvature,
-           Obj weighting, Obj measure, Obj unbiased_variance, Obj json, Obj vertex_data, Obj color_range, Obj exact,
-           Obj exact_property, Obj threads) {
+           Obj weighting, Obj measure, Obj unbiased_variance, Obj json, Obj vertex_data, Obj html, Obj color_range,
+           Obj exact, Obj exact_property, Obj threads) {
             return py_profile(
                 V, F,
                 profile_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance, json,
-                                 vertex_data, color_range, exact, exact_property, threads));
+                                 vertex_data, html, color_range, exact, exact_property, threads));
         },
         profile_doc.c_str(), py::arg("V"), py::arg("F"), py::kw_only(), py::arg("levels") = py::none(),
         py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
         py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
         py::arg("unbiased_variance") = py::bool_(pdefaults.corsini_unbiased), py::arg("json") = py::none(),
-        py::arg("vertex_data") = py::none(), py::arg("color_range") = py::none(),
+        py::arg("vertex_data") = py::none(), py::arg("html") = py::none(), py::arg("color_range") = py::none(),
         py::arg("exact") = py::bool_(pdefaults.exact), py::arg("exact_property") = py::none(),
         py::arg("threads") = py::none());
     m.def(
         "profile_file",
         [](Obj path, Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
-           Obj unbiased_variance, Obj json, Obj vertex_data, Obj color_range, Obj exact, Obj exact_property,
+           Obj unbiased_variance, Obj json, Obj vertex_data, Obj html, Obj color_range, Obj exact, Obj exact_property,
            Obj threads) {
             return py_profile_file(
                 path, profile_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
-                                       json, vertex_data, color_range, exact, exact_property, threads));
+                                       json, vertex_data, html, color_range, exact, exact_property, threads));
         },
         profile_file_doc.c_str(), py::arg("path"), py::kw_only(), py::arg("levels") = py::none(),
         py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
         py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
         py::arg("unbiased_variance") = py::bool_(pdefaults.corsini_unbiased), py::arg("json") = py::none(),
-        py::arg("vertex_data") = py::none(), py::arg("color_range") = py::none(),
+        py::arg("vertex_data") = py::none(), py::arg("html") = py::none(), py::arg("color_range") = py::none(),
         py::arg("exact") = py::bool_(pdefaults.exact), py::arg("exact_property") = py::none(),
         py::arg("threads") = py::none());
 }

@@ -312,5 +312,11 @@ expect 3 "$b3" "$b4" --levels 1 --html "$tmp/no-such-folder/r.html" --json "$tmp
     fail "an unwritable --html path: $(cat "$tmp/stderr")"
 expect 2 "$b3" "$b4" --html - && grep -q -- "--html" "$tmp/stderr" && pass || fail "--html -"
 expect 2 "$b3" "$b4" --html "$b3" && grep -q -- "--html" "$tmp/stderr" && pass || fail "--html onto an input"
+expect 0 profile "$b3" --levels 1,2 --html "$tmp/p.html" && grep -q "^HTML report: $tmp/p.html" "$tmp/stdout" &&
+    grep -q '"schema":"meshdiff.profile/1"' "$tmp/p.html" && pass || fail "profile --html writes the page"
+expect 2 profile "$b3" --measure corsini --html "$tmp/pc.html" && [ ! -e "$tmp/pc.html" ] && pass ||
+    fail "profile --html with --measure corsini"
+expect 3 profile "$b3" --html "$tmp/no-such-folder/p.html" && grep -q "no-such-folder/p.html" "$tmp/stderr" && pass ||
+    fail "profile: an unwritable --html path"
 
 finish

@@ -126,7 +126,9 @@ try:
             if driver.execute_script("return window.meshdiffReport.state.frames") > n:
                 break
             time.sleep(0.02)
-        png = driver.find_element("id", "view").screenshot_as_png
+        view = driver.find_element("id", "view")
+        driver.execute_script("arguments[0].scrollIntoView()", view)  # a screenshot keeps only what is in view
+        png = view.screenshot_as_png
         return Image.open(io.BytesIO(png)).convert("RGB")
 
     load = open_page(html)
@@ -243,6 +245,30 @@ try:
         page = [tuple(page[i:i + 3]) for i in range(0, len(page), 3)]
         ply = read_ply_colors(f"{maps}_{side}.ply")
         check(page == ply, f"{side}: the page's {len(page)} vertex colours are the PLY map's")
+    # meshdiff profile --html: one mesh; its tables equal its JSON; H coloured as the --vertex-data map.
+    phtml, pjs, pply = (os.path.join(work, n) for n in ("profile.html", "profile.json", "profile_vd.ply"))
+    run("profile", os.path.join(data, "fandisk.ply"), "--levels", "1,2,5", "--html", phtml, "--json", pjs,
+        "--vertex-data", pply)
+    pjson = json.load(open(pjs))
+    open_page(phtml)
+    embedded = driver.execute_script("return JSON.parse(document.getElementById('meshdiff-report').textContent)")
+    check(embedded == pjson, "profile: the embedded JSON equals the CLI's --json report")
+    cells = driver.execute_script(
+        "return [...document.querySelectorAll('td[data-key]')].map(td => [td.dataset.key, td.dataset.value || null])")
+    cli_json = pjson
+    bad = [(k, v) for k, v in cells if v is not None and float(v) != at(k)]
+    check(len(cells) > 10 and not bad, f"profile: {len(cells)} table cells equal the JSON ({bad[:3]})")
+    check(any(k == "sigma.2" for k, _ in cells) and any(k == "sigma_global" for k, _ in cells),
+          "profile: the table shows sigma per level and global")
+    page = driver.execute_script("return Array.from(window.meshdiffReport.colors(0, 'H'))")
+    check([tuple(page[i:i + 3]) for i in range(0, len(page), 3)] == read_ply_colors(pply),
+          "profile: the page's H colours are the --vertex-data map's")
+    # Shaded: the flat parts of the fandisk (H near 0: white on the ramp) are grey, not the white background.
+    driver.execute_script("window.meshdiffReport.setShading(true)")
+    pimg = frame()
+    pimg.save(os.path.join(work, "profile.png"))
+    check(sum(1 for c in pimg.getdata() if c != (255, 255, 255)) > 0.05 * pimg.width * pimg.height,
+          "profile: the mesh is drawn")
     logs = driver.get_log("browser")
     errors = [e for e in logs if e["level"] == "SEVERE"]
     check(not errors, f"no console error ({errors[:3]})")

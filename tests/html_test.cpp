@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "meshdiff/error.h"
+#include "meshdiff/io/facts.h"
+#include "meshdiff/report/colormap.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/outputs.h"
 #include "meshdiff/studies/shapes.h"
@@ -142,4 +144,24 @@ TEST(WriteHtmlFile, NamesTheFileItCannotWrite)
         EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
     }
     EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+TEST(ProfileHtml, EmbedsTheProfileJsonAndOffersHAndEveryLevel)
+{
+    const LoadedMesh m = read_mesh(data("fandisk.ply"));
+    ProfileOptions options;
+    options.levels = {1, 3};
+    options.keep_vertex_data = true;
+    const RoughnessProfile p = roughness_profile(m.mesh, options);
+    const nlohmann::json j = profile_json(mesh_facts(m), p);
+    const std::string page = profile_html(p, m.mesh, m.input.path, j);
+    EXPECT_EQ(nlohmann::json::parse(element(page, "meshdiff-report")), j);
+    const nlohmann::json view = nlohmann::json::parse(element(page, "meshdiff-view"));
+    std::vector<std::string> fields;
+    for (const auto& f : view["fields"]) fields.push_back(f["name"]);
+    EXPECT_EQ(fields, (std::vector<std::string>{"H", "D_1", "D_3", "D_global"}));
+    // H on the vertex data map's range: robust_symmetric_range(H).
+    EXPECT_EQ(view["fields"][0]["range"][1], robust_symmetric_range(p.H));
+    EXPECT_EQ(view["meshes"].size(), 1u);
+    EXPECT_EQ(view["meshes"][0]["faces"], m.mesh.n_faces());
 }

@@ -269,6 +269,12 @@ PROFILE = [
         value(["--vertex-data", "v.ply", "--measure", "corsini"], dict(vertex_data="v.ply", measure="corsini")),
         value(["--vertex-data", "v.ply", "--json", "v.ply"], dict(vertex_data="v.ply", json="v.ply")),
     ]),
+    Option("--html", "html", [
+        ok(["--html", "p.html", "--levels", "1,2"], dict(html="p.html", levels=[1, 2])),
+        ok(["--html", "p.html", "--color-range", "0.5"], dict(html="p.html", color_range=0.5)),
+        value(["--html", "p.html", "--measure", "corsini"], dict(html="p.html", measure="corsini")),
+        value(["--html", "-"], dict(html="-")),
+    ]),
     Option("--color-range", "color_range", [
         ok(["--color-range", "0.5", "--vertex-data", "v.ply"], dict(color_range=0.5, vertex_data="v.ply")),
         value(["--color-range", "-1"], dict(color_range=-1.0)),
@@ -331,7 +337,7 @@ def test_every_option_is_in_the_table(cli):
     assert python_keywords(meshdiff.profile) == python_keywords(meshdiff.profile_file)
     passed = {o.flag for o in COMPARE if o.batch is True}
     assert cli_options(cli, "batch") == passed | set(BATCH_ONLY)
-    assert counts == {"compare": 33, "profile": 15}, counts  # the options covered, stated
+    assert counts == {"compare": 33, "profile": 16}, counts  # the options covered, stated
 
 
 CASES = [pytest.param("compare", o, c, id=f"compare {o.flag}: {c!r}") for o in COMPARE for c in o.cases] + [

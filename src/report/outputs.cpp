@@ -167,6 +167,7 @@ void validate(const ProfileRequest& r, const std::vector<std::string>& inputs)
         if (!r.profile.radii.empty())
             throw OptionError("profile.radii", "metric levels are not defined for {measure} corsini");
         if (!r.vertex_data.empty()) throw OptionError("outputs.vertex_data", "needs {measure} sigma");
+        if (!r.html.empty()) throw OptionError("outputs.html", "needs {measure} sigma");
         if (r.exact) throw OptionError("outputs.exact", "needs {measure} sigma");
         if (r.color_range != 0.0) throw OptionError("outputs.color_range", "needs {measure} sigma");
         CorsiniOptions c;
@@ -180,7 +181,8 @@ void validate(const ProfileRequest& r, const std::vector<std::string>& inputs)
         throw OptionError("outputs.color_range",
                           fmt::format("{} must be finite and > 0 (0: the 95th percentile of |H|)", r.color_range));
     if (r.exact && r.exact_property.empty()) throw OptionError("outputs.exact_property", "is empty");
-    check_targets({{"outputs.json", r.json}, {"outputs.vertex_data", r.vertex_data}}, inputs);
+    if (r.html == "-") throw OptionError("outputs.html", "is a file: '-' (standard output) is not offered");
+    check_targets({{"outputs.json", r.json}, {"outputs.vertex_data", r.vertex_data}, {"outputs.html", r.html}}, inputs);
 }
 
 ProfileReport profile_report(const LoadedMesh& loaded, const ProfileRequest& r)
@@ -208,7 +210,7 @@ ProfileReport profile_report(const LoadedMesh& loaded, const ProfileRequest& r)
         return out;
     }
     ProfileOptions options = r.profile;
-    options.keep_vertex_data = options.keep_vertex_data || !r.vertex_data.empty() || r.exact;
+    options.keep_vertex_data = options.keep_vertex_data || !r.vertex_data.empty() || r.exact || !r.html.empty();
     const RoughnessProfile profile = roughness_profile(loaded.mesh, options);
     const MeshFacts facts = facts_future.get();
     if (!r.vertex_data.empty())
@@ -226,6 +228,13 @@ ProfileReport profile_report(const LoadedMesh& loaded, const ProfileRequest& r)
         const ExactProfile e = exact_profile(loaded.mesh, H->values, options, profile);
         out.text += exact_profile_text(profile, e, r.exact_property);
         out.json["exact"] = exact_profile_json(profile, e, r.exact_property);
+    }
+    if (!r.html.empty()) {
+        HtmlOptions html;
+        html.command = r.command;
+        if (r.color_range > 0.0) html.color_range = std::pair{-r.color_range, r.color_range};
+        write_html_file(r.html, profile_html(profile, loaded.mesh, loaded.input.path, out.json, html));
+        out.text += fmt::format("HTML report: {}\n", r.html);
     }
     return out;
 }

@@ -12,6 +12,7 @@
 
 #include "meshdiff/compare.h"
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/roughness/roughness.h"
 
 #include <nlohmann/json.hpp>
 
@@ -73,6 +74,17 @@ DisplayMesh reduce_for_display(const Mesh& mesh, const std::vector<const std::ve
 //!        that is not finite MIN < MAX.
 std::string comparison_html(const Comparison& c, const Mesh& original, const Mesh& processed,
                             const nlohmann::json& report, const HtmlOptions& options = {});
+
+//! The page of the roughness profile \p profile of \p mesh (read from \p path)
+//! whose JSON report is \p report (profile_json()): the mesh's facts, sigma
+//! per level, and the mesh in 3D coloured by H (blue-white-red, as the
+//! vertex data map) or by D_L at any level when the profile kept its vertex
+//! data (ProfileOptions::keep_vertex_data). Here HtmlOptions::color_range,
+//! if set, is the H range [-R, R] (its second value R); unset, it is
+//! robust_symmetric_range(H), as the vertex data map's.
+//! \throw InvalidArgumentError as comparison_html().
+std::string profile_html(const RoughnessProfile& profile, const Mesh& mesh, const std::string& path,
+                         const nlohmann::json& report, const HtmlOptions& options = {});
 
 //! Writes \p page to \p path atomically (output_file.h).
 //! \throw IoError naming the file if it cannot be written.

@@ -91,12 +91,15 @@ struct ProfileRequest
     double color_range = 0.0;       //!< the H colour range [-R, R] of vertex_data; 0: robust_symmetric_range(H)
     bool exact = false;             //!< also the profile of the exact H stored in the input, and the error of H
     std::string exact_property = "exact_H";  //!< the PLY vertex property holding it
+    std::string html;     //!< the HTML report (html.h profile_html()); empty: none (sigma measure only)
+    std::string command;  //!< the command line (or call) the HTML report shows
 };
 
 //! The rules of \p r: validate() of its profile options; corsini_unbiased
 //! only with the Corsini measure, which takes no radii, vertex data, exact
-//! profile or colour range; color_range finite and >= 0; exact_property not
-//! empty; no output is one of \p inputs, nor the other output.
+//! profile, HTML report or colour range; color_range finite and >= 0;
+//! exact_property not empty; html not "-"; no output is one of \p inputs,
+//! nor another output.
 //! \throw OptionError naming the field.
 void validate(const ProfileRequest& r, const std::vector<std::string>& inputs);
 
@@ -109,7 +112,8 @@ struct ProfileReport
 
 //! The profile \p r asks for of \p mesh (the sigma profile with its exact
 //! twin, or Corsini's), its reports, and the vertex data file if asked for
-//! (written here; the JSON is not: write_json_file()). The mesh's topology
+//! and the HTML report if asked for (written here; the JSON is not:
+//! write_json_file()). The mesh's topology
 //! report runs beside the profile, on a thread of its own unless OpenMP is
 //! limited to one thread.
 //! \throw OptionError as validate(); InvalidArgumentError if the exact

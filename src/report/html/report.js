@@ -12,7 +12,10 @@
   const meta = readJson('meshdiff-meta');
   const view = readJson('meshdiff-view');
   const app = byId('app');
-  const NAMES = ['original', 'processed'];
+  // A comparison's page shows two meshes; a profile's (meshdiff.profile/1) one, its keys at the top level.
+  const isProfile = String(report.schema || '').startsWith('meshdiff.profile');
+  const NAMES = view.meshes.map((m) => m.role);
+  const PREFIX = isProfile ? [''] : ['original.', 'processed.'];
 
   // ---- formatting and elements -------------------------------------------------
   function fmt(x) {
@@ -56,24 +59,25 @@
   const section = (title) => app.appendChild(el('h2', { text: title }));
 
   // ---- header and meshes ------------------------------------------------------------
-  app.appendChild(el('h1', { text: 'meshdiff: ' + get('original.mesh.path') + ' vs ' + get('processed.mesh.path') }));
+  app.appendChild(el('h1', { text: isProfile ? 'meshdiff profile: ' + get('mesh.path') :
+    'meshdiff: ' + get('original.mesh.path') + ' vs ' + get('processed.mesh.path') }));
   app.appendChild(el('p', { cls: 'sub', text: 'meshdiff ' + meta.version + ', report schema ' + report.schema }));
   app.appendChild(el('code', { cls: 'cmd', id: 'command', text: meta.command }));
 
-  section('Meshes');
+  section(isProfile ? 'Mesh' : 'Meshes');
   const meshRows = [
     ['file', 'path'], ['vertices', 'vertices'], ['faces', 'faces'], ['components', 'components'],
     ['closed', 'closed'], ['boundary loops', 'boundary_loops'], ['area', 'area'], ['bounding-box diagonal', 'bbox.diagonal'],
   ];
-  app.appendChild(table(['', 'original', 'processed'], meshRows.map(([label, key]) =>
-    [el('td', { cls: 'l', text: label })].concat(NAMES.map((m) => cell(m + '.mesh.' + key))))));
-  for (const m of NAMES) {
-    const w = get(m + '.warnings') || [];
+  app.appendChild(table([''].concat(NAMES), meshRows.map(([label, key]) =>
+    [el('td', { cls: 'l', text: label })].concat(PREFIX.map((m) => cell(m + 'mesh.' + key))))));
+  PREFIX.forEach((m, k) => {
+    const w = get(m + 'warnings') || [];
     if (w.length) {
-      app.appendChild(el('p', { cls: 'warn', text: m + ': ' + w.length + ' warning' + (w.length > 1 ? 's' : '') }));
+      app.appendChild(el('p', { cls: 'warn', text: NAMES[k] + ': ' + w.length + ' warning' + (w.length > 1 ? 's' : '') }));
       app.appendChild(el('ul', { cls: 'warn' }, w.map((s) => el('li', { text: s }))));
     }
-  }
+  });
 
   // ---- surface distance ---------------------------------------------------------------
   const sd = report.surface_distance;
@@ -117,6 +121,13 @@
     if (rd.global) rows.push([el('td', { cls: 'l', text: 'global' }), cell('original.sigma_global'), cell('processed.sigma_global'),
       cell('roughness_distance.global.relative_change'), cell('roughness_distance.global.distance')]);
     app.appendChild(table(['level', 'sigma original', 'sigma processed', 'relative change', 'd_L'], rows));
+  } else if (isProfile && get('sigma')) {
+    section('Roughness profile');
+    app.appendChild(el('p', { text: String(get('neighborhood') || '') }));
+    const rows = get('levels').map((L, i) => [el('td', { cls: 'l', text: String(L) }), cell('sigma.' + i),
+      cell('level_details.' + i + '.vertices_used'), cell('level_details.' + i + '.top_share')]);
+    if (get('global')) rows.push([el('td', { cls: 'l', text: 'global' }), cell('sigma_global'), cell('global.vertices_used'), cell('global.top_share')]);
+    app.appendChild(table(['level', 'sigma', 'vertices used', 'share of the worst 0.1%'], rows));
   } else if (report.roughness_unavailable) {
     section('Roughness profile');
     app.appendChild(el('p', { text: 'unavailable: ' + report.roughness_unavailable }));
@@ -186,6 +197,13 @@
         { name: 'original', color: '#1f77b4', ys: get('original.sigma_radii') },
         { name: 'processed', color: '#d62728', ys: get('processed.sigma_radii') }], 'sigma_r'));
     }
+  }
+  if (isProfile && get('sigma')) {
+    const xs = get('levels').map(String).concat(get('global') ? ['global'] : []);
+    plots.appendChild(plot('plot-sigma', 'sigma per ring level', xs, [
+      { name: 'sigma', color: '#1f77b4', ys: get('sigma').concat(get('global') ? [get('sigma_global')] : []) }], 'sigma_L'));
+    if (get('radii')) plots.appendChild(plot('plot-sigma-radii', 'sigma per radius (unit-scaled mesh)', get('radii').map(String),
+      [{ name: 'sigma', color: '#1f77b4', ys: get('sigma_radii') }], 'sigma_r'));
   }
   for (const d of ['forward', 'backward']) {
     const hist = sd && sd[d] && sd[d].histogram;
@@ -262,11 +280,14 @@
       '. Every number of this report is of the full meshes.' }));
   }
   const controlsBox = el('div', { id: 'controls' });
-  const fieldSelect = el('select', { id: 'field' }, view.fields.map((f) => el('option', { value: f.name, text: f.name === 'distance' ? 'distance to the other mesh' : f.name })));
+  const fieldSelect = el('select', { id: 'field' }, view.fields.map((f) => el('option', { value: f.name,
+    text: f.name === 'distance' ? 'distance to the other mesh' : f.name === 'H' ? 'mean curvature H' : f.name })));
   const modeSelect = el('select', { id: 'mode' }, [['side', 'side by side'], ['original', 'original only'], ['processed', 'processed only']].map(([v, t]) => el('option', { value: v, text: t })));
   const shading = el('input', { type: 'checkbox', id: 'shading', checked: '' });
-  controlsBox.append(el('label', {}, ['colour by ', fieldSelect]), el('label', {}, ['show ', modeSelect]), el('label', {}, [shading, ' shading']),
-    el('span', { cls: 'sub', text: 'drag: rotate, wheel: zoom, right-drag: pan (both views share one camera); click the surface for its value' }));
+  controlsBox.append(el('label', {}, ['colour by ', fieldSelect]));
+  if (meshes.length > 1) controlsBox.append(el('label', {}, ['show ', modeSelect]));
+  controlsBox.append(el('label', {}, [shading, ' shading']),
+    el('span', { cls: 'sub', text: 'drag: rotate, wheel: zoom, right-drag: pan' + (meshes.length > 1 ? ' (both views share one camera)' : '') + '; click the surface for its value' }));
   app.appendChild(controlsBox);
   const barCanvas = el('canvas', { width: 256, height: 14, id: 'colorbar-ramp' });
   const barLo = el('span', { id: 'colorbar-lo' }), barHi = el('span', { id: 'colorbar-hi' }), barLabel = el('span', { id: 'colorbar-label' });
@@ -347,6 +368,7 @@
   // The viewports: [scene index, x, width] in CSS pixels.
   function viewports() {
     const w = canvas.clientWidth;
+    if (meshes.length === 1) return [[0, 0, w]];
     if (state.mode === 'side') return [[0, 0, w / 2], [1, w / 2, w - w / 2]];
     return [[state.mode === 'original' ? 0 : 1, 0, w]];
   }
