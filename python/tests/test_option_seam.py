@@ -301,6 +301,7 @@ BATCH_ONLY = {
     "--shard": "which pairs this process takes",
     "--pair-timeout": "the time one pair may take",
     "--maps-dir": "the distance maps of every pair",
+    "--html-dir": "the HTML report of every pair",
     "--progress": "its per-pair lines (the default)",
     "--quiet": "no per-pair lines",
 }
