@@ -59,6 +59,7 @@ std::string py_spelling(const std::string& field)
         {"outputs.distance_map_original", "distance_map_original"},
         {"outputs.distance_maps", "distance_maps"},
         {"outputs.samples_out", "samples_out"},
+        {"outputs.html", "html"},
         {"outputs.color_range", "color_range"},
         {"outputs.vertex_data", "vertex_data"},
         {"outputs.exact", "exact"},
@@ -461,8 +462,11 @@ CompareOutputs compare_outputs(const CompareKeywords& a)
     o.distance_map_original = output_path(a.distance_map_original, "outputs.distance_map_original");
     o.distance_maps = output_path(a.distance_maps, "outputs.distance_maps");
     o.samples_out = output_path(a.samples_out, "outputs.samples_out");
-    if (!a.color_range.is_none()) {
-        const std::string expected = "a pair of numbers (MIN, MAX)";
+    o.html = output_path(a.html, "outputs.html");
+    if (py::isinstance<py::str>(a.color_range)) {
+        parse_color_range(a.color_range.cast<std::string>(), o);
+    } else if (!a.color_range.is_none()) {
+        const std::string expected = "a pair of numbers (MIN, MAX), or 'max', 'pNN', 'LO:HI'";
         const std::vector<double> r = numbers_arg(a.color_range, "outputs.color_range", expected, 3);
         if (r.size() != 2) type_error("outputs.color_range", expected, a.color_range);
         o.color_range = std::pair{r[0], r[1]};
@@ -480,6 +484,7 @@ ProfileRequest profile_request(const ProfileKeywords& a)
     if (auto t = number(a.trim, "profile.trim")) r.profile.trim = *t;
     r.json = output_path(a.json, "outputs.json");
     r.vertex_data = output_path(a.vertex_data, "outputs.vertex_data");
+    r.html = output_path(a.html, "outputs.html");
     if (auto c = number(a.color_range, "outputs.color_range")) r.color_range = *c;
     r.exact = flag(a.exact, "outputs.exact", r.exact);
     if (auto p = text(a.exact_property, "outputs.exact_property")) r.exact_property = *p;

@@ -98,7 +98,9 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
   distance_map=None, distance_map_original=None, distance_maps=None
                         write distance maps (PLY), as the CLI              [--distance-map, ...]
   samples_out=None      write both directions' samples (PLY point cloud)   [--samples-out]
-  color_range=None      (MIN, MAX) of the maps' colours                    [--color-range]
+  html=None             write the HTML report (one self-contained page)    [--html]
+  color_range=None      (MIN, MAX), 'LO:HI', 'max' or 'pNN' (percentile)   [--color-range]
+                        of the distance colours (maps: max, html: p99)
   threads=None          OpenMP threads; None or 0: all cores               [--threads]
 )doc";
 
@@ -143,6 +145,7 @@ Options (keyword-only, as `meshdiff profile`; None: the library's default):
   measure="corsini" it is the dict of `meshdiff profile --measure corsini`.
   json=None          also write the JSON report to this path          [--json]
   vertex_data=None   write the normalised mesh with H, D_L per vertex [--vertex-data]
+  html=None          write the HTML report (one self-contained page)  [--html]
   color_range=None   R of the symmetric H colour range of vertex_data [--color-range]
   exact=False        also the profile of the exact H stored in the input
                      (under "exact"), and the error of the estimate   [--exact]

@@ -56,9 +56,10 @@ py::object py_read_mesh(const py::object& path_obj, bool report)
 // compare_meshes() with the outputs \p a asks for, as `meshdiff compare` runs it.
 py::dict run_compare(const CompareKeywords& a, const std::function<std::pair<LoadedMesh, LoadedMesh>()>& load,
                      const std::string& original_name, const std::string& processed_name,
-                     const std::vector<std::string>& inputs)
+                     const std::vector<std::string>& inputs, const std::string& command)
 {
-    const CompareOutputs outputs = compare_outputs(a);
+    CompareOutputs outputs = compare_outputs(a);
+    outputs.command = command;  // shown by the HTML report
     const CompareOptions checked = compare_options(a);
     validate(outputs, checked, inputs);
     const CompareOptions options = with_outputs(checked, outputs);
@@ -82,19 +83,27 @@ py::dict py_compare(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V
 {
     auto meshes = std::make_shared<std::pair<LoadedMesh, LoadedMesh>>(mesh_or_cloud_from(V1, F1, "V1", "F1"),
                                                                       mesh_or_cloud_from(V2, F2, "V2", "F2"));
-    return run_compare(a, [meshes] { return std::move(*meshes); }, "<array V1>", "<array V2>", {});
+    return run_compare(
+        a, [meshes] { return std::move(*meshes); }, "<array V1>", "<array V2>", {},
+        "meshdiff.compare(V1, F1, V2, F2, ...) (Python)");
 }
 
 py::dict py_compare_files(Obj original, Obj processed, const CompareKeywords& a)
 {
     const std::string pa = path_from(original, "original"), pb = path_from(processed, "processed");
-    return run_compare(a, [&] { return std::pair{read_file(pa, true), read_file(pb, true)}; }, pa, pb, {pa, pb});
+    return run_compare(
+        a,
+        [&] {
+            return std::pair{read_file(pa, true), read_file(pb, true)};
+        },
+        pa, pb, {pa, pb}, "meshdiff.compare_files('" + pa + "', '" + pb + "', ...) (Python)");
 }
 
 py::dict run_profile(const ProfileKeywords& a, const std::function<LoadedMesh()>& load,
-                     const std::vector<std::string>& inputs)
+                     const std::vector<std::string>& inputs, const std::string& command)
 {
-    const ProfileRequest r = profile_request(a);
+    ProfileRequest r = profile_request(a);
+    r.command = command;  // shown by the HTML report
     validate(r, inputs);
     nlohmann::json j;
     {
@@ -112,13 +121,15 @@ py::dict run_profile(const ProfileKeywords& a, const std::function<LoadedMesh()>
 py::dict py_profile(const ArrayLike& V, const ArrayLike& F, const ProfileKeywords& a)
 {
     auto mesh = std::make_shared<LoadedMesh>(mesh_from(V, F, "V", "F"));
-    return run_profile(a, [mesh] { return std::move(*mesh); }, {});
+    return run_profile(
+        a, [mesh] { return std::move(*mesh); }, {}, "meshdiff.profile(V, F, ...) (Python)");
 }
 
 py::dict py_profile_file(Obj path_obj, const ProfileKeywords& a)
 {
     const std::string path = path_from(path_obj, "path");
-    return run_profile(a, [&] { return read_file(path); }, {path});
+    return run_profile(
+        a, [&] { return read_file(path); }, {path}, "meshdiff.profile_file('" + path + "', ...) (Python)");
 }
 
 py::dict py_corsini_profile(const ArrayLike& V, const ArrayLike& F, Obj levels, Obj global_level, Obj unbiased,
@@ -285,7 +296,7 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
                                  Obj vertex_samples, Obj edge_samples, Obj face_samples, Obj hausdorff,
                                  Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance, Obj hausdorff_budget, Obj fscore,
                                  Obj histogram, Obj json, Obj distance_map, Obj distance_map_original,
-                                 Obj distance_maps, Obj samples_out, Obj color_range, Obj threads)
+                                 Obj distance_maps, Obj samples_out, Obj html, Obj color_range, Obj threads)
 {
     CompareKeywords kw;
     kw.levels = levels;
@@ -320,6 +331,7 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
     kw.distance_map_original = distance_map_original;
     kw.distance_maps = distance_maps;
     kw.samples_out = samples_out;
+    kw.html = html;
     kw.color_range = color_range;
     kw.threads = threads;
     return kw;
@@ -327,7 +339,7 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
 
 // The ProfileKeywords of the keywords of profile() and profile_file().
 ProfileKeywords profile_keywords(Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
-                                 Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data,
+                                 Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data, Obj html,
                                  Obj color_range, Obj exact, Obj exact_property, Obj threads)
 {
     ProfileKeywords kw;
@@ -342,6 +354,7 @@ ProfileKeywords profile_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
     kw.trim = trim;
     kw.json = json;
     kw.vertex_data = vertex_data;
+    kw.html = html;
     kw.color_range = color_range;
     kw.exact = exact;
     kw.exact_property = exact_property;
@@ -396,7 +409,8 @@ void def_compare_like(py::module_& m, const char* name, F&& f, const std::string
           py::arg("hausdorff_budget") = py::none(), py::arg("fscore") = py::none(), py::arg("histogram") = py::none(),
           py::arg("json") = py::none(), py::arg("distance_map") = py::none(),
           py::arg("distance_map_original") = py::none(), py::arg("distance_maps") = py::none(),
-          py::arg("samples_out") = py::none(), py::arg("color_range") = py::none(), py::arg("threads") = py::none());
+          py::arg("samples_out") = py::none(), py::arg("html") = py::none(), py::arg("color_range") = py::none(),
+          py::arg("threads") = py::none());
 }
 
 // compare() and compare_files().
@@ -411,14 +425,14 @@ void def_compare(py::module_& m)
            Obj local, Obj local_trim, Obj k, Obj roughness, Obj distance, Obj samples, Obj density, Obj face_sampling,
            Obj seed, Obj vertex_samples, Obj edge_samples, Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance,
            Obj hausdorff_abs_tolerance, Obj hausdorff_budget, Obj fscore, Obj histogram, Obj json, Obj distance_map,
-           Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj color_range, Obj threads) {
+           Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj html, Obj color_range, Obj threads) {
             return py_compare(
                 V1, F1, V2, F2,
                 compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
                                  normalize, trim, local, local_trim, k, roughness, distance, samples, density,
                                  face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff,
                                  hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore, histogram,
-                                 json, distance_map, distance_map_original, distance_maps, samples_out, color_range,
+                                 json, distance_map, distance_map_original, distance_maps, samples_out, html, color_range,
                                  threads));
         },
         compare_doc, py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"));
@@ -429,14 +443,14 @@ void def_compare(py::module_& m)
            Obj distance, Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples,
            Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance, Obj hausdorff_budget,
            Obj fscore, Obj histogram, Obj json, Obj distance_map, Obj distance_map_original, Obj distance_maps,
-           Obj samples_out, Obj color_range, Obj threads) {
+           Obj samples_out, Obj html, Obj color_range, Obj threads) {
             return py_compare_files(
                 original, processed,
                 compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
                                  normalize, trim, local, local_trim, k, roughness, distance, samples, density,
                                  face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff,
                                  hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore, histogram,
-                                 json, distance_map, distance_map_original, distance_maps, samples_out, color_range,
+                                 json, distance_map, distance_map_original, distance_maps, samples_out, html, color_range,
                                  threads));
         },
         compare_files_doc, py::arg("original"), py::arg("processed"));
@@ -451,34 +465,34 @@ void def_profile(py::module_& m)
     m.def(
         "profile",
         [](const ArrayLike& V, const ArrayLike& F, Obj levels, Obj radii, Obj global_level, Obj curvature,
-           Obj weighting, Obj measure, Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data,
+           Obj weighting, Obj measure, Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data, Obj html,
            Obj color_range, Obj exact, Obj exact_property, Obj threads) {
             return py_profile(
                 V, F,
                 profile_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
-                                 normalize, trim, json, vertex_data, color_range, exact, exact_property, threads));
+                                 normalize, trim, json, vertex_data, html, color_range, exact, exact_property, threads));
         },
         profile_doc.c_str(), py::arg("V"), py::arg("F"), py::kw_only(), py::arg("levels") = py::none(),
         py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
         py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
         py::arg("unbiased_variance") = py::bool_(pdefaults.corsini_unbiased), py::arg("normalize") = py::none(),
-        py::arg("trim") = py::none(), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(),
+        py::arg("trim") = py::none(), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(), py::arg("html") = py::none(),
         py::arg("color_range") = py::none(), py::arg("exact") = py::bool_(pdefaults.exact),
         py::arg("exact_property") = py::none(), py::arg("threads") = py::none());
     m.def(
         "profile_file",
         [](Obj path, Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
-           Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data, Obj color_range, Obj exact,
+           Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data, Obj html, Obj color_range, Obj exact,
            Obj exact_property, Obj threads) {
             return py_profile_file(path, profile_keywords(levels, radii, global_level, curvature, weighting, measure,
-                                                          unbiased_variance, normalize, trim, json, vertex_data,
+                                                          unbiased_variance, normalize, trim, json, vertex_data, html,
                                                           color_range, exact, exact_property, threads));
         },
         profile_file_doc.c_str(), py::arg("path"), py::kw_only(), py::arg("levels") = py::none(),
         py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
         py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
         py::arg("unbiased_variance") = py::bool_(pdefaults.corsini_unbiased), py::arg("normalize") = py::none(),
-        py::arg("trim") = py::none(), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(),
+        py::arg("trim") = py::none(), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(), py::arg("html") = py::none(),
         py::arg("color_range") = py::none(), py::arg("exact") = py::bool_(pdefaults.exact),
         py::arg("exact_property") = py::none(), py::arg("threads") = py::none());
 }

@@ -20,7 +20,10 @@ pkgs=(build-essential cmake pkg-config
       python3-setuptools python3-wheel python3-build python3-venv python3-mypy
       python3-meshio python3-open3d python3-distributed python3-tqdm
       # The fuzzing of the readers (scripts/fuzz.sh): clang with libFuzzer and its OpenMP runtime.
-      clang libclang-rt-14-dev libomp-dev)
+      clang libclang-rt-14-dev libomp-dev
+      # The HTML report: three.js with its OrbitControls, inlined at build time (CMakeLists.txt), and its
+      # test in a real browser (tests/html_browser_test.py: headless chromium driven by selenium, PIL).
+      libjs-three chromium chromium-driver python3-selenium python3-pil)
 if [[ "${1:-}" == "--reference" ]]; then
     pkgs+=(meshlab xvfb xauth gnuplot-nox hyperfine)
 fi

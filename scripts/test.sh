@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The whole test suite, as CI runs it: installs the Debian dependencies, then
 #  1. a Release build with warnings as errors (with the Python module), and
-#     ctest; installs it into a temporary prefix and builds tests/consumer
-#     against it;
+#     ctest (with the HTML report's test in headless chromium); installs it
+#     into a temporary prefix and builds tests/consumer against it;
 #  2. the Python package: `pip install .` into a virtual environment (reusing
 #     the Release tree: MESHDIFF_CMAKE_BUILD_DIR), pytest (python/tests, with
 #     stubtest and mypy) against that installed package, and an import of the
@@ -21,7 +21,8 @@ scripts/install-deps.sh
 echo "== Release build + tests"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DMESHDIFF_WARNINGS_AS_ERRORS=ON -DMESHDIFF_BUILD_PYTHON=ON
 cmake --build build -j"$jobs"
-ctest --test-dir build --output-on-failure -j"$jobs"
+# html_browser (tests/html_browser_test.py: the HTML report in headless chromium) must run here, not skip.
+MESHDIFF_REQUIRE_BROWSER=1 ctest --test-dir build --output-on-failure -j"$jobs"
 
 echo "== install and build a consumer against the installed package"
 tests/consumer_test.sh build

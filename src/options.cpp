@@ -88,6 +88,7 @@ const std::vector<std::string>& option_fields()
         "outputs.distance_map_original",
         "outputs.distance_maps",
         "outputs.samples_out",
+        "outputs.html",
         "outputs.color_range",
         "outputs.vertex_data",
         "outputs.exact",

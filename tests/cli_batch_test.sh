@@ -123,4 +123,20 @@ assert len(rows) == 2 and all(float(r[k]) > 0 for r in rows for k in keys)
 assert all(abs(float(r["chamfer_l1"]) - float(r["aw_mean_forward"]) - float(r["aw_mean_backward"])) < 1e-12 for r in rows)
 PY
 
+# --- --html-dir: the HTML report of every pair that succeeds, named in its record
+printf '%s,%s,bunny pair\n%s,%s,bad\n' "$data/bunny_res3.ply" "$data/bunny_res4_ascii.ply" "$data/bunny_res3.ply" \
+    "$data/missing.ply" > "$tmp/html_pairs.csv"
+expect 6 batch "$tmp/html_pairs.csv" --out "$tmp/html.jsonl" --html-dir "$tmp/reports" --levels 1 -q &&
+    [ "$(ls "$tmp/reports" | wc -l)" -eq 1 ] && python3 - "$tmp/html.jsonl" <<'PY' && pass || fail "batch --html-dir"
+import json, sys
+ok, bad = [json.loads(l) for l in open(sys.argv[1])]
+assert ok["status"] == "ok" and "html" not in bad, (ok, bad)
+page = open(ok["html"]).read()
+start = page.index('id="meshdiff-report">') + len('id="meshdiff-report">')
+assert json.loads(page[start:page.index("</script>", start)]) == ok["result"]
+PY
+expect 3 batch "$tmp/html_pairs.csv" --out "$tmp/html2.jsonl" --html-dir "$data/bunny_res3.ply" -q &&
+    grep -q "bunny_res3.ply: cannot create the HTML reports folder" "$tmp/stderr" && [ ! -e "$tmp/html2.jsonl" ] &&
+    pass || fail "batch --html-dir onto a file: $(cat "$tmp/stderr")"
+
 finish

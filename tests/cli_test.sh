@@ -299,4 +299,24 @@ expect 2 "$tmp/fan.ply" "$tmp/pyr.ply" --no-distance --samples-out "$tmp/x.ply" 
     grep -q -- "--samples-out" "$tmp/stderr" && [ ! -e "$tmp/x.ply" ] && pass || fail "--samples-out with --no-distance"
 expect 2 "$tmp/fan.ply" "$tmp/pyr.ply" --no-roughness --samples-out "$tmp/fan.ply"
 
+# --- the HTML report (the page itself is checked in a browser: html_browser_test.py): written with the report,
+# a distinct error naming the file when it cannot be, and no other output left then
+b3="$data/bunny_res3.ply"
+b4="$data/bunny_res4_ascii.ply"
+expect 0 "$b3" "$b4" --levels 1,2 --html "$tmp/r.html" --json "$tmp/r.json" &&
+    grep -q "^HTML report: $tmp/r.html" "$tmp/stdout" && grep -q '<script type="application/json" id="meshdiff-report">' "$tmp/r.html" &&
+    [ "$(grep -c '<script src' "$tmp/r.html")" -eq 0 ] && pass || fail "--html writes the page"
+json_check "$tmp/r.json" 'len(j["surface_distance"]["forward"]["histogram"]["counts"]) == 40'
+expect 3 "$b3" "$b4" --levels 1 --html "$tmp/no-such-folder/r.html" --json "$tmp/r2.json" &&
+    grep -q "no-such-folder/r.html" "$tmp/stderr" && [ ! -e "$tmp/r2.json" ] && pass ||
+    fail "an unwritable --html path: $(cat "$tmp/stderr")"
+expect 2 "$b3" "$b4" --html - && grep -q -- "--html" "$tmp/stderr" && pass || fail "--html -"
+expect 2 "$b3" "$b4" --html "$b3" && grep -q -- "--html" "$tmp/stderr" && pass || fail "--html onto an input"
+expect 0 profile "$b3" --levels 1,2 --html "$tmp/p.html" && grep -q "^HTML report: $tmp/p.html" "$tmp/stdout" &&
+    grep -q '"schema":"meshdiff.profile/1"' "$tmp/p.html" && pass || fail "profile --html writes the page"
+expect 2 profile "$b3" --measure corsini --html "$tmp/pc.html" && [ ! -e "$tmp/pc.html" ] && pass ||
+    fail "profile --html with --measure corsini"
+expect 3 profile "$b3" --html "$tmp/no-such-folder/p.html" && grep -q "no-such-folder/p.html" "$tmp/stderr" && pass ||
+    fail "profile: an unwritable --html path"
+
 finish

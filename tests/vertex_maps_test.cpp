@@ -70,9 +70,12 @@ bool same_or_both_nan(double a, double b)
 TEST(DistanceMap, DistanceIsTheBruteForceDistanceOfEveryProcessedVertex)
 {
     const VertexMap m = distance_map(distance_comparison());
-    ASSERT_EQ(m.scalars.size(), 2u);
+    ASSERT_EQ(m.scalars.size(), 3u);
     EXPECT_EQ(m.scalars[0].name, "distance");
     EXPECT_EQ(m.scalars[1].name, "signed_distance");
+    // MeshLab's per-vertex quality: the distance again.
+    EXPECT_EQ(m.scalars[2].name, "quality");
+    EXPECT_EQ(m.scalars[2].values, m.scalars[0].values);
     const auto& d = m.scalars[0].values;
     const auto& s = m.scalars[1].values;
     ASSERT_EQ(d.size(), ellipsoid().mesh.n_vertices());
@@ -95,7 +98,9 @@ TEST(DistanceMap, OriginalSideIsTheBruteForceDistanceOfEveryOriginalVertex)
 {
     const Comparison& c = distance_comparison();
     const VertexMap m = distance_map(c, MapSide::Original);
-    ASSERT_EQ(m.scalars.size(), 2u);
+    ASSERT_EQ(m.scalars.size(), 3u);
+    EXPECT_EQ(m.scalars[2].name, "quality");
+    EXPECT_EQ(m.scalars[2].values, m.scalars[0].values);
     const auto& d = m.scalars[0].values;
     ASSERT_EQ(d.size(), sphere().mesh.n_vertices());
     int n_inside = 0;
@@ -229,10 +234,11 @@ TEST(DistanceMap, NoSignedDistanceAgainstAnOpenMesh)
     o.sampling.samples = 5000;
     o.vertex_distances = true;
     const Comparison c = compare_meshes(sphere(), read_mesh(data("hemisphere.ply")), o);
-    const VertexMap processed = distance_map(c);  // distances to the closed sphere: signed
-    ASSERT_EQ(processed.scalars.size(), 2u);
+    const VertexMap processed = distance_map(c);                    // distances to the closed sphere: signed
+    ASSERT_EQ(processed.scalars.size(), 3u);                        // distance, signed_distance, quality
     const VertexMap original = distance_map(c, MapSide::Original);  // to the open hemisphere: none
-    ASSERT_EQ(original.scalars.size(), 1u);
+    ASSERT_EQ(original.scalars.size(), 2u);                         // distance, quality
+    EXPECT_EQ(original.scalars[1].name, "quality");
     EXPECT_EQ(original.comments.back().rfind("no signed_distance", 0), 0u) << original.comments.back();
 }
 
@@ -295,4 +301,20 @@ TEST(WritePly, AMapComesBackAsVertexScalars)
         const auto& channel = vertex_scalar(back, c == 0 ? "red" : c == 1 ? "green" : "blue").values;
         for (std::size_t i = 0; i < channel.size(); ++i) EXPECT_EQ(channel[i], double(m.colors[i][c]));
     }
+}
+
+TEST(DistanceColorRange, IsThePercentileOfBothMeshesVertexDistances)
+{
+    const Comparison& c = distance_comparison();
+    std::vector<double> all = c.original_vertex_distance;
+    all.insert(all.end(), c.processed_vertex_distance.begin(), c.processed_vertex_distance.end());
+    std::sort(all.begin(), all.end());
+    EXPECT_EQ(distance_color_range(c, 100.0), distance_map_range(c));
+    EXPECT_EQ(distance_color_range(c, 100.0).second, all.back());
+    const auto p90 = distance_color_range(c, 90.0);
+    EXPECT_EQ(p90.first, 0.0);
+    EXPECT_EQ(p90.second, all[std::size_t(std::llround(0.9 * double(all.size() - 1)))]);
+    EXPECT_LT(p90.second, all.back());
+    EXPECT_THROW(distance_color_range(c, 0.0), InvalidArgumentError);
+    EXPECT_THROW(distance_color_range(c, 100.5), InvalidArgumentError);
 }

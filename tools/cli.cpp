@@ -11,7 +11,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <csignal>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -28,7 +30,26 @@ bool is_subcommand(const std::string& word)
     return std::any_of(names.begin(), names.end(), [&](const char* n) { return word == n; });
 }
 
+std::string g_command_line;
+
+// \p word quoted for a POSIX shell where it needs it.
+std::string shell_quoted(const std::string& word)
+{
+    const bool plain = !word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || std::strchr("_./:=,+-@%^", c) != nullptr;
+    });
+    if (plain) return word;
+    std::string q = "'";
+    for (char c : word) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
 }  // namespace
+
+const std::string& command_line()
+{
+    return g_command_line;
+}
 
 Failure failure_of(const std::exception& e)
 {
@@ -49,6 +70,8 @@ int run(const std::vector<std::string>& raw_args)
 {
     std::vector<std::string> args = raw_args;
     if (args.empty()) args.emplace_back("meshdiff");
+    g_command_line.clear();
+    for (const std::string& a : args) g_command_line += (g_command_line.empty() ? "" : " ") + shell_quoted(a);
     // `meshdiff A B [options]` is `meshdiff compare A B [options]`.
     if (args.size() > 1 && !is_subcommand(args[1]) && args[1] != "-h" && args[1] != "--help" && args[1] != "--version")
         args.insert(args.begin() + 1, "compare");

@@ -37,4 +37,8 @@ Failure failure_of(const std::exception& e);
 //! Runs the tool on argv-style arguments (args[0] is the program name).
 int run(const std::vector<std::string>& args);
 
+//! The arguments of the running run(), as a shell would take them back
+//! (quoted where needed), for the reports that show how they were made.
+const std::string& command_line();
+
 }  // namespace meshdiff::cli

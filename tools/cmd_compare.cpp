@@ -1,3 +1,4 @@
+#include "cli.h"
 #include "commands.h"
 #include "interrupt.h"
 #include "meshdiff/compare.h"
@@ -34,7 +35,8 @@ struct CompareArgs
 int run_compare(const CompareArgs& a)
 {
     set_threads(a.threads);
-    const CompareOutputs outputs = to_compare_outputs(a.outputs);
+    CompareOutputs outputs = to_compare_outputs(a.outputs);
+    outputs.command = command_line();
     const CompareOptions checked = to_compare_options(a.compare);
     validate(outputs, checked, {a.original, a.processed});
     CompareOptions options = with_outputs(checked, outputs);

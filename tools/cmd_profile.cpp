@@ -1,3 +1,4 @@
+#include "cli.h"
 #include "commands.h"
 #include "interrupt.h"
 #include "meshdiff/error.h"
@@ -36,6 +37,7 @@ int run_profile(const ProfileArgs& a)
     set_threads(a.threads);
     install_interrupt_handlers();
     ProfileRequest r = a.request;
+    r.command = command_line();
     r.measure = to_measure(a.profile);
     r.corsini_unbiased = a.profile.unbiased_variance;
     r.profile = to_profile_options(a.profile);
@@ -73,6 +75,9 @@ void add_profile_command(CLI::App& app, Action& action)
     sub->add_option("--json", args->request.json, "write the JSON report to FILE, or '-' for stdout");
     sub->add_option("--vertex-data", args->request.vertex_data,
                     "write the normalised mesh with per-vertex H, D_L and an H colour map as PLY");
+    sub->add_option("--html", args->request.html,
+                    "write the HTML report to FILE: one self-contained page with the profile and the mesh in 3D "
+                    "coloured by H or D_L (docs/cli.md)");
     args->color_range.option =
         sub->add_option("--color-range", args->color_range.text,
                         "fix the symmetric H colour range [-R, R] (default: 95th percentile of |H|)");

@@ -51,6 +51,7 @@ std::string cli_spelling(const std::string& field)
         {"outputs.distance_map_original", "--distance-map-original"},
         {"outputs.distance_maps", "--distance-maps"},
         {"outputs.samples_out", "--samples-out"},
+        {"outputs.html", "--html"},
         {"outputs.color_range", "--color-range"},
         {"outputs.vertex_data", "--vertex-data"},
         {"outputs.exact", "--exact"},
@@ -283,13 +284,20 @@ void add_compare_output_options(CLI::App* sub, CompareOutputCliOptions& o)
     sub->add_option("--samples-out", out.samples_out,
                     "write the samples of both directions with their distances as a binary PLY point cloud "
                     "(x y z distance signed_distance kind direction face)");
-    sub->add_option("--color-range", o.color_range, "fix the distance colour range: MIN MAX")->expected(2);
+    sub->add_option("--html", out.html,
+                    "write the HTML report to FILE: one self-contained page (no network) with the summary, plots and "
+                    "both meshes in 3D coloured by distance or roughness D_L (docs/cli.md)");
+    sub->add_option("--color-range", o.color_range,
+                    "the distance colour range of the maps and the HTML report: MIN MAX, LO:HI, max, or pNN (0 to "
+                    "that percentile of both meshes' vertex distances; default: max for the maps, p99 for --html)")
+        ->expected(1, 2);
 }
 
 CompareOutputs to_compare_outputs(const CompareOutputCliOptions& o)
 {
     CompareOutputs out = o.outputs;
-    if (!o.color_range.empty())
+    if (o.color_range.size() == 1) parse_color_range(o.color_range[0], out);
+    if (o.color_range.size() == 2)
         out.color_range = std::pair{parse_number("outputs.color_range", o.color_range.at(0)),
                                     parse_number("outputs.color_range", o.color_range.at(1))};
     return out;

@@ -232,11 +232,25 @@ COMPARE = [
         ok(["--samples-out", "s.ply", "-n", "2000"], dict(samples_out="s.ply", samples=2000)),
         value(["--samples-out", "s.ply", "--no-distance"], dict(samples_out="s.ply", distance=False)),
     ], batch=NOT_IN_BATCH_FILE),
+    Option("--html", "html", [
+        ok(["--html", "r.html"], dict(html="r.html")),
+        ok(["--html", "r.html", "--no-roughness", "--histogram", "5"], dict(html="r.html", roughness=False, histogram=5)),
+        value(["--html", "-"], dict(html="-")),
+        value(["--html", "r.html", "--json", "r.html"], dict(html="r.html", json="r.html")),
+    ], batch=NOT_IN_BATCH_FILE),
     Option("--color-range", "color_range", [
         ok(["--color-range", "0", "0.05", "--distance-maps", "maps"], dict(color_range=(0, 0.05), distance_maps="maps")),
         ok(["--color-range", "0", "0.05"], dict(color_range=[0.0, 0.05])),
         value(["--color-range", "0.05", "0"], dict(color_range=(0.05, 0.0))),
         type_(["--color-range", "x", "1"], dict(color_range=("x", 1))),
+        ok(["--color-range", "p95", "--distance-maps", "maps", "--html", "r.html"],
+           dict(color_range="p95", distance_maps="maps", html="r.html")),
+        ok(["--color-range", "max", "--distance-maps", "maps"], dict(color_range="max", distance_maps="maps")),
+        ok(["--color-range", "0:0.05", "--html", "r.html"], dict(color_range="0:0.05", html="r.html")),
+        value(["--color-range", "p0"], dict(color_range="p0")),
+        value(["--color-range", "p101"], dict(color_range="p101")),
+        value(["--color-range", "0.05:0"], dict(color_range="0.05:0")),
+        value(["--color-range", "wide"], dict(color_range="wide")),
     ]),
     Option("--threads", "threads", [
         ok(["--threads", "1"], dict(threads=1)),
@@ -285,6 +299,12 @@ PROFILE = [
         value(["--vertex-data", "v.ply", "--measure", "corsini"], dict(vertex_data="v.ply", measure="corsini")),
         value(["--vertex-data", "v.ply", "--json", "v.ply"], dict(vertex_data="v.ply", json="v.ply")),
     ]),
+    Option("--html", "html", [
+        ok(["--html", "p.html", "--levels", "1,2"], dict(html="p.html", levels=[1, 2])),
+        ok(["--html", "p.html", "--color-range", "0.5"], dict(html="p.html", color_range=0.5)),
+        value(["--html", "p.html", "--measure", "corsini"], dict(html="p.html", measure="corsini")),
+        value(["--html", "-"], dict(html="-")),
+    ]),
     Option("--color-range", "color_range", [
         ok(["--color-range", "0.5", "--vertex-data", "v.ply"], dict(color_range=0.5, vertex_data="v.ply")),
         value(["--color-range", "-1"], dict(color_range=-1.0)),
@@ -311,6 +331,7 @@ BATCH_ONLY = {
     "--shard": "which pairs this process takes",
     "--pair-timeout": "the time one pair may take",
     "--maps-dir": "the distance maps of every pair",
+    "--html-dir": "the HTML report of every pair",
     "--progress": "its per-pair lines (the default)",
     "--quiet": "no per-pair lines",
 }
@@ -347,7 +368,7 @@ def test_every_option_is_in_the_table(cli):
     assert python_keywords(meshdiff.profile) == python_keywords(meshdiff.profile_file)
     passed = {o.flag for o in COMPARE if o.batch is True}
     assert cli_options(cli, "batch") == passed | set(BATCH_ONLY)
-    assert counts == {"compare": 36, "profile": 17}, counts  # the options covered, stated
+    assert counts == {"compare": 37, "profile": 18}, counts  # the options covered, stated
 
 
 CASES = [pytest.param("compare", o, c, id=f"compare {o.flag}: {c!r}") for o in COMPARE for c in o.cases] + [
@@ -368,7 +389,10 @@ def run(args, cwd):
 
 
 def files_of(folder):
-    return {p.name: p.read_bytes() for p in pathlib.Path(folder).iterdir()}
+    """The files of a folder; in an HTML report, the command line that made it (the meta element) left out."""
+    meta = re.compile(rb'(<script type="application/json" id="meshdiff-meta">).*?(</script>)')
+    return {p.name: meta.sub(rb"\1\2", p.read_bytes()) if p.suffix == ".html" else p.read_bytes()
+            for p in pathlib.Path(folder).iterdir()}
 
 
 def python_call(command, a, b, kw, cwd):

@@ -6,6 +6,7 @@
 #include "meshdiff/io/facts.h"
 #include "meshdiff/io/output_file.h"
 #include "meshdiff/options.h"
+#include "meshdiff/report/html.h"
 #include "meshdiff/report/json.h"
 #include "meshdiff/report/text.h"
 #include "meshdiff/report/vertex_maps.h"
@@ -13,6 +14,7 @@
 #include <fmt/format.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <future>
@@ -64,6 +66,10 @@ void validate(const CompareOutputs& o, const CompareOptions& options, const std:
                            o.color_range->first < o.color_range->second))
         throw OptionError("outputs.color_range", fmt::format("[{}, {}] is not MIN MAX with MIN < MAX, both finite",
                                                              o.color_range->first, o.color_range->second));
+    if (o.color_range && o.color_percentile)
+        throw OptionError("outputs.color_range", "a fixed range or a percentile, not both");
+    if (o.color_percentile && !(*o.color_percentile > 0.0 && *o.color_percentile <= 100.0))
+        throw OptionError("outputs.color_range", fmt::format("percentile {} is not in (0, 100]", *o.color_percentile));
     const auto [original_map, processed_map] = map_paths(o);
     const char* original_field = o.distance_maps.empty() ? "outputs.distance_map_original" : "outputs.distance_maps";
     const char* processed_field = o.distance_maps.empty() ? "outputs.distance_map" : "outputs.distance_maps";
@@ -73,10 +79,12 @@ void validate(const CompareOutputs& o, const CompareOptions& options, const std:
         if (!processed_map.empty()) throw OptionError(processed_field, "needs the surface distance");
         if (!original_map.empty()) throw OptionError(original_field, "needs the surface distance");
     }
+    if (o.html == "-") throw OptionError("outputs.html", "is a file: '-' (standard output) is not offered");
     check_targets({{"outputs.json", o.json},
                    {processed_field, processed_map},
                    {original_field, original_map},
-                   {"outputs.samples_out", o.samples_out}},
+                   {"outputs.samples_out", o.samples_out},
+                   {"outputs.html", o.html}},
                   inputs);
 }
 
@@ -85,6 +93,11 @@ CompareOptions with_outputs(CompareOptions options, const CompareOutputs& o)
     const auto [original_map, processed_map] = map_paths(o);
     options.vertex_distances = !original_map.empty() || !processed_map.empty();
     options.keep_samples = !o.samples_out.empty();
+    if (!o.html.empty()) {
+        options.vertex_distances = options.distance;
+        options.profile.keep_vertex_data = true;
+        if (options.summary.histogram_bins == 0) options.summary.histogram_bins = kHtmlHistogramBins;
+    }
     return options;
 }
 
@@ -92,8 +105,10 @@ std::string write_outputs(const Comparison& c, const LoadedMesh& original, const
                           const CompareOutputs& o, const std::string& original_name, const std::string& processed_name)
 {
     const auto [map_original, map_processed] = map_paths(o);
-    // Both maps share one colour scale: the given range, else [0, the largest distance of both].
+    // Both maps share one colour scale: the given range or percentile, else [0, the largest distance of both].
     std::optional<std::pair<double, double>> range = o.color_range;
+    if (!range && o.color_percentile && (!map_processed.empty() || !map_original.empty()))
+        range = distance_color_range(c, *o.color_percentile);
     if (!range && !map_processed.empty() && !map_original.empty()) range = distance_map_range(c);
     std::string legend;
     for (const auto& [path, side, mesh] : {std::tuple{map_original, MapSide::Original, &original.mesh},
@@ -101,7 +116,8 @@ std::string write_outputs(const Comparison& c, const LoadedMesh& original, const
         if (path.empty()) continue;
         const VertexMap map = distance_map(c, side, range);
         write_ply(path, *mesh, map);
-        const bool has_signed = map.scalars.size() > 1;
+        const bool has_signed = std::any_of(map.scalars.begin(), map.scalars.end(),
+                                            [](const VertexScalar& s) { return s.name == "signed_distance"; });
         legend += fmt::format("Distance map of the {}: {} (vertex property 'distance' to the {} surface{}; {})\n",
                               side == MapSide::Original ? "original" : "processed", path,
                               side == MapSide::Original ? "processed" : "original",
@@ -110,7 +126,36 @@ std::string write_outputs(const Comparison& c, const LoadedMesh& original, const
     if (!o.samples_out.empty())
         write_sample_cloud(o.samples_out, original.mesh, c.forward_samples, processed.mesh, c.backward_samples,
                            {"original " + original_name, "processed " + processed_name});
+    if (!o.html.empty()) {
+        HtmlOptions html;
+        html.command = o.command;
+        html.color_range = o.color_range;
+        if (o.color_percentile && !c.original_vertex_distance.empty()) {
+            html.color_range = distance_color_range(c, *o.color_percentile);
+            html.color_rule =
+                fmt::format("0 to the {:g}th percentile of both meshes' vertex distances", *o.color_percentile);
+        }
+        write_html_file(o.html, comparison_html(c, original.mesh, processed.mesh, comparison_json(c), html));
+        legend += fmt::format("HTML report: {}\n", o.html);
+    }
     return legend;
+}
+
+void parse_color_range(const std::string& text, CompareOutputs& o)
+{
+    const char* field = "outputs.color_range";
+    o.color_range.reset();
+    o.color_percentile.reset();
+    if (text == "max") {
+        o.color_percentile = 100.0;
+    } else if (text.size() > 1 && text[0] == 'p') {
+        o.color_percentile = parse_number(field, text.substr(1));
+    } else if (const auto colon = text.find(':'); colon != std::string::npos) {
+        o.color_range =
+            std::pair{parse_number(field, text.substr(0, colon)), parse_number(field, text.substr(colon + 1))};
+    } else {
+        throw OptionError(field, fmt::format("'{}' is not max, pNN (a percentile) or LO:HI", text));
+    }
 }
 
 void validate(const ProfileRequest& r, const std::vector<std::string>& inputs)
@@ -122,6 +167,7 @@ void validate(const ProfileRequest& r, const std::vector<std::string>& inputs)
         if (!r.profile.radii.empty())
             throw OptionError("profile.radii", "metric levels are not defined for {measure} corsini");
         if (!r.vertex_data.empty()) throw OptionError("outputs.vertex_data", "needs {measure} sigma");
+        if (!r.html.empty()) throw OptionError("outputs.html", "needs {measure} sigma");
         if (r.exact) throw OptionError("outputs.exact", "needs {measure} sigma");
         if (r.color_range != 0.0) throw OptionError("outputs.color_range", "needs {measure} sigma");
         CorsiniOptions c;
@@ -135,7 +181,8 @@ void validate(const ProfileRequest& r, const std::vector<std::string>& inputs)
         throw OptionError("outputs.color_range",
                           fmt::format("{} must be finite and > 0 (0: the 95th percentile of |H|)", r.color_range));
     if (r.exact && r.exact_property.empty()) throw OptionError("outputs.exact_property", "is empty");
-    check_targets({{"outputs.json", r.json}, {"outputs.vertex_data", r.vertex_data}}, inputs);
+    if (r.html == "-") throw OptionError("outputs.html", "is a file: '-' (standard output) is not offered");
+    check_targets({{"outputs.json", r.json}, {"outputs.vertex_data", r.vertex_data}, {"outputs.html", r.html}}, inputs);
 }
 
 ProfileReport profile_report(const LoadedMesh& loaded, const ProfileRequest& r)
@@ -163,7 +210,7 @@ ProfileReport profile_report(const LoadedMesh& loaded, const ProfileRequest& r)
         return out;
     }
     ProfileOptions options = r.profile;
-    options.keep_vertex_data = options.keep_vertex_data || !r.vertex_data.empty() || r.exact;
+    options.keep_vertex_data = options.keep_vertex_data || !r.vertex_data.empty() || r.exact || !r.html.empty();
     const RoughnessProfile profile = roughness_profile(loaded.mesh, options);
     const MeshFacts facts = facts_future.get();
     if (!r.vertex_data.empty())
@@ -181,6 +228,13 @@ ProfileReport profile_report(const LoadedMesh& loaded, const ProfileRequest& r)
         const ExactProfile e = exact_profile(loaded.mesh, H->values, options, profile);
         out.text += exact_profile_text(profile, e, r.exact_property);
         out.json["exact"] = exact_profile_json(profile, e, r.exact_property);
+    }
+    if (!r.html.empty()) {
+        HtmlOptions html;
+        html.command = r.command;
+        if (r.color_range > 0.0) html.color_range = std::pair{-r.color_range, r.color_range};
+        write_html_file(r.html, profile_html(profile, loaded.mesh, loaded.input.path, out.json, html));
+        out.text += fmt::format("HTML report: {}\n", r.html);
     }
     return out;
 }

@@ -20,6 +20,23 @@ std::pair<double, double> distance_map_range(const Comparison& c)
     return {0.0, hi};
 }
 
+std::pair<double, double> distance_color_range(const Comparison& c, double percentile)
+{
+    if (!(percentile > 0.0 && percentile <= 100.0))
+        throw InvalidArgumentError(fmt::format("distance_color_range: percentile {} is not in (0, 100]", percentile));
+    if (percentile == 100.0) return distance_map_range(c);
+    distance_map_range(c);  // the same refusal without vertex distances
+    std::vector<double> all;
+    all.reserve(c.original_vertex_distance.size() + c.processed_vertex_distance.size());
+    for (const auto* d : {&c.original_vertex_distance, &c.processed_vertex_distance})
+        for (double x : *d)
+            if (std::isfinite(x)) all.push_back(x);
+    if (all.empty()) return {0.0, 1.0};
+    const auto k = std::size_t(std::llround(percentile / 100.0 * double(all.size() - 1)));
+    std::nth_element(all.begin(), all.begin() + std::ptrdiff_t(k), all.end());
+    return {0.0, all[k] > 0.0 ? all[k] : 1.0};
+}
+
 VertexMap distance_map(const Comparison& c, MapSide side, std::optional<std::pair<double, double>> color_range)
 {
     const bool processed = side == MapSide::Processed;
@@ -43,6 +60,8 @@ VertexMap distance_map(const Comparison& c, MapSide side, std::optional<std::pai
     VertexMap m;
     m.scalars.push_back({"distance", d});
     if (sd.size() == d.size()) m.scalars.push_back({"signed_distance", sd});
+    // The distance again as "quality", the property MeshLab reads (its colourize, histogram and clamp filters).
+    m.scalars.push_back({"quality", d});
     m.colors = sequential_colors(d, lo, hi);
     m.comments = {fmt::format("per-vertex distance of {} to the surface of {}", self.input.path, other.input.path),
                   fmt::format("colour: blue (low) to red (high) over [{:.9g}, {:.9g}]", lo, hi)};

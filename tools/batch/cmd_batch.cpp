@@ -53,6 +53,7 @@ struct BatchArgs
     bool progress = false;
     double pair_timeout = 0.0;  // seconds; 0: none
     std::string maps_dir;       // distance maps of every pair, when set
+    std::string html_dir;       // the HTML report of every pair, when set
     CLI::App* app = nullptr;    // the parsed subcommand (its options are passed on to each pair)
 };
 
@@ -81,8 +82,8 @@ std::string map_prefix(const std::string& dir, const std::string& id)
 std::vector<std::string> compare_args(const BatchArgs& a, const Pair& p)
 {
     std::vector<std::string> args{"meshdiff", "compare"};
-    static const std::set<std::string> batch_only = {"out",          "shard",    "quiet", "progress",
-                                                     "pair-timeout", "maps-dir", "help"};
+    static const std::set<std::string> batch_only = {"out",          "shard",    "quiet",    "progress",
+                                                     "pair-timeout", "maps-dir", "html-dir", "help"};
     for (const CLI::Option* o : a.app->get_options()) {
         if (o->count() == 0 || o->get_lnames().empty() || batch_only.count(o->get_lnames()[0])) continue;
         const std::string name = "--" + o->get_lnames()[0];
@@ -101,6 +102,7 @@ std::vector<std::string> compare_args(const BatchArgs& a, const Pair& p)
         }
     }
     if (!a.maps_dir.empty()) args.insert(args.end(), {"--distance-maps", map_prefix(a.maps_dir, p.id)});
+    if (!a.html_dir.empty()) args.insert(args.end(), {"--html", map_prefix(a.html_dir, p.id) + ".html"});
     // The files after "--": a name that starts with '-' stays a file name.
     args.insert(args.end(), {"--json", "-", "--", p.original, p.processed});
     return args;
@@ -191,14 +193,16 @@ int run_batch(const BatchArgs& a)
         // Every option checked here, before any pair runs, as each pair's compare will check it.
         CompareOutputs outputs = to_compare_outputs(a.outputs);
         if (!a.maps_dir.empty()) outputs.distance_maps = map_prefix(a.maps_dir, "pair");
+        if (!a.html_dir.empty()) outputs.html = map_prefix(a.html_dir, "pair") + ".html";
         validate(outputs, to_compare_options(a.compare), {});
     }
-    if (!a.maps_dir.empty()) {
+    for (const auto& [dir, what] : {std::pair{a.maps_dir, "maps"}, std::pair{a.html_dir, "HTML reports"}}) {
+        if (dir.empty()) continue;
         std::error_code ec;
-        std::filesystem::create_directories(a.maps_dir, ec);
-        if (ec || !std::filesystem::is_directory(a.maps_dir))
-            throw IoError(fmt::format("{}: cannot create the maps folder ({})", a.maps_dir,
-                                      ec ? ec.message() : "not a directory"));
+        std::filesystem::create_directories(dir, ec);
+        if (ec || !std::filesystem::is_directory(dir))
+            throw IoError(
+                fmt::format("{}: cannot create the {} folder ({})", dir, what, ec ? ec.message() : "not a directory"));
     }
     const std::vector<Pair> pairs = read_pairs(a.pairs);
     // No pair's mesh is the output either (exit 2, before --out is opened).
@@ -241,6 +245,7 @@ int run_batch(const BatchArgs& a)
             const std::string prefix = map_prefix(a.maps_dir, p.id);
             line["distance_maps"] = {{"original", prefix + "_original.ply"}, {"processed", prefix + "_processed.ply"}};
         }
+        if (code == kOk && !a.html_dir.empty()) line["html"] = map_prefix(a.html_dir, p.id) + ".html";
         (code == kOk ? ok : failed) += 1;
         // One write of the whole record with its newline: a kill leaves a whole line or a torn last one.
         const std::string text = line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
@@ -282,8 +287,9 @@ void add_batch_command(CLI::App& app, Action& action)
         ->capture_default_str();
     add_compare_options(sub, args->compare);
     sub->add_option("--color-range", args->outputs.color_range,
-                    "with --maps-dir: one distance colour range MIN MAX for the maps of every pair")
-        ->expected(2);
+                    "with --maps-dir: the distance colour range of the maps of every pair: MIN MAX, LO:HI, max or "
+                    "pNN (as compare's)")
+        ->expected(1, 2);
     add_threads_option(sub, args->threads);
     auto* progress = sub->add_flag("--progress", args->progress,
                                    "show the progress (one line per pair on stderr; the default, as for compare "
@@ -293,6 +299,9 @@ void add_batch_command(CLI::App& app, Action& action)
                     "seconds one pair may take before it is stopped and recorded as an error (exit_code 124); 0: "
                     "no limit")
         ->capture_default_str();
+    sub->add_option("--html-dir", args->html_dir,
+                    "write the HTML report of every pair into this folder: ID.html (the id made file-safe, as for "
+                    "--maps-dir); the record names it (\"html\")");
     sub->add_option("--maps-dir", args->maps_dir,
                     "write both distance maps of every pair into this folder: ID_original.ply and ID_processed.ply "
                     "(the id made file-safe), one colour scale per pair");

@@ -27,7 +27,8 @@ struct VertexMap
 //! The distance map of a comparison made with CompareOptions::vertex_distances:
 //! per vertex of the processed mesh its exact distance to the original surface
 //! (property "distance"; and "signed_distance", positive outside, when the
-//! original can be signed against: signed_distance.h), coloured by sequential_colors() over
+//! original can be signed against: signed_distance.h; then "quality", the
+//! distance again, which MeshLab reads as its per-vertex quality), coloured by sequential_colors() over
 //! \p color_range, by default [0, largest distance]. With certified Hausdorff
 //! distances, two comments mark where they are attained on the processed
 //! mesh (point and face).
@@ -54,6 +55,13 @@ VertexMap distance_map(const Comparison& comparison, MapSide side,
 //! two maps of a comparison.
 //! \throw InvalidArgumentError if the comparison has no vertex distances.
 std::pair<double, double> distance_map_range(const Comparison& comparison);
+
+//! [0, the \p percentile th percentile (nearest rank) of the vertex distances
+//! of both meshes]: a colour scale robust to a few worst vertices (100: the
+//! largest, as distance_map_range()); [0, 1] if that is 0.
+//! \throw InvalidArgumentError if the comparison has no vertex distances or
+//!        \p percentile is not in (0, 100].
+std::pair<double, double> distance_color_range(const Comparison& comparison, double percentile);
 
 //! The per-vertex data of a profile made with keep_vertex_data: H, D_<level>
 //! per level, D_global, D_r<radius> per metric level (the radius's decimal

@@ -1,0 +1,499 @@
+// The script of meshdiff's HTML report (src/report/html.cpp inlines it after
+// three.js and OrbitControls). It reads three JSON elements of the page:
+// meshdiff-report (the JSON report, as `--json` writes it), meshdiff-meta
+// (version, command) and meshdiff-view (the meshes as drawn and their
+// per-vertex fields), and builds the tables, the plots (inline SVG) and the
+// 3D view. window.meshdiffReport exposes the state for scripts and tests.
+(function () {
+  'use strict';
+  const byId = (id) => document.getElementById(id);
+  const readJson = (id) => JSON.parse(byId(id).textContent);
+  const report = readJson('meshdiff-report');
+  const meta = readJson('meshdiff-meta');
+  const view = readJson('meshdiff-view');
+  const app = byId('app');
+  // A comparison's page shows two meshes; a profile's (meshdiff.profile/1) one, its keys at the top level.
+  const isProfile = String(report.schema || '').startsWith('meshdiff.profile');
+  const NAMES = view.meshes.map((m) => m.role);
+  const PREFIX = isProfile ? [''] : ['original.', 'processed.'];
+
+  // ---- formatting and elements -------------------------------------------------
+  function fmt(x) {
+    if (x === null || x === undefined) return '\u2014';
+    if (typeof x === 'boolean') return x ? 'yes' : 'no';
+    if (typeof x !== 'number') return String(x);
+    if (Number.isInteger(x)) return String(x);
+    return x.toPrecision(6);
+  }
+  function el(tag, attrs, children) {
+    const e = document.createElement(tag);
+    for (const [k, v] of Object.entries(attrs || {})) {
+      if (k === 'text') e.textContent = v;
+      else if (k === 'cls') e.className = v;
+      else e.setAttribute(k, v);
+    }
+    for (const c of children || []) e.appendChild(typeof c === 'string' ? document.createTextNode(c) : c);
+    return e;
+  }
+  function get(path) {
+    let x = report;
+    for (const k of path.split('.')) {
+      if (x === null || x === undefined) return undefined;
+      x = x[k];
+    }
+    return x;
+  }
+  // A table cell showing the report's value at `path`; data-key lets a script check it against the JSON.
+  function cell(path) {
+    const v = get(path);
+    const td = el('td', { text: fmt(v), 'data-key': path });
+    if (typeof v === 'number') td.setAttribute('data-value', String(v));
+    return td;
+  }
+  function table(head, rows) {
+    const t = el('table');
+    t.appendChild(el('tr', {}, head.map((h, i) => el('th', { text: h, cls: i === 0 ? 'l' : '' }))));
+    for (const r of rows) t.appendChild(el('tr', {}, r));
+    return t;
+  }
+  const section = (title) => app.appendChild(el('h2', { text: title }));
+
+  // ---- header and meshes ------------------------------------------------------------
+  app.appendChild(el('h1', { text: isProfile ? 'meshdiff profile: ' + get('mesh.path') :
+    'meshdiff: ' + get('original.mesh.path') + ' vs ' + get('processed.mesh.path') }));
+  app.appendChild(el('p', { cls: 'sub', text: 'meshdiff ' + meta.version + ', report schema ' + report.schema }));
+  app.appendChild(el('code', { cls: 'cmd', id: 'command', text: meta.command }));
+
+  section(isProfile ? 'Mesh' : 'Meshes');
+  const meshRows = [
+    ['file', 'path'], ['vertices', 'vertices'], ['faces', 'faces'], ['components', 'components'],
+    ['closed', 'closed'], ['boundary loops', 'boundary_loops'], ['area', 'area'], ['bounding-box diagonal', 'bbox.diagonal'],
+  ];
+  app.appendChild(table([''].concat(NAMES), meshRows.map(([label, key]) =>
+    [el('td', { cls: 'l', text: label })].concat(PREFIX.map((m) => cell(m + 'mesh.' + key))))));
+  PREFIX.forEach((m, k) => {
+    const w = get(m + 'warnings') || [];
+    if (w.length) {
+      app.appendChild(el('p', { cls: 'warn', text: NAMES[k] + ': ' + w.length + ' warning' + (w.length > 1 ? 's' : '') }));
+      app.appendChild(el('ul', { cls: 'warn' }, w.map((s) => el('li', { text: s }))));
+    }
+  });
+
+  // ---- surface distance ---------------------------------------------------------------
+  const sd = report.surface_distance;
+  if (sd) {
+    section('Surface distance');
+    app.appendChild(el('p', { text: 'Relative values are relative to the ' + sd.diagonal_of + ' (' + fmt(sd.diagonal) + ').' }));
+    const h = sd.hausdorff;
+    if (h && h.lower !== undefined) {
+      app.appendChild(table(['Hausdorff', 'lower', 'upper', 'lower / diagonal', 'upper / diagonal'], [[
+        el('td', { cls: 'l', text: h.certified ? 'certified' : h.method }),
+        cell('surface_distance.hausdorff.lower'), cell('surface_distance.hausdorff.upper'),
+        cell('surface_distance.hausdorff.relative.lower'), cell('surface_distance.hausdorff.relative.upper')]]));
+      const at = sd[h.attained] && sd[h.attained].hausdorff && sd[h.attained].hausdorff.location;
+      if (at) {
+        app.appendChild(el('p', { text: 'Attained ' + h.attained + ' (' + (h.attained === 'forward' ?
+          'original \u2192 processed' : 'processed \u2192 original') + ') at (' + at.point.map(fmt).join(', ') +
+          ') on face ' + at.face + ', closest point (' + at.closest_point.map(fmt).join(', ') + '): the magenta marker.' }));
+      }
+    } else {
+      app.appendChild(table(['Hausdorff (sampled)', 'value', '/ diagonal'], [[el('td', { cls: 'l', text: 'sampled maximum' }),
+        cell('surface_distance.sampled_hausdorff'), cell('surface_distance.sampled_hausdorff_relative')]]));
+    }
+    const stats = ['min', 'max', 'mean', 'rms', 'std', 'p50', 'p95', 'p99', 'p999'];
+    const dirs = ['forward', 'backward'];
+    app.appendChild(table(['', 'forward', 'backward', 'forward / diagonal', 'backward / diagonal'], stats.map((s) =>
+      [el('td', { cls: 'l', text: s })].concat(dirs.map((d) => cell('surface_distance.' + d + '.' + s)),
+        dirs.map((d) => cell('surface_distance.' + d + '.relative.' + s))))));
+    app.appendChild(el('p', { text: 'forward: ' + sd.forward_is + '; ' + fmt(get('surface_distance.forward.samples')) +
+      ' and ' + fmt(get('surface_distance.backward.samples')) + ' samples.' }));
+  }
+
+  // ---- roughness ------------------------------------------------------------------------
+  const rd = report.roughness_distance;
+  const sigmaOf = (m) => get(m + '.sigma');
+  if (rd && sigmaOf('original')) {
+    section('Roughness profile');
+    app.appendChild(el('p', { text: rd.formula + ', k = ' + rd.k }));
+    const rows = rd.levels.map((L, i) => [el('td', { cls: 'l', text: String(L) }),
+      cell('original.sigma.' + i), cell('processed.sigma.' + i),
+      cell('roughness_distance.relative_change.' + i), cell('roughness_distance.distance.' + i)]);
+    if (rd.global) rows.push([el('td', { cls: 'l', text: 'global' }), cell('original.sigma_global'), cell('processed.sigma_global'),
+      cell('roughness_distance.global.relative_change'), cell('roughness_distance.global.distance')]);
+    app.appendChild(table(['level', 'sigma original', 'sigma processed', 'relative change', 'd_L'], rows));
+  } else if (isProfile && get('sigma')) {
+    section('Roughness profile');
+    app.appendChild(el('p', { text: String(get('neighborhood') || '') }));
+    const rows = get('levels').map((L, i) => [el('td', { cls: 'l', text: String(L) }), cell('sigma.' + i),
+      cell('level_details.' + i + '.vertices_used'), cell('level_details.' + i + '.top_share')]);
+    if (get('global')) rows.push([el('td', { cls: 'l', text: 'global' }), cell('sigma_global'), cell('global.vertices_used'), cell('global.top_share')]);
+    app.appendChild(table(['level', 'sigma', 'vertices used', 'share of the worst 0.1%'], rows));
+  } else if (report.roughness_unavailable) {
+    section('Roughness profile');
+    app.appendChild(el('p', { text: 'unavailable: ' + report.roughness_unavailable }));
+  }
+
+  // ---- plots (inline SVG) -----------------------------------------------------------------
+  const SVG = 'http://www.w3.org/2000/svg';
+  function svg(tag, attrs, text) {
+    const e = document.createElementNS(SVG, tag);
+    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+    if (text !== undefined) e.textContent = text;
+    return e;
+  }
+  // A plot of `series` ({name, color, ys, bars}) over the category labels `xs`.
+  function plot(id, title, xs, series, ylabel) {
+    const W = 560, H = 260, L = 62, R = 12, T = 24, B = 34;
+    const s = svg('svg', { width: W, height: H, class: 'plot', id: id, viewBox: '0 0 ' + W + ' ' + H });
+    const all = [].concat(...series.map((q) => q.ys)).filter((y) => Number.isFinite(y));
+    let lo = Math.min(0, ...all), hi = Math.max(...all, 0);
+    if (!(hi > lo)) hi = lo + 1;
+    const X = (i) => L + (xs.length > 1 ? i * (W - L - R) / (xs.length - 1) : (W - L - R) / 2);
+    const Y = (y) => T + (hi - y) * (H - T - B) / (hi - lo);
+    s.appendChild(svg('text', { x: W / 2, y: 15, 'text-anchor': 'middle', 'font-weight': 'bold' }, title));
+    for (let k = 0; k <= 4; ++k) {
+      const y = lo + k * (hi - lo) / 4;
+      s.appendChild(svg('line', { x1: L, x2: W - R, y1: Y(y), y2: Y(y), stroke: '#eee' }));
+      s.appendChild(svg('text', { x: L - 4, y: Y(y) + 4, 'text-anchor': 'end' }, Number(y.toPrecision(3)).toString()));
+    }
+    const every = Math.ceil(xs.length / 12);
+    xs.forEach((x, i) => {
+      if (i % every === 0 || i === xs.length - 1) s.appendChild(svg('text', { x: X(i), y: H - B + 14, 'text-anchor': 'middle' }, x));
+    });
+    s.appendChild(svg('text', { x: 12, y: T + (H - T - B) / 2, transform: 'rotate(-90 12 ' + (T + (H - T - B) / 2) + ')', 'text-anchor': 'middle' }, ylabel));
+    series.forEach((q, n) => {
+      if (q.bars) {
+        const bw = Math.max(1, (W - L - R) / Math.max(xs.length, 1) * 0.8 / series.length);
+        q.ys.forEach((y, i) => {
+          if (!Number.isFinite(y)) return;
+          const r = svg('rect', { x: X(i) - bw * series.length / 2 + n * bw, y: Math.min(Y(y), Y(0)), width: bw, height: Math.abs(Y(y) - Y(0)), fill: q.color });
+          r.appendChild(svg('title', {}, q.name + ' ' + xs[i] + ': ' + fmt(y)));
+          s.appendChild(r);
+        });
+      } else {
+        const pts = q.ys.map((y, i) => Number.isFinite(y) ? X(i) + ',' + Y(y) : null).filter((p) => p);
+        s.appendChild(svg('polyline', { points: pts.join(' '), fill: 'none', stroke: q.color, 'stroke-width': 2 }));
+        q.ys.forEach((y, i) => {
+          if (!Number.isFinite(y)) return;
+          const c = svg('circle', { cx: X(i), cy: Y(y), r: 3, fill: q.color });
+          c.appendChild(svg('title', {}, q.name + ' ' + xs[i] + ': ' + fmt(y)));
+          s.appendChild(c);
+        });
+      }
+      s.appendChild(svg('text', { x: W - R - 4, y: T + 14 + 14 * n, 'text-anchor': 'end', fill: q.color }, q.name));
+    });
+    return s;
+  }
+  const plots = el('div', { cls: 'row' });
+  if (rd && sigmaOf('original')) {
+    const xs = rd.levels.map(String).concat(rd.global ? ['global'] : []);
+    const sig = (m) => sigmaOf(m).concat(rd.global ? [get(m + '.sigma_global')] : []);
+    plots.appendChild(plot('plot-sigma', 'sigma per ring level', xs, [
+      { name: 'original', color: '#1f77b4', ys: sig('original') }, { name: 'processed', color: '#d62728', ys: sig('processed') }], 'sigma_L'));
+    plots.appendChild(plot('plot-dl', 'roughness distance d_L per level', xs, [
+      { name: 'd_L', color: '#555', bars: true, ys: rd.distance.concat(rd.global ? [rd.global.distance] : []) }], 'd_L'));
+    if (get('original.radii') && get('processed.radii')) {
+      plots.appendChild(plot('plot-sigma-radii', 'sigma per radius (unit-scaled mesh)', get('original.radii').map(String), [
+        { name: 'original', color: '#1f77b4', ys: get('original.sigma_radii') },
+        { name: 'processed', color: '#d62728', ys: get('processed.sigma_radii') }], 'sigma_r'));
+    }
+  }
+  if (isProfile && get('sigma')) {
+    const xs = get('levels').map(String).concat(get('global') ? ['global'] : []);
+    plots.appendChild(plot('plot-sigma', 'sigma per ring level', xs, [
+      { name: 'sigma', color: '#1f77b4', ys: get('sigma').concat(get('global') ? [get('sigma_global')] : []) }], 'sigma_L'));
+    if (get('radii')) plots.appendChild(plot('plot-sigma-radii', 'sigma per radius (unit-scaled mesh)', get('radii').map(String),
+      [{ name: 'sigma', color: '#1f77b4', ys: get('sigma_radii') }], 'sigma_r'));
+  }
+  for (const d of ['forward', 'backward']) {
+    const hist = sd && sd[d] && sd[d].histogram;
+    if (!hist) continue;
+    const xs = hist.counts.map((_, i) => Number(((hist.edges[i] + hist.edges[i + 1]) / 2).toPrecision(3)).toString());
+    plots.appendChild(plot('plot-hist-' + d, d + ' distance histogram (' + hist.counts.length + ' bins)', xs,
+      [{ name: d, color: d === 'forward' ? '#1f77b4' : '#d62728', bars: true, ys: hist.counts }], 'samples'));
+  }
+  if (plots.childNodes.length) {
+    section('Plots');
+    app.appendChild(plots);
+  }
+
+  // ---- colour maps: the PLY maps' ramps (src/report/colormap.cpp), value for value ----------
+  const toByte = (x) => Math.round(Math.min(Math.max(x, 0), 1) * 255);
+  function sequential(v, lo, hi) {
+    if (Number.isNaN(v)) return [128, 128, 128];
+    const span = hi > lo ? hi - lo : 1.0;
+    const t = Math.min(Math.max((v - lo) / span, 0.0), 1.0) * 4.0;
+    let r, g, b;
+    if (t < 1) { r = 0; g = t; b = 1; } else if (t < 2) { r = 0; g = 1; b = 2 - t; } else if (t < 3) { r = t - 2; g = 1; b = 0; } else { r = 1; g = 4 - t; b = 0; }
+    return [toByte(r), toByte(g), toByte(b)];
+  }
+  function diverging(v, range) {
+    if (Number.isNaN(v)) return [128, 128, 128];
+    if (!(range > 0.0)) range = 1.0;
+    const t = Math.min(Math.max(v / range, -1.0), 1.0);
+    const r = t < 0 ? 1.0 + t * (1.0 - 0.23) : 1.0 - t * (1.0 - 0.71);
+    const g = t < 0 ? 1.0 + t * (1.0 - 0.30) : 1.0 - t * (1.0 - 0.02);
+    const b = t < 0 ? 1.0 + t * (1.0 - 0.75) : 1.0 - t * (1.0 - 0.15);
+    return [toByte(r), toByte(g), toByte(b)];
+  }
+  const colorOf = (f, v) => f.map === 'sequential' ? sequential(v, f.range[0], f.range[1]) : diverging(v, f.range[1]);
+
+  // ---- decoding the meshes ----------------------------------------------------------------
+  function bytes(b64) {
+    const s = atob(b64);
+    const out = new Uint8Array(s.length);
+    for (let i = 0; i < s.length; ++i) out[i] = s.charCodeAt(i);
+    return out.buffer;
+  }
+  function decodeField(f) {
+    if (f.encoding === 'float64') return new Float64Array(bytes(f.data));
+    const q = new Uint16Array(bytes(f.data));
+    const out = new Float64Array(q.length);
+    for (let i = 0; i < q.length; ++i) out[i] = q[i] === 65535 ? NaN : f.lo + q[i] * f.step;
+    return out;
+  }
+  const meshes = view.meshes.map((m) => ({
+    positions: new Float32Array(bytes(m.positions)), indices: new Uint32Array(bytes(m.indices)), info: m, values: {}, colors: {},
+  }));
+  function values(k, name) {
+    const m = meshes[k];
+    if (!m.values[name]) m.values[name] = decodeField(m.info.fields[name]);
+    return m.values[name];
+  }
+  function colors(k, name) {
+    const m = meshes[k];
+    if (!m.colors[name]) {
+      const f = view.fields.find((q) => q.name === name), v = values(k, name), c = new Uint8Array(3 * v.length);
+      for (let i = 0; i < v.length; ++i) c.set(colorOf(f, v[i]), 3 * i);
+      m.colors[name] = c;
+    }
+    return m.colors[name];
+  }
+
+  // ---- the 3D view ------------------------------------------------------------------------
+  section('3D view');
+  const reduced = meshes.filter((m) => m.info.reduced);
+  if (reduced.length) {
+    app.appendChild(el('p', { cls: 'note', id: 'reduced-note', text: 'Drawn reduced above ' + view.face_budget.toLocaleString('en') +
+      ' faces per mesh (vertex clustering; a cluster shows the largest value of its vertices): ' +
+      meshes.map((m, k) => NAMES[k] + ' ' + m.info.faces.toLocaleString('en') + ' of ' + m.info.full_faces.toLocaleString('en') + ' faces').join(', ') +
+      '. Every number of this report is of the full meshes.' }));
+  }
+  const controlsBox = el('div', { id: 'controls' });
+  const fieldSelect = el('select', { id: 'field' }, view.fields.map((f) => el('option', { value: f.name,
+    text: f.name === 'distance' ? 'distance to the other mesh' : f.name === 'H' ? 'mean curvature H' : f.name })));
+  const modeSelect = el('select', { id: 'mode' }, [['side', 'side by side'], ['original', 'original only'], ['processed', 'processed only']].map(([v, t]) => el('option', { value: v, text: t })));
+  const shading = el('input', { type: 'checkbox', id: 'shading', checked: '' });
+  controlsBox.append(el('label', {}, ['colour by ', fieldSelect]));
+  if (meshes.length > 1) controlsBox.append(el('label', {}, ['show ', modeSelect]));
+  controlsBox.append(el('label', {}, [shading, ' shading']),
+    el('span', { cls: 'sub', text: 'drag: rotate, wheel: zoom, right-drag: pan' + (meshes.length > 1 ? ' (both views share one camera)' : '') + '; click the surface for its value' }));
+  app.appendChild(controlsBox);
+  const barCanvas = el('canvas', { width: 256, height: 14, id: 'colorbar-ramp' });
+  const barLo = el('span', { id: 'colorbar-lo' }), barHi = el('span', { id: 'colorbar-hi' }), barLabel = el('span', { id: 'colorbar-label' });
+  app.appendChild(el('div', { id: 'colorbar' }, [barLo, barCanvas, barHi, barLabel]));
+  const box = el('div', { id: 'view-box' });
+  const canvas = el('canvas', { id: 'view' });
+  const labels = NAMES.map((n) => el('span', { cls: 'view-label', text: n }));
+  const tooltip = el('div', { id: 'tooltip' });
+  box.append(canvas, ...labels, tooltip);
+  app.appendChild(box);
+  const probe = el('div', { id: 'probe' });
+  app.appendChild(probe);
+
+  const state = { field: view.fields.length ? view.fields[0].name : null, mode: 'side', shading: true, frames: 0, error: null };
+  let renderer = null;
+  try {
+    renderer = new THREE.WebGLRenderer({ canvas: canvas, antialias: true, preserveDrawingBuffer: true });
+  } catch (e) {
+    state.error = 'WebGL is not available: ' + e.message;
+    box.replaceWith(el('p', { cls: 'warn', text: state.error + '. The numbers above are complete.' }));
+  }
+  const lo3 = new THREE.Vector3(Infinity, Infinity, Infinity), hi3 = new THREE.Vector3(-Infinity, -Infinity, -Infinity);
+  for (const m of meshes)
+    for (let i = 0; i < m.positions.length; i += 3) {
+      lo3.min(new THREE.Vector3(m.positions[i], m.positions[i + 1], m.positions[i + 2]));
+      hi3.max(new THREE.Vector3(m.positions[i], m.positions[i + 1], m.positions[i + 2]));
+    }
+  const center = lo3.clone().add(hi3).multiplyScalar(0.5), diag = Math.max(lo3.distanceTo(hi3), 1e-30);
+  const camera = new THREE.PerspectiveCamera(35, 1, diag * 0.01, diag * 20);
+  camera.position.copy(center).add(new THREE.Vector3(0, 0, 1.5 * diag));
+  camera.lookAt(center);
+  const scenes = meshes.map((m, k) => {
+    const scene = new THREE.Scene();
+    scene.background = new THREE.Color(0xffffff);
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(m.positions, 3));
+    const empty = m.indices.length === 0;
+    if (!empty) g.setIndex(new THREE.BufferAttribute(m.indices, 1));
+    g.setAttribute('color', new THREE.BufferAttribute(new Uint8Array(m.positions.length).fill(128), 3, true));
+    if (!empty) g.computeVertexNormals();
+    const lit = new THREE.MeshLambertMaterial({ vertexColors: THREE.VertexColors, side: THREE.DoubleSide });
+    const flat = new THREE.MeshBasicMaterial({ vertexColors: THREE.VertexColors, side: THREE.DoubleSide });
+    const object = empty ? new THREE.Points(g, new THREE.PointsMaterial({ vertexColors: THREE.VertexColors, size: diag * 0.004 }))
+      : new THREE.Mesh(g, lit);
+    scene.add(object);
+    scene.add(new THREE.AmbientLight(0xffffff, 0.55));
+    const light = new THREE.DirectionalLight(0xffffff, 0.5);
+    scene.add(light);
+    m.geometry = g;
+    return { scene, object, light, lit, flat, empty, markers: [] };
+  });
+
+  // The certified Hausdorff distance: where it is attained (on the mesh whose samples reach it) and its closest point.
+  const marker = { point: null, closest: null, on: null };
+  const hd = sd && sd.hausdorff;
+  if (hd && hd.attained && sd[hd.attained].hausdorff && sd[hd.attained].hausdorff.location) {
+    const loc = sd[hd.attained].hausdorff.location, on = hd.attained === 'forward' ? 0 : 1;
+    Object.assign(marker, { point: loc.point, closest: loc.closest_point, on: on, lower: hd.lower, upper: hd.upper, direction: hd.attained });
+    const add = (k, p, r, what) => {
+      const s = new THREE.Mesh(new THREE.SphereGeometry(r, 24, 16), new THREE.MeshBasicMaterial({ color: 0xff00ff, depthTest: false }));
+      s.renderOrder = 10;
+      s.position.set(p[0], p[1], p[2]);
+      s.userData.what = what;
+      scenes[k].scene.add(s);
+      scenes[k].markers.push(s);
+    };
+    add(on, loc.point, diag * 0.012, 'certified Hausdorff distance in [' + fmt(hd.lower) + ', ' + fmt(hd.upper) + '], attained here (' + hd.attained + ') at (' + loc.point.map(fmt).join(', ') + ')');
+    add(1 - on, loc.closest_point, diag * 0.007, 'closest point (' + loc.closest_point.map(fmt).join(', ') + ') of the certified Hausdorff distance in [' + fmt(hd.lower) + ', ' + fmt(hd.upper) + ']');
+  }
+
+  let controls = null;
+  if (renderer) {
+    controls = new THREE.OrbitControls(camera, canvas);
+    controls.target.copy(center);
+    controls.update();
+    controls.addEventListener('change', requestRender);
+  }
+  // The viewports: [scene index, x, width] in CSS pixels.
+  function viewports() {
+    const w = canvas.clientWidth;
+    if (meshes.length === 1) return [[0, 0, w]];
+    if (state.mode === 'side') return [[0, 0, w / 2], [1, w / 2, w - w / 2]];
+    return [[state.mode === 'original' ? 0 : 1, 0, w]];
+  }
+  let pending = false;
+  function requestRender() {
+    if (pending || !renderer) return;
+    pending = true;
+    requestAnimationFrame(render);
+  }
+  function render() {
+    pending = false;
+    const w = canvas.clientWidth, h = canvas.clientHeight;
+    renderer.setPixelRatio(window.devicePixelRatio || 1);
+    renderer.setSize(w, h, false);
+    renderer.setScissorTest(true);
+    const vps = viewports();
+    labels.forEach((l) => { l.style.display = 'none'; });
+    for (const [k, x, vw] of vps) {
+      renderer.setViewport(x, 0, vw, h);
+      renderer.setScissor(x, 0, vw, h);
+      camera.aspect = vw / h;
+      camera.updateProjectionMatrix();
+      scenes[k].light.position.copy(camera.position);
+      renderer.render(scenes[k].scene, camera);
+      labels[k].style.display = '';
+      labels[k].style.left = (x + 6) + 'px';
+    }
+    state.frames++;
+  }
+  function drawColorbar(f) {
+    const ctx = barCanvas.getContext('2d');
+    for (let i = 0; i < 256; ++i) {
+      const v = f.range[0] + (f.range[1] - f.range[0]) * i / 255;
+      const c = colorOf(f, v);
+      ctx.fillStyle = 'rgb(' + c.join(',') + ')';
+      ctx.fillRect(i, 0, 1, 14);
+    }
+    barLo.textContent = fmt(f.range[0]);
+    barHi.textContent = fmt(f.range[1]);
+    barLabel.textContent = f.label + (f.name === 'distance' ? ' (units of the meshes)' : '') + '; range: ' + f.rule + '; grey: undefined';
+  }
+  function setField(name) {
+    const f = view.fields.find((q) => q.name === name);
+    if (!f) throw new Error('no field ' + name);
+    state.field = name;
+    fieldSelect.value = name;
+    meshes.forEach((m, k) => {
+      const attr = m.geometry.getAttribute('color');
+      attr.array.set(colors(k, name));
+      attr.needsUpdate = true;
+    });
+    drawColorbar(f);
+    requestRender();
+  }
+  function setMode(mode) {
+    state.mode = mode;
+    modeSelect.value = mode;
+    requestRender();
+  }
+  function setShading(on) {
+    state.shading = on;
+    shading.checked = on;
+    for (const s of scenes) if (!s.empty) s.object.material = on ? s.lit : s.flat;
+    requestRender();
+  }
+  fieldSelect.addEventListener('change', () => setField(fieldSelect.value));
+  modeSelect.addEventListener('change', () => setMode(modeSelect.value));
+  shading.addEventListener('change', () => setShading(shading.checked));
+  window.addEventListener('resize', requestRender);
+
+  // Picking: the viewport under the pointer, then a ray into its scene.
+  const raycaster = new THREE.Raycaster();
+  function pick(ev, objects) {
+    const r = canvas.getBoundingClientRect(), x = ev.clientX - r.left, y = ev.clientY - r.top;
+    const vp = viewports().find(([, vx, vw]) => x >= vx && x < vx + vw);
+    if (!vp) return null;
+    const [k, vx, vw] = vp;
+    camera.aspect = vw / r.height;
+    camera.updateProjectionMatrix();
+    raycaster.setFromCamera(new THREE.Vector2((x - vx) / vw * 2 - 1, -(y / r.height) * 2 + 1), camera);
+    const hits = raycaster.intersectObjects(objects(k));
+    return hits.length ? { k, hit: hits[0] } : null;
+  }
+  canvas.addEventListener('mousemove', (ev) => {
+    const p = pick(ev, (k) => scenes[k].markers);
+    if (!p) { tooltip.style.display = 'none'; return; }
+    const r = canvas.getBoundingClientRect();
+    tooltip.textContent = p.hit.object.userData.what;
+    tooltip.style.left = (ev.clientX - r.left + 12) + 'px';
+    tooltip.style.top = (ev.clientY - r.top + 12) + 'px';
+    tooltip.style.display = 'block';
+  });
+  canvas.addEventListener('click', (ev) => {
+    const p = pick(ev, (k) => scenes[k].markers.concat(scenes[k].empty ? [] : [scenes[k].object]));
+    if (!p) { probe.textContent = ''; return; }
+    if (p.hit.object.userData.what) { probe.textContent = p.hit.object.userData.what; return; }
+    const m = meshes[p.k], f = p.hit.face, pt = p.hit.point;
+    let best = f.a, bd = Infinity;
+    for (const v of [f.a, f.b, f.c]) {
+      const d = pt.distanceToSquared(new THREE.Vector3(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]));
+      if (d < bd) { bd = d; best = v; }
+    }
+    probe.textContent = NAMES[p.k] + (m.info.reduced ? ' (reduced) cluster ' : ' vertex ') + best + ' at (' +
+      [pt.x, pt.y, pt.z].map(fmt).join(', ') + '): ' + state.field + ' = ' + fmt(values(p.k, state.field)[best]);
+  });
+
+  // Where a point of scene k's space is drawn, in CSS pixels of the canvas (for scripts and tests).
+  function project(k, p) {
+    const vp = viewports().find(([s]) => s === k);
+    if (!vp) return null;
+    const [, vx, vw] = vp, h = canvas.clientHeight;
+    camera.aspect = vw / h;
+    camera.updateProjectionMatrix();
+    const q = new THREE.Vector3(p[0], p[1], p[2]).project(camera);
+    return { x: vx + (q.x + 1) / 2 * vw, y: (1 - q.y) / 2 * h };
+  }
+  if (state.field && renderer) setField(state.field);
+  setShading(true);
+  window.meshdiffReport = {
+    report, meta, view, state, marker, setField, setMode, setShading, project,
+    colors: (k, name) => colors(k, name || state.field),
+    values: (k, name) => values(k, name || state.field),
+    markerPositions: () => scenes.map((s) => s.markers.map((o) => o.position.toArray())),
+    colorOf: (name, v) => colorOf(view.fields.find((q) => q.name === name), v),
+    ready: true,
+  };
+  requestRender();
+})();
