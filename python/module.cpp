@@ -432,8 +432,8 @@ void def_compare(py::module_& m)
                                  normalize, trim, local, local_trim, k, roughness, distance, samples, density,
                                  face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff,
                                  hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore, histogram,
-                                 json, distance_map, distance_map_original, distance_maps, samples_out, html, color_range,
-                                 threads));
+                                 json, distance_map, distance_map_original, distance_maps, samples_out, html,
+                                 color_range, threads));
         },
         compare_doc, py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"));
     def_compare_like(
@@ -450,8 +450,8 @@ void def_compare(py::module_& m)
                                  normalize, trim, local, local_trim, k, roughness, distance, samples, density,
                                  face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff,
                                  hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore, histogram,
-                                 json, distance_map, distance_map_original, distance_maps, samples_out, html, color_range,
-                                 threads));
+                                 json, distance_map, distance_map_original, distance_maps, samples_out, html,
+                                 color_range, threads));
         },
         compare_files_doc, py::arg("original"), py::arg("processed"));
 }
@@ -465,25 +465,26 @@ void def_profile(py::module_& m)
     m.def(
         "profile",
         [](const ArrayLike& V, const ArrayLike& F, Obj levels, Obj radii, Obj global_level, Obj curvature,
-           Obj weighting, Obj measure, Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data, Obj html,
-           Obj color_range, Obj exact, Obj exact_property, Obj threads) {
-            return py_profile(
-                V, F,
-                profile_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
-                                 normalize, trim, json, vertex_data, html, color_range, exact, exact_property, threads));
+           Obj weighting, Obj measure, Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data,
+           Obj html, Obj color_range, Obj exact, Obj exact_property, Obj threads) {
+            return py_profile(V, F,
+                              profile_keywords(levels, radii, global_level, curvature, weighting, measure,
+                                               unbiased_variance, normalize, trim, json, vertex_data, html, color_range,
+                                               exact, exact_property, threads));
         },
         profile_doc.c_str(), py::arg("V"), py::arg("F"), py::kw_only(), py::arg("levels") = py::none(),
         py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
         py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
         py::arg("unbiased_variance") = py::bool_(pdefaults.corsini_unbiased), py::arg("normalize") = py::none(),
-        py::arg("trim") = py::none(), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(), py::arg("html") = py::none(),
-        py::arg("color_range") = py::none(), py::arg("exact") = py::bool_(pdefaults.exact),
-        py::arg("exact_property") = py::none(), py::arg("threads") = py::none());
+        py::arg("trim") = py::none(), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(),
+        py::arg("html") = py::none(), py::arg("color_range") = py::none(),
+        py::arg("exact") = py::bool_(pdefaults.exact), py::arg("exact_property") = py::none(),
+        py::arg("threads") = py::none());
     m.def(
         "profile_file",
         [](Obj path, Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
-           Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data, Obj html, Obj color_range, Obj exact,
-           Obj exact_property, Obj threads) {
+           Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data, Obj html, Obj color_range,
+           Obj exact, Obj exact_property, Obj threads) {
             return py_profile_file(path, profile_keywords(levels, radii, global_level, curvature, weighting, measure,
                                                           unbiased_variance, normalize, trim, json, vertex_data, html,
                                                           color_range, exact, exact_property, threads));
@@ -492,9 +493,10 @@ void def_profile(py::module_& m)
         py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
         py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
         py::arg("unbiased_variance") = py::bool_(pdefaults.corsini_unbiased), py::arg("normalize") = py::none(),
-        py::arg("trim") = py::none(), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(), py::arg("html") = py::none(),
-        py::arg("color_range") = py::none(), py::arg("exact") = py::bool_(pdefaults.exact),
-        py::arg("exact_property") = py::none(), py::arg("threads") = py::none());
+        py::arg("trim") = py::none(), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(),
+        py::arg("html") = py::none(), py::arg("color_range") = py::none(),
+        py::arg("exact") = py::bool_(pdefaults.exact), py::arg("exact_property") = py::none(),
+        py::arg("threads") = py::none());
 }
 
 // corsini_profile(), mean_curvature() and roughness().
