@@ -139,4 +139,31 @@ expect 3 batch "$tmp/html_pairs.csv" --out "$tmp/html2.jsonl" --html-dir "$data/
     grep -q "bunny_res3.ply: cannot create the HTML reports folder" "$tmp/stderr" && [ ! -e "$tmp/html2.jsonl" ] &&
     pass || fail "batch --html-dir onto a file: $(cat "$tmp/stderr")"
 
+# --- batch-summary --html: one page over the pairs, linking the --html-dir pages (checked in a browser:
+# html_summary_browser_test.py); the CSV is unchanged by it; a bad path is exit 3 as compare's --html
+expect 6 batch-summary "$tmp/html.jsonl" --csv "$tmp/s1.csv" -q && cp "$tmp/s1.csv" "$tmp/s1_before.csv" &&
+    mkdir -p "$tmp/sum" && expect 6 batch-summary "$tmp/html.jsonl" --csv "$tmp/s1.csv" --html "$tmp/sum/s.html" -q &&
+    cmp -s "$tmp/s1.csv" "$tmp/s1_before.csv" && grep -q "s1.csv and $tmp/sum/s.html written" "$tmp/stderr" &&
+    python3 - "$tmp/sum/s.html" "$tmp/html.jsonl" <<'PY' && pass || fail "batch-summary --html: $(cat "$tmp/stderr")"
+import json, os, re, sys
+page, records = open(sys.argv[1]).read(), [json.loads(l) for l in open(sys.argv[2])]
+start = page.index('id="meshdiff-summary">') + len('id="meshdiff-summary">')
+assert json.loads(page[start:page.index("</script>", start)].replace("<\\/", "</")) == records
+assert page.count("<tr data-index=") == len(records) and "<script src" not in page
+links = re.findall(r'<a href="([^"]+)">', page)
+assert len(links) == 1 and not links[0].startswith("/"), links
+assert os.path.samefile(os.path.join(os.path.dirname(sys.argv[1]), links[0]), records[0]["html"])
+PY
+expect 6 batch-summary "$tmp/html.jsonl" --html "$tmp/sum/only.html" -q && [ -s "$tmp/sum/only.html" ] && pass ||
+    fail "batch-summary --html without --csv"
+expect 3 batch-summary "$tmp/html.jsonl" --html "$tmp/no-such-folder/s.html" --csv "$tmp/s2.csv" &&
+    grep -q "no-such-folder/s.html" "$tmp/stderr" && [ ! -e "$tmp/s2.csv" ] && pass ||
+    fail "batch-summary: an unwritable --html path: $(cat "$tmp/stderr")"
+expect 2 batch-summary "$tmp/html.jsonl" --html - && grep -q -- "--html" "$tmp/stderr" && pass ||
+    fail "batch-summary --html -"
+expect 2 batch-summary "$tmp/html.jsonl" --html "$tmp/html.jsonl" && grep -q -- "--html" "$tmp/stderr" && pass ||
+    fail "batch-summary --html onto an input"
+expect 2 batch-summary "$tmp/html.jsonl" && grep -q -- "--csv or --html is required" "$tmp/stderr" && pass ||
+    fail "batch-summary without --csv or --html"
+
 finish

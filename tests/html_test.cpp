@@ -165,3 +165,69 @@ TEST(ProfileHtml, EmbedsTheProfileJsonAndOffersHAndEveryLevel)
     EXPECT_EQ(view["meshes"].size(), 1u);
     EXPECT_EQ(view["meshes"][0]["faces"], m.mesh.n_faces());
 }
+
+namespace {
+
+// The text of the element `<script type="application/json" id="ID">` of \p page, as JSON.
+nlohmann::json embedded_json(const std::string& page, const std::string& id)
+{
+    const std::string open = "<script type=\"application/json\" id=\"" + id + "\">";
+    const auto start = page.find(open);
+    if (start == std::string::npos) return nullptr;
+    const auto from = start + open.size();
+    std::string text = page.substr(from, page.find("</script>", from) - from);
+    for (auto p = text.find("<\\/"); p != std::string::npos; p = text.find("<\\/", p)) text.erase(p + 1, 1);
+    return nlohmann::json::parse(text);
+}
+
+std::size_t count(const std::string& s, const std::string& what)
+{
+    std::size_t n = 0;
+    for (auto p = s.find(what); p != std::string::npos; p = s.find(what, p + what.size())) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST(BatchSummaryHtml, OneRowPerRecordWithTheRecordsEmbeddedAndTheLinks)
+{
+    const nlohmann::json result = {
+        {"surface_distance",
+         {{"hausdorff", {{"method", "certified"}, {"upper", 0.25}, {"relative", {{"upper", 0.125}}}}},
+          {"forward", {{"mean", 0.01}, {"rms", 0.02}}},
+          {"backward", {{"mean", 0.03}, {"rms", 0.04}}}}},
+        {"roughness_distance",
+         {{"levels", {1, 2, 5}},
+          {"distance", {1.5, 2.5, 5.5}},
+          {"global", {{"distance", 9.5}}},
+          {"local", {{"levels", {1, 2, 5}}, {"rms", {0.5, nullptr, 0.75}}, {"global", 0.875}}}}}};
+    const nlohmann::json records = {{{"id", "a&b"},
+                                     {"status", "ok"},
+                                     {"original", "x.ply"},
+                                     {"processed", "y.ply"},
+                                     {"result", result},
+                                     {"html", "pages/a b.html"}},
+                                    {{"id", "bad"}, {"status", "error"}, {"error", "y.ply: no such file </script>"}},
+                                    {{"id", "gone"}, {"status", "missing"}}};
+    SummaryHtmlOptions o;
+    o.command = "meshdiff batch-summary r.jsonl --html out/s.html";
+    o.page_dir = "out";
+    const std::string page = batch_summary_html(records, o);
+
+    EXPECT_EQ(embedded_json(page, "meshdiff-summary"), records);
+    EXPECT_EQ(embedded_json(page, "meshdiff-meta")["command"], o.command);
+    EXPECT_EQ(count(page, "<tr data-index="), records.size());
+    EXPECT_EQ(count(page, "<a href="), 1u);
+    EXPECT_NE(page.find("<a href=\"../pages/a%20b.html\">"), std::string::npos);
+    EXPECT_NE(page.find("data-path=\"result.surface_distance.hausdorff.upper\" data-value=\"0.25\">0.25<"),
+              std::string::npos);
+    EXPECT_NE(page.find("data-path=\"result.roughness_distance.distance.2\" data-value=\"5.5\""), std::string::npos);
+    EXPECT_NE(page.find("data-path=\"result.roughness_distance.local.rms.2\" data-value=\"0.75\""), std::string::npos);
+    EXPECT_NE(page.find("<td data-key=\"local_L2\"></td>"), std::string::npos);  // a null: an empty cell
+    EXPECT_NE(page.find(">a&amp;b</td>"), std::string::npos);
+    EXPECT_NE(page.find("no such file &lt;/script&gt;</td>"), std::string::npos);
+    EXPECT_EQ(count(page, "</script>"), 3u);  // the two JSON elements and the script: nothing ends one early
+    EXPECT_EQ(page.find("<script src"), std::string::npos);
+    EXPECT_EQ(page.find("http://"), page.find("http://www.w3.org/2000/svg"));  // no network address but SVG's
+    EXPECT_THROW(batch_summary_html(nlohmann::json::object()), InvalidArgumentError);
+}

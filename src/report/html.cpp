@@ -6,6 +6,7 @@
 #include "meshdiff/report/vertex_maps.h"
 #include "meshdiff/version.h"
 #include "report/html_assets.h"
+#include "report/html_text.h"
 
 #include <fmt/format.h>
 
@@ -19,6 +20,9 @@
 namespace meshdiff {
 
 namespace {
+
+using html_text::escape_html;
+using html_text::script_safe;
 
 std::string base64(const void* data, std::size_t bytes)
 {
@@ -191,42 +195,6 @@ nlohmann::json view_json(const std::vector<Field>& fields,
     for (std::size_t m = 0; m < meshes.size(); ++m)
         mj.push_back(mesh_view(*meshes[m].first, meshes[m].second, fields, m, o.face_budget));
     return {{"fields", ranges}, {"face_budget", o.face_budget}, {"meshes", mj}};
-}
-
-// \p text with "</" written "<\/" (the same JSON, and no "</script>" can end the element early).
-std::string script_safe(const std::string& text)
-{
-    std::string out;
-    out.reserve(text.size() + 16);
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        out += text[i];
-        if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/') out += '\\';
-    }
-    return out;
-}
-
-std::string escape_html(const std::string& s)
-{
-    std::string out;
-    for (char ch : s) {
-        switch (ch) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += ch;
-        }
-    }
-    return out;
 }
 
 }  // namespace

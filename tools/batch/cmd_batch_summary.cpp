@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io/output_file.h"
+#include "meshdiff/report/html.h"
 #include "options.h"
 
 #include <fmt/format.h>
@@ -27,6 +28,7 @@ struct SummaryArgs
 {
     std::vector<std::string> inputs;
     std::string csv;
+    std::string html;
     std::string pairs;
     bool quiet = false;
 };
@@ -190,7 +192,13 @@ int run_summary(const SummaryArgs& a)
 {
     std::vector<std::string> inputs_and_pairs = a.inputs;
     if (!a.pairs.empty()) inputs_and_pairs.push_back(a.pairs);
-    refuse_overwriting_inputs("--csv", a.csv, inputs_and_pairs);
+    if (!a.csv.empty()) refuse_overwriting_inputs("--csv", a.csv, inputs_and_pairs);
+    if (!a.html.empty()) {
+        if (a.html == "-") throw OptionError("--html", "is a file: '-' (standard output) is not offered");
+        refuse_overwriting_inputs("--html", a.html, inputs_and_pairs);
+        if (!a.csv.empty() && (a.csv == a.html || same_file(a.csv, a.html)))
+            throw OptionError("--html", "is the --csv file too");
+    }
     std::map<std::string, Record> records;
     std::vector<std::string> order;
     for (const auto& path : a.inputs) read_records(path, records, order);
@@ -214,6 +222,7 @@ int run_summary(const SummaryArgs& a)
     }
 
     Table table;
+    nlohmann::json merged = nlohmann::json::array();  // the page's records, one per row
     std::size_t ok = 0, failed = 0, missing = 0;
     std::vector<std::string> problems;
     for (std::size_t row = 0; row < ids.size(); ++row) {
@@ -223,10 +232,12 @@ int run_summary(const SummaryArgs& a)
         if (it == records.end()) {
             ++missing;
             table.set(row, "status", "missing");
+            merged.push_back({{"id", id}, {"status", "missing"}});
             problems.push_back(fmt::format("missing: {}", id));
             continue;
         }
         const nlohmann::json& j = it->second.line;
+        merged.push_back(j);
         table.set(row, "status", j["status"].get<std::string>());
         for (const char* k : {"original", "processed", "exit_code", "error", "elapsed_seconds", "meshdiff_version"})
             table.set(row, k, j.contains(k) ? cell(j[k]) : "");
@@ -260,20 +271,28 @@ int run_summary(const SummaryArgs& a)
             roughness_columns(table, row, r["roughness_distance"]);
     }
 
-    write_atomically(a.csv, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp, std::ios::binary);
-        if (!out) throw IoError(fmt::format("{}: cannot write", a.csv));
-        table.write(out);
-        out.flush();
-        if (!out) throw IoError(fmt::format("{}: write failed", a.csv));
-    });
+    if (!a.html.empty()) {
+        SummaryHtmlOptions html;
+        html.command = command_line();
+        html.page_dir = std::filesystem::path(a.html).parent_path().string();
+        write_html_file(a.html, batch_summary_html(merged, html));
+    }
+    if (!a.csv.empty())
+        write_atomically(a.csv, [&](const std::filesystem::path& tmp) {
+            std::ofstream out(tmp, std::ios::binary);
+            if (!out) throw IoError(fmt::format("{}: cannot write", a.csv));
+            table.write(out);
+            out.flush();
+            if (!out) throw IoError(fmt::format("{}: write failed", a.csv));
+        });
+    const std::string written = a.html.empty() ? a.csv : a.csv.empty() ? a.html : a.csv + " and " + a.html;
     if (!a.quiet) {
         constexpr std::size_t kShown = 20;
         for (std::size_t i = 0; i < problems.size() && i < kShown; ++i) std::cerr << problems[i] << "\n";
         if (problems.size() > kShown) std::cerr << fmt::format("... and {} more\n", problems.size() - kShown);
     }
     std::cerr << fmt::format("batch-summary: {} pairs: {} ok, {} failed, {} missing; {} written\n", ids.size(), ok,
-                             failed, missing, a.csv);
+                             failed, missing, written);
     return failed + missing ? kBatchFailures : kOk;
 }
 
@@ -283,16 +302,21 @@ void add_batch_summary_command(CLI::App& app, Action& action)
 {
     auto args = std::make_shared<SummaryArgs>();
     auto* sub = app.add_subcommand("batch-summary",
-                                   "merge batch outputs (shards, resumed runs) into one flat CSV, one row per pair; "
-                                   "list the pairs that failed or are missing (exit 6 if any)");
+                                   "merge batch outputs (shards, resumed runs) into one flat CSV, one row per pair, "
+                                   "and/or one HTML page; list the pairs that failed or are missing (exit 6 if any)");
     sub->add_option("OUT", args->inputs, "JSON-lines outputs of meshdiff batch")->required();
-    sub->add_option("--csv", args->csv, "the CSV to write (one row per pair; pandas.read_csv reads it as it is)")
-        ->required();
+    sub->add_option("--csv", args->csv, "the CSV to write (one row per pair; pandas.read_csv reads it as it is)");
+    sub->add_option("--html", args->html,
+                    "the summary page to write: one self-contained HTML file with a sortable table of every pair, "
+                    "a plot per measure, and links to the pages of batch --html-dir");
     sub->add_option("--pairs", args->pairs,
                     "the pair list (PAIRS.csv) of the batch: rows follow it, and pairs without a record are "
                     "listed as missing");
     sub->add_flag("-q,--quiet", args->quiet, "do not list the failed and missing pairs (the summary line stays)");
-    sub->callback([args, &action] { action = [args] { return run_summary(*args); }; });
+    sub->callback([args, &action] {
+        if (args->csv.empty() && args->html.empty()) throw CLI::RequiredError("--csv or --html");
+        action = [args] { return run_summary(*args); };
+    });
 }
 
 }  // namespace meshdiff::cli

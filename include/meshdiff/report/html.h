@@ -86,6 +86,34 @@ std::string comparison_html(const Comparison& c, const Mesh& original, const Mes
 std::string profile_html(const RoughnessProfile& profile, const Mesh& mesh, const std::string& path,
                          const nlohmann::json& report, const HtmlOptions& options = {});
 
+//! Options of batch_summary_html().
+struct SummaryHtmlOptions
+{
+    std::string command;  //!< the command line that made the page, shown in it
+    //! The roughness levels whose d_L and local RMS get a column; empty: 1, 2
+    //! and 5 (those the records hold; else their first three levels). The
+    //! global level gets its columns whenever a record has it.
+    std::vector<int> levels;
+    //! The folder the page is written to: a record's per-pair page ("html",
+    //! relative to the working directory) is linked relative to it when both
+    //! lie on one file system tree, else by its absolute path. Empty: the
+    //! working directory.
+    std::string page_dir;
+};
+
+//! The summary page of a batch (meshdiff batch-summary --html): \p records is
+//! an array of batch records (the JSON lines of meshdiff batch, merged: one
+//! per pair; a pair without one is {"id": ID, "status": "missing"}). One
+//! self-contained page (no network request, no library) with a table of every
+//! pair (status and error, the certified Hausdorff upper bound absolute and
+//! relative, forward/backward mean and RMS, d_L and the local roughness RMS at
+//! the chosen levels, a link to the pair's page when its record names one),
+//! sortable by any column (numbers numerically, empty cells last), a plot of
+//! each measure over the pairs, the command and version, and the records in a
+//! `<script type="application/json" id="meshdiff-summary">` element.
+//! \throw InvalidArgumentError if \p records is not an array of objects.
+std::string batch_summary_html(const nlohmann::json& records, const SummaryHtmlOptions& options = {});
+
 //! Writes \p page to \p path atomically (output_file.h).
 //! \throw IoError naming the file if it cannot be written.
 void write_html_file(const std::string& path, const std::string& page);
