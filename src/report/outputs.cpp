@@ -105,11 +105,15 @@ std::string write_outputs(const Comparison& c, const LoadedMesh& original, const
                           const CompareOutputs& o, const std::string& original_name, const std::string& processed_name)
 {
     const auto [map_original, map_processed] = map_paths(o);
-    // Both maps share one colour scale: the given range or percentile, else [0, the largest distance of both].
+    // Both maps share one colour scale: the given range or percentile, else
+    // kDefaultColorPercentile of both meshes' vertex distances (when both are
+    // there; else each map its own [0, largest]).
     std::optional<std::pair<double, double>> range = o.color_range;
-    if (!range && o.color_percentile && (!map_processed.empty() || !map_original.empty()))
-        range = distance_color_range(c, *o.color_percentile);
-    if (!range && !map_processed.empty() && !map_original.empty()) range = distance_map_range(c);
+    const bool maps = !map_processed.empty() || !map_original.empty();
+    const bool both = c.processed_vertex_distance.size() == c.processed.topology.vertices &&
+                      c.original_vertex_distance.size() == c.original.topology.vertices;
+    if (!range && maps && (o.color_percentile || both))
+        range = distance_color_range(c, o.color_percentile.value_or(kDefaultColorPercentile));
     std::string legend;
     for (const auto& [path, side, mesh] : {std::tuple{map_original, MapSide::Original, &original.mesh},
                                            std::tuple{map_processed, MapSide::Processed, &processed.mesh}}) {

@@ -12,6 +12,7 @@
 
 #include "meshdiff/compare.h"
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/report/vertex_maps.h"
 #include "meshdiff/roughness/roughness.h"
 
 #include <nlohmann/json.hpp>
@@ -32,7 +33,7 @@ constexpr std::size_t kDefaultHtmlFaceBudget = 250'000;
 
 //! The default distance colour range of the page: [0, this percentile of both
 //! meshes' vertex distances] (vertex_maps.h distance_color_range()).
-constexpr double kDefaultHtmlPercentile = 99.0;
+constexpr double kDefaultHtmlPercentile = kDefaultColorPercentile;
 
 struct HtmlOptions
 {

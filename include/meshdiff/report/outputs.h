@@ -10,6 +10,7 @@
 
 #include "meshdiff/compare.h"
 #include "meshdiff/io/io.h"
+#include "meshdiff/report/vertex_maps.h"
 #include "meshdiff/roughness/corsini.h"
 #include "meshdiff/roughness/roughness.h"
 
@@ -43,8 +44,8 @@ struct CompareOutputs
     std::optional<std::pair<double, double>> color_range;
     //! Instead of a fixed range: [0, this percentile of both meshes' vertex
     //! distances] (distance_color_range()), for the maps and the HTML report;
-    //! in (0, 100], 100 the largest. Neither set: the maps' range is [0, the
-    //! largest distance], the HTML report's [0, the 99th percentile].
+    //! in (0, 100], 100 the largest. Neither set: kDefaultColorPercentile, for
+    //! the maps and the HTML report alike.
     std::optional<double> color_percentile;
 };
 

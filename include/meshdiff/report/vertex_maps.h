@@ -56,6 +56,12 @@ VertexMap distance_map(const Comparison& comparison, MapSide side,
 //! \throw InvalidArgumentError if the comparison has no vertex distances.
 std::pair<double, double> distance_map_range(const Comparison& comparison);
 
+//! The default colour range of the distance maps and the HTML report: [0, this
+//! percentile of both meshes' vertex distances], MeshLab's percentile clamp,
+//! so that one worst point does not turn every other vertex blue
+//! (`--color-range max` is [0, the largest]).
+constexpr double kDefaultColorPercentile = 99.0;
+
 //! [0, the \p percentile th percentile (nearest rank) of the vertex distances
 //! of both meshes]: a colour scale robust to a few worst vertices (100: the
 //! largest, as distance_map_range()); [0, 1] if that is 0.
