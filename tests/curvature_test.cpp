@@ -129,7 +129,8 @@ TEST(MeanCurvature, EstimatorsAgreeWithTheTorusFormula)
     // All three estimators on a fine regular torus: H within a few percent of
     // the range of H, which runs from -2 to 2.4 for R = 1, r = 0.25... here
     // R = 1, r = 0.25: inner H = (1 - 0.5) / (0.5 * 0.75) = 1.33, outer 1.2 / 0.625 = 2.4.
-    for (auto m : {CurvatureMethod::GoldfeatherCubic, CurvatureMethod::Quadric, CurvatureMethod::MeyerCotangent}) {
+    for (auto m : {CurvatureMethod::GoldfeatherCubic, CurvatureMethod::Quadric, CurvatureMethod::MeyerCotangent,
+                   CurvatureMethod::Jet}) {
         const CurvatureError e = error(torus(128, 64), method(m));
         EXPECT_LT(e.rms, 0.02) << to_string(m);
         EXPECT_LT(e.max, 0.03) << to_string(m);
@@ -148,7 +149,8 @@ TEST(MeanCurvature, MeyerConvergesOnIcospheres)
 TEST(MeanCurvature, HeightFieldInteriorIsAccurateForEveryEstimator)
 {
     const Shape s = heightfield(129);
-    for (auto m : {CurvatureMethod::GoldfeatherCubic, CurvatureMethod::Quadric, CurvatureMethod::MeyerCotangent}) {
+    for (auto m : {CurvatureMethod::GoldfeatherCubic, CurvatureMethod::Quadric, CurvatureMethod::MeyerCotangent,
+                   CurvatureMethod::Jet}) {
         const CurvatureError e = error(s, method(m));
         EXPECT_LT(e.rms, 0.02) << to_string(m);
     }
@@ -157,12 +159,76 @@ TEST(MeanCurvature, HeightFieldInteriorIsAccurateForEveryEstimator)
 TEST(MeanCurvature, IndependentOfRotationAndScalesAsInverseLength)
 {
     const Shape s = torus_irregular(3000, 1.0, 0.3, 5);
-    const auto ref = mean_curvature(s.mesh).H;
     Mesh moved = s.mesh;
     const Eigen::Matrix3d R = Eigen::AngleAxisd(1.1, Vec3(0.3, -1, 2).normalized()).toRotationMatrix();
     for (auto& p : moved.points) p = 4.0 * (R * p) + Vec3(3, 2, 1);
-    const auto h = mean_curvature(moved).H;
-    for (std::size_t i = 0; i < ref.size(); ++i) ASSERT_NEAR(h[i] * 4.0, ref[i], 1e-9 * (1 + std::abs(ref[i])));
+    for (auto m : {CurvatureMethod::GoldfeatherCubic, CurvatureMethod::Jet}) {
+        const auto ref = mean_curvature(s.mesh, method(m)).H;
+        const auto h = mean_curvature(moved, method(m)).H;
+        for (std::size_t i = 0; i < ref.size(); ++i)
+            ASSERT_NEAR(h[i] * 4.0, ref[i], 1e-9 * (1 + std::abs(ref[i]))) << to_string(m) << " vertex " << i;
+    }
+}
+
+TEST(MeanCurvature, JetOnTheSphereIsTheInverseRadiusWithPositiveSign)
+{
+    const Shape s = icosphere(5, 2.0);
+    const auto f = mean_curvature(s.mesh, method(CurvatureMethod::Jet));
+    EXPECT_EQ(f.undefined, 0u);
+    EXPECT_EQ(f.quadric_fallback, 0u);
+    for (double h : f.H) ASSERT_NEAR(h, 0.5, 1e-3);
+}
+
+TEST(MeanCurvature, JetConvergesOnTheIrregularTorusWhereTheCubicFitStalls)
+{
+    // issue 28: 4K -> 16K -> 64K vertices, h halves at each step. The jet's
+    // RMS and max error fall about 4x per step (measured 0.246 and 0.253,
+    // docs/accuracy.md); the issue asks for at least 0.7x and below 1e-2 at
+    // 64K. The cubic fit stalls at about 0.075 (the reason for the jet).
+    double previous_rms = 0.0, previous_max = 0.0;
+    for (std::size_t n : {4000u, 16000u, 64000u}) {
+        const Shape s = torus_irregular(n, 1.0, 0.25, 1);
+        const CurvatureError e = error(s, method(CurvatureMethod::Jet));
+        EXPECT_EQ(e.undefined, 0u);
+        if (previous_rms > 0.0) {
+            EXPECT_LT(e.rms, 0.35 * previous_rms) << n;
+            EXPECT_LT(e.max, 0.35 * previous_max) << n;
+        }
+        previous_rms = e.rms;
+        previous_max = e.max;
+        if (n == 16000u) {
+            EXPECT_GT(error(s).rms, 5.0 * e.rms) << "the cubic fit no longer stalls: update the docs";
+        }
+    }
+    EXPECT_LT(previous_rms, 2.5e-3);
+}
+
+TEST(MeanCurvature, JetIsNoWorseThanTheCubicFitOnRegularSurfaces)
+{
+    // issue 28: "the regular cases are no worse than today's fit".
+    const Shape cases[] = {icosphere(5), uv_sphere(128, 64), torus(128, 64), ellipsoid(5, 1.5, 1.0, 1.0),
+                           heightfield(129)};
+    for (const Shape& s : cases) {
+        const CurvatureError jet = error(s, method(CurvatureMethod::Jet));
+        const CurvatureError cubic = error(s);
+        EXPECT_LT(jet.rms, cubic.rms) << s.mesh.n_vertices();
+        EXPECT_LT(jet.max, cubic.max) << s.mesh.n_vertices();
+    }
+}
+
+TEST(MeanCurvature, JetLeavesOutADuplicatedPointAndRefusesARowWeighting)
+{
+    // A height field whose interior vertex 5 * 9 + 4 sits on its neighbour
+    // 5 * 9 + 5: the neighbour's rows say nothing about the surface at it;
+    // the fit stays defined there and at every other vertex.
+    Shape s = heightfield(9, 0.3);
+    s.mesh.points[5 * 9 + 4] = s.mesh.points[5 * 9 + 5];
+    const auto f = mean_curvature(s.mesh, method(CurvatureMethod::Jet));
+    EXPECT_EQ(f.undefined, 0u);
+    for (double h : f.H) EXPECT_TRUE(std::isfinite(h));
+    CurvatureOptions o = method(CurvatureMethod::Jet);
+    o.weighting = RowWeighting::InverseSquare;
+    EXPECT_THROW(mean_curvature(s.mesh, o), InvalidArgumentError);
 }
 
 TEST(MeanCurvature, FallbacksAndUndefinedVerticesAreCounted)
@@ -240,6 +306,7 @@ TEST(MeanCurvature, RejectsBadOptions)
     EXPECT_THROW(mean_curvature(s.mesh, o), InvalidArgumentError);
     EXPECT_THROW(parse_enum<CurvatureMethod>("rusinkiewicz"), InvalidArgumentError);
     EXPECT_EQ(parse_enum<CurvatureMethod>("meyer"), CurvatureMethod::MeyerCotangent);
+    EXPECT_EQ(parse_enum<CurvatureMethod>("jet"), CurvatureMethod::Jet);
 }
 
 namespace {

@@ -31,7 +31,7 @@ struct Spellings;
     {                                                                   \
         static std::vector<std::string> get() { return {__VA_ARGS__}; } \
     }
-MESHDIFF_SPELLINGS(CurvatureMethod, "goldfeather", "quadric", "meyer");
+MESHDIFF_SPELLINGS(CurvatureMethod, "goldfeather", "quadric", "meyer", "jet");
 MESHDIFF_SPELLINGS(RowWeighting, "none", "inverse-square");
 MESHDIFF_SPELLINGS(FaceSampling, "similar", "montecarlo");
 MESHDIFF_SPELLINGS(NoiseUnit, "edge", "diagonal", "absolute");
@@ -155,5 +155,5 @@ TEST(EnumNames, TheMessageListsTheSpellingsWithCommasAndOr)
     EXPECT_EQ(parse_error<FaceSampling>("lattice"),
               "face sampling 'lattice' is unknown (expected similar or montecarlo)");
     EXPECT_EQ(parse_error<CurvatureMethod>("cubic"),
-              "curvature method 'cubic' is unknown (expected goldfeather, quadric or meyer)");
+              "curvature method 'cubic' is unknown (expected goldfeather, quadric, meyer or jet)");
 }

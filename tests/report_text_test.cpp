@@ -1,3 +1,4 @@
+#include "meshdiff/report/json.h"
 #include "meshdiff/report/text.h"
 
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 #include "meshdiff/studies/shapes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -149,7 +151,38 @@ TEST(ExactProfileText, NamesThePropertyAndTheHErrorWithARowPerLevel)
     EXPECT_TRUE(contains(text, rms)) << text;
     EXPECT_TRUE(contains(text, g6(exact.profile.levels[1].sigma)));
     EXPECT_TRUE(contains(text, "  global "));
-    EXPECT_EQ(lines(text).size(), 3u + 3u);  // blank, title, header, 2 levels, global
+    // A closed torus: every vertex is interior.
+    EXPECT_TRUE(contains(text, "  interior: " + std::string(rms))) << text;
+    EXPECT_TRUE(contains(text, "over " + std::to_string(t.mesh.n_vertices()) + "; boundary: no vertex\n")) << text;
+    EXPECT_EQ(lines(text).size(), 4u + 3u);  // blank, title, interior/boundary, header, 2 levels, global
+}
+
+TEST(ExactProfile, ReportsInteriorAndBoundaryVerticesApart)
+{
+    // issue 28: a height field's boundary vertices (4 (n - 1) of them) fit
+    // one-sided neighbourhoods; their error is reported apart from the
+    // interior's, and the two parts make up the whole.
+    const Shape s = heightfield(33);
+    ProfileOptions o;
+    o.levels = {1};
+    o.keep_vertex_data = true;
+    for (auto m : {CurvatureMethod::GoldfeatherCubic, CurvatureMethod::Jet}) {
+        o.curvature.method = m;
+        const RoughnessProfile estimated = roughness_profile(s.mesh, o);
+        const ExactProfile exact = exact_profile(s.mesh, s.exact_H, o, estimated);
+        EXPECT_EQ(exact.h_error_boundary.compared, 4u * 32u);
+        EXPECT_EQ(exact.h_error_interior.compared + exact.h_error_boundary.compared, exact.h_error.compared);
+        EXPECT_GT(exact.h_error_boundary.rms, exact.h_error_interior.rms) << to_string(m);
+        EXPECT_DOUBLE_EQ(std::max(exact.h_error_interior.max, exact.h_error_boundary.max), exact.h_error.max);
+        const double whole = std::sqrt(
+            (exact.h_error_interior.rms * exact.h_error_interior.rms * double(exact.h_error_interior.compared) +
+             exact.h_error_boundary.rms * exact.h_error_boundary.rms * double(exact.h_error_boundary.compared)) /
+            double(exact.h_error.compared));
+        EXPECT_NEAR(whole, exact.h_error.rms, 1e-12 * exact.h_error.rms);
+        const nlohmann::json j = exact_profile_json(estimated, exact, "exact_H");
+        EXPECT_EQ(j["h_error"]["boundary"]["vertices"], 4u * 32u);
+        EXPECT_DOUBLE_EQ(j["h_error"]["interior"]["rms"].get<double>(), exact.h_error_interior.rms);
+    }
 }
 
 TEST(SmoothingText, StatesTheRunAndTheFlowTimeOfExplicitFlows)

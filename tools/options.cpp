@@ -142,7 +142,8 @@ void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii, b
     sub->add_flag("--no-global", o.no_global, "leave out the global level");
     add(sub, "--curvature", o.curvature, "mean curvature estimator: " + choices<CurvatureMethod>(),
         to_string(defaults.curvature.method));
-    add(sub, "--weighting", o.weighting, "row weighting of the fitting estimators: " + choices<RowWeighting>(),
+    add(sub, "--weighting", o.weighting,
+        "row weighting of the goldfeather and quadric fits (not jet): " + choices<RowWeighting>(),
         to_string(defaults.curvature.weighting));
     add(sub, "--normalize", o.normalize,
         "scaling before curvature: paper (vertex centroid, mean vertex distance 1), area (area-weighted centroid, "

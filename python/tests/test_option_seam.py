@@ -91,7 +91,10 @@ COMPARE = [
     ]),
     Option("--curvature", "curvature", [
         ok(["--curvature", "quadric"], dict(curvature="quadric")),
+        ok(["--curvature", "jet"], dict(curvature="jet")),
         value(["--curvature", "foo"], dict(curvature="foo")),
+        value(["--curvature", "jet", "--weighting", "inverse-square"], dict(curvature="jet", weighting="inverse-square"),
+              "the jet fit weights its rows itself"),
     ]),
     Option("--weighting", "weighting", [
         ok(["--weighting", "inverse-square"], dict(weighting="inverse-square")),
@@ -277,7 +280,10 @@ PROFILE = [
     Option("--no-global", "global_level", [ok(["--no-global"], dict(global_level=False))]),
     Option("--curvature", "curvature", [
         ok(["--curvature", "meyer"], dict(curvature="meyer")),
+        ok(["--curvature", "jet"], dict(curvature="jet")),
         value(["--curvature", "foo"], dict(curvature="foo")),
+        value(["--curvature", "jet", "--weighting", "inverse-square"], dict(curvature="jet", weighting="inverse-square"),
+              "the jet fit weights its rows itself"),
     ]),
     Option("--weighting", "weighting", [ok(["--weighting", "inverse-square"], dict(weighting="inverse-square"))]),
     Option("--normalize", "normalize", [

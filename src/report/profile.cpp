@@ -91,16 +91,25 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
         {"scale", p.normalization.scale},
         {"method", to_string(p.normalization.method)}};
     j["mesh"]["scale_factor"] = p.normalization.scale;
-    j["curvature"] = {{"method", to_string(p.curvature_options.method)},
-                      {"row_weighting", to_string(p.curvature_options.weighting)},
-                      {"min_neighbors", p.curvature_options.min_neighbors},
-                      {"max_normal_angle_deg", p.curvature_options.max_normal_angle_deg},
-                      {"undefined_vertices", p.curvature_undefined},
-                      {"widened_to_2_ring", p.curvature_widened},
-                      {"normal_rows_dropped", p.curvature_normal_rows_dropped},
-                      {"quadric_fallback", p.curvature_fallback},
-                      {"sign_convention", "H > 0 where convex with outward normals (unit sphere: +1)"},
-                      {"units", "1/length on the mesh scaled to mean vertex distance 1 from the centroid"}};
+    if (p.curvature_options.method == CurvatureMethod::Jet)  // its own neighbourhood and weights (curvature.h)
+        j["curvature"] = {
+            {"method", to_string(p.curvature_options.method)},
+            {"neighbourhood", fmt::format("2-ring, widened to the 3-ring below {} neighbours", kJetMinNeighbors)},
+            {"row_weights", "1/|d|^4"},
+            {"undefined_vertices", p.curvature_undefined},
+            {"widened_to_3_ring", p.curvature_widened},
+            {"degree2_fallback", p.curvature_fallback}};
+    else
+        j["curvature"] = {{"method", to_string(p.curvature_options.method)},
+                          {"row_weighting", to_string(p.curvature_options.weighting)},
+                          {"min_neighbors", p.curvature_options.min_neighbors},
+                          {"max_normal_angle_deg", p.curvature_options.max_normal_angle_deg},
+                          {"undefined_vertices", p.curvature_undefined},
+                          {"widened_to_2_ring", p.curvature_widened},
+                          {"normal_rows_dropped", p.curvature_normal_rows_dropped},
+                          {"quadric_fallback", p.curvature_fallback}};
+    j["curvature"]["sign_convention"] = "H > 0 where convex with outward normals (unit sphere: +1)";
+    j["curvature"]["units"] = "1/length on the mesh scaled to mean vertex distance 1 from the centroid";
     if (p.curvature_capped) {  // only then: reports of meshes without a capped fit are unchanged
         j["curvature"]["capped_neighbourhoods"] = p.curvature_capped;
         j["curvature"]["capped_vertices"] = p.curvature_capped_vertices;
@@ -140,6 +149,18 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
     return j;
 }
 
+namespace {
+
+// An H error over a set of vertices; rms and max are null when none was compared.
+nlohmann::json error_json(const CurvatureError& e)
+{
+    return {{"rms", e.compared ? nlohmann::json(e.rms) : nlohmann::json(nullptr)},
+            {"max", e.compared ? nlohmann::json(e.max) : nlohmann::json(nullptr)},
+            {"vertices", e.compared}};
+}
+
+}  // namespace
+
 nlohmann::json exact_profile_json(const RoughnessProfile& estimated, const ExactProfile& exact,
                                   const std::string& property)
 {
@@ -155,7 +176,12 @@ nlohmann::json exact_profile_json(const RoughnessProfile& estimated, const Exact
                         {"sigma_global", exact.profile.has_global ? nlohmann::json(exact.profile.global.sigma)
                                                                   : nlohmann::json(nullptr)},
                         {"undefined_vertices", exact.profile.curvature_undefined},
-                        {"h_error", {{"rms", e.rms}, {"max", e.max}, {"vertices", e.compared}}}};
+                        {"h_error",
+                         {{"rms", e.rms},
+                          {"max", e.max},
+                          {"vertices", e.compared},
+                          {"interior", error_json(exact.h_error_interior)},
+                          {"boundary", error_json(exact.h_error_boundary)}}}};
     if (!exact.profile.radii.empty()) {  // only with --radii
         nlohmann::json radii = nlohmann::json::array(), sigma_r = nlohmann::json::array();
         for (const auto& l : exact.profile.radii) {
@@ -264,12 +290,18 @@ std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
     s += fmt::format("scale      centroid ({:.6g}, {:.6g}, {:.6g}), s = {:.6g} ({})\n", p.normalization.center.x(),
                      p.normalization.center.y(), p.normalization.center.z(), p.normalization.scale,
                      detail::scale_meaning(p.normalization.method));
-    s += fmt::format("curvature  {}{}; undefined {}, 2-ring {}, normal rows dropped {}, quadric fallback {}\n",
-                     to_string(p.curvature_options.method),
-                     p.curvature_options.method == CurvatureMethod::MeyerCotangent
-                         ? ""
-                         : fmt::format(" (row weighting {})", to_string(p.curvature_options.weighting)),
-                     p.curvature_undefined, p.curvature_widened, p.curvature_normal_rows_dropped, p.curvature_fallback);
+    if (p.curvature_options.method == CurvatureMethod::Jet)
+        s += fmt::format(
+            "curvature  jet (2-ring, rows weighted 1/|d|^4); undefined {}, 3-ring {}, degree-2 fallback {}\n",
+            p.curvature_undefined, p.curvature_widened, p.curvature_fallback);
+    else
+        s += fmt::format("curvature  {}{}; undefined {}, 2-ring {}, normal rows dropped {}, quadric fallback {}\n",
+                         to_string(p.curvature_options.method),
+                         p.curvature_options.method == CurvatureMethod::MeyerCotangent
+                             ? ""
+                             : fmt::format(" (row weighting {})", to_string(p.curvature_options.weighting)),
+                         p.curvature_undefined, p.curvature_widened, p.curvature_normal_rows_dropped,
+                         p.curvature_fallback);
     if (p.trim > 0.0)
         s += fmt::format("trim       sigma without the {:g}% of vertices with the largest |D| at each level\n",
                          100.0 * p.trim);
@@ -320,10 +352,15 @@ std::string corsini_profile_text(const MeshFacts& f, const CorsiniProfile& p)
 
 std::string exact_profile_text(const RoughnessProfile& profile, const ExactProfile& e, const std::string& property)
 {
+    const auto part = [](const CurvatureError& x) {
+        return x.compared ? fmt::format("RMS {:.4g}, max {:.4g} over {}", x.rms, x.max, x.compared)
+                          : std::string("no vertex");
+    };
     std::string text = fmt::format(
         "\nexact profile from the vertex property '{}' (H error of the estimate on the scaled "
-        "mesh: RMS {:.4g}, max {:.4g} over {} vertices)\n   level  sigma estimated  sigma exact\n",
-        property, e.h_error.rms, e.h_error.max, e.h_error.compared);
+        "mesh: RMS {:.4g}, max {:.4g} over {} vertices)\n  interior: {}; boundary: {}\n"
+        "   level  sigma estimated  sigma exact\n",
+        property, e.h_error.rms, e.h_error.max, e.h_error.compared, part(e.h_error_interior), part(e.h_error_boundary));
     for (std::size_t k = 0; k < profile.levels.size(); ++k)
         text += fmt::format("{:>8} {:>16.6g} {:>12.6g}\n", profile.levels[k].level, profile.levels[k].sigma,
                             e.profile.levels[k].sigma);

@@ -164,6 +164,25 @@ struct FitBuffers
     Eigen::ColPivHouseholderQR<Matrix3> qr3;
 };
 
+// The jet fit: 9 columns (x, y, x^2, xy, y^2, x^3, x^2 y, x y^2, y^3; no
+// constant, the jet interpolates the vertex), rank threshold of the QR, and
+// the squared distance (in units of h) below which a neighbour coincides with
+// the vertex.
+constexpr int kJetColumns = 9;
+constexpr double kJetRankThreshold = 1e-10;
+constexpr double kJetCoincident = 1e-20;
+
+// The jet fit's matrices (kJetColumns columns, at most \p Rows rows).
+template <int Rows>
+struct JetBuffers
+{
+    using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, Rows, kJetColumns>;
+    using Vector = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, Rows, 1>;
+    Matrix M;
+    Vector rhs;
+    Eigen::ColPivHouseholderQR<Matrix> qr;
+};
+
 // Scratch space per thread: neighbourhood and least-squares system.
 struct FitScratch
 {
@@ -178,6 +197,10 @@ struct FitScratch
     std::unique_ptr<FitBuffers<3 * int(kMaxFitNeighbors), int(kMaxFitNeighbors)>> fixed =
         std::make_unique<FitBuffers<3 * int(kMaxFitNeighbors), int(kMaxFitNeighbors)>>();
     FitBuffers<Eigen::Dynamic, Eigen::Dynamic> heap;
+    // The jet fit's (up to kMaxFitNeighbors neighbours; a hub's 1-ring on the heap).
+    std::unique_ptr<JetBuffers<int(kMaxFitNeighbors)>> jet_fixed =
+        std::make_unique<JetBuffers<int(kMaxFitNeighbors)>>();
+    JetBuffers<Eigen::Dynamic> jet_heap;
 };
 
 // The fitting neighbourhood of v into s.nbrs: the 1-ring, or, below
@@ -327,9 +350,91 @@ FitResult fit_with(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& nor
     return FitResult::Quadric;
 }
 
+// The jet's neighbourhood: the 2-ring as gather_neighbourhood() makes it
+// (capped the same way), widened by the next ring, in the order found, while
+// it has fewer than kJetMinNeighbors vertices (never beyond kMaxFitNeighbors).
+// `widened`: the 3-ring was used.
+void gather_jet_neighbourhood(std::size_t v, const Mesh& mesh, const Adjacency& adj, const HubTrees& hubs,
+                              FitScratch& s, bool& widened, bool& capped)
+{
+    bool two_ring = false;
+    // A vertex of kMaxFitNeighbors neighbours or more fits its 1-ring alone (as the other fits do).
+    const int widen_below = adj.degree(v) >= kMaxFitNeighbors ? 0 : std::numeric_limits<int>::max();
+    gather_neighbourhood(v, mesh, adj, hubs, widen_below, s, two_ring, capped);
+    widened = false;
+    if (!two_ring || capped || s.nbrs.size() >= kJetMinNeighbors) return;
+    // gather_neighbourhood() marked v and the 2-ring with s.mark (it widened: the
+    // 1-ring is below INT_MAX); the 2-ring's new shell starts after the 1-ring.
+    const std::size_t ring1 = adj.degree(v);
+    const std::size_t ring2 = s.nbrs.size();
+    for (std::size_t k = ring1; k < ring2 && s.nbrs.size() < kMaxFitNeighbors; ++k) {
+        if (!hubs.slot.empty() && hubs.slot[s.nbrs[k]] >= 0) continue;
+        for (auto it = adj.begin(s.nbrs[k]); it != adj.end(s.nbrs[k]) && s.nbrs.size() < kMaxFitNeighbors; ++it)
+            if (s.stamp[*it] != s.mark) {
+                s.stamp[*it] = s.mark;
+                s.nbrs.push_back(*it);
+                widened = true;
+            }
+    }
+}
+
+// The jet fit (curvature.h). Returns Cubic, or Quadric when the cubic jet was
+// rank-deficient and the degree-2 jet gave H.
+template <class Buffers>
+FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::vector<std::uint32_t>& nbrs, Buffers& s,
+                   double& H)
+{
+    const Vec3& p = mesh.points[v];
+    const Vec3 helper = std::abs(N.x()) < 0.6 ? Vec3::UnitX() : (std::abs(N.y()) < 0.6 ? Vec3::UnitY() : Vec3::UnitZ());
+    const Vec3 u = N.cross(helper).normalized();
+    const Vec3 w = N.cross(u);
+    double h = 0.0;
+    for (auto q : nbrs) h += (mesh.points[q] - p).norm();
+    h /= double(nbrs.size());
+    if (!(h > 0.0)) return FitResult::Failed;
+    const double inv_h = 1.0 / h;
+    s.M.resize(Eigen::Index(nbrs.size()), kJetColumns);
+    s.rhs.resize(Eigen::Index(nbrs.size()));
+    // One row per neighbour, scaled by 1 / |d|^4 (d in units of h); the jet
+    // passes through the vertex (no constant term). A neighbour on the vertex
+    // itself (a duplicated point) says nothing and is left out.
+    Eigen::Index rows = 0;
+    for (auto q : nbrs) {
+        const Vec3 d = (mesh.points[q] - p) * inv_h;
+        const double d2 = d.squaredNorm();
+        if (!(d2 > kJetCoincident)) continue;
+        const double x = d.dot(u), y = d.dot(w), wt = 1.0 / (d2 * d2);
+        s.M.row(rows) << x, y, x * x, x * y, y * y, x * x * x, x * x * y, x * y * y, y * y * y;
+        s.M.row(rows) *= wt;
+        s.rhs(rows++) = wt * d.dot(N);
+    }
+    // The cubic jet, then the degree-2 jet on its first 5 columns.
+    for (const Eigen::Index cols : {Eigen::Index(kJetColumns), Eigen::Index(5)}) {
+        if (rows < cols) continue;
+        auto& qr = s.qr;
+        qr.setThreshold(kJetRankThreshold);
+        qr.compute(s.M.topLeftCorner(rows, cols));
+        if (qr.rank() < cols) continue;
+        const Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kJetColumns, 1> J = qr.solve(s.rhs.head(rows));
+        const double fx = J(0), fy = J(1), fxx = 2.0 * J(2), fxy = J(3), fyy = 2.0 * J(4);
+        const double g = 1.0 + fx * fx + fy * fy;
+        const double Hs =
+            -((1.0 + fy * fy) * fxx - 2.0 * fx * fy * fxy + (1.0 + fx * fx) * fyy) / (2.0 * g * std::sqrt(g));
+        if (!std::isfinite(Hs)) continue;
+        H = Hs * inv_h;
+        return cols == kJetColumns ? FitResult::Cubic : FitResult::Quadric;
+    }
+    return FitResult::Failed;
+}
+
 FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
                      bool cubic, FitScratch& s, double& H, bool& dropped)
 {
+    if (opt.method == CurvatureMethod::Jet) {
+        dropped = false;
+        if (s.nbrs.size() <= kMaxFitNeighbors) return jet_with(v, mesh, normals[v], s.nbrs, *s.jet_fixed, H);
+        return jet_with(v, mesh, normals[v], s.nbrs, s.jet_heap, H);
+    }
     if (s.nbrs.size() <= kMaxFitNeighbors) return fit_with(v, mesh, normals, opt, cubic, s.nbrs, *s.fixed, H, dropped);
     return fit_with(v, mesh, normals, opt, cubic, s.nbrs, s.heap, H, dropped);
 }
@@ -338,7 +443,8 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
                                 const CurvatureOptions& opt)
 {
     const std::size_t n = mesh.n_vertices();
-    const bool cubic = opt.method == CurvatureMethod::GoldfeatherCubic;
+    const bool cubic = opt.method == CurvatureMethod::GoldfeatherCubic || opt.method == CurvatureMethod::Jet;
+    const bool jet = opt.method == CurvatureMethod::Jet;
     CurvatureField field;
     field.H.assign(n, kNaN);
     // bit 0 widened, bit 1 fallback, bit 2 no normal, bit 3 capped, bit 4 normal rows dropped
@@ -364,7 +470,10 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
                 continue;
             }
             bool widened = false, capped = false;
-            gather_neighbourhood(v, mesh, adj, hubs, opt.min_neighbors, s, widened, capped);
+            if (jet)
+                gather_jet_neighbourhood(v, mesh, adj, hubs, s, widened, capped);
+            else
+                gather_neighbourhood(v, mesh, adj, hubs, opt.min_neighbors, s, widened, capped);
             if (capped) how[v] = 8;
             if (s.nbrs.size() < 3) continue;
             double H = kNaN;
@@ -421,6 +530,10 @@ CurvatureField mean_curvature(const Mesh& mesh, const Adjacency& adjacency, cons
     if (!(options.max_normal_angle_deg > 0.0 && options.max_normal_angle_deg <= 90.0))
         throw InvalidArgumentError(
             fmt::format("curvature: max_normal_angle_deg = {} is outside (0, 90]", options.max_normal_angle_deg));
+    if (options.method == CurvatureMethod::Jet && options.weighting != RowWeighting::None)
+        throw InvalidArgumentError(
+            "curvature: a row weighting applies to the goldfeather and quadric fits; the jet "
+            "fit weights its rows itself (1/|d|^4)");
     if (adjacency.size() != mesh.n_vertices() || normals.size() != mesh.n_vertices())
         throw InvalidArgumentError("curvature: adjacency or normals do not match the mesh");
     if (options.method == CurvatureMethod::MeyerCotangent) {

@@ -38,6 +38,9 @@ void validate(const ProfileOptions& options)
         throw OptionError("profile.curvature.method", "not a known curvature method");
     if (!is_known(options.curvature.weighting))
         throw OptionError("profile.curvature.weighting", "not a known row weighting");
+    if (options.curvature.method == CurvatureMethod::Jet && options.curvature.weighting != RowWeighting::None)
+        throw OptionError("profile.curvature.weighting",
+                          "applies to the goldfeather and quadric fits; the jet fit weights its rows itself (1/|d|^4)");
     if (!(options.outlier_fraction > 0.0 && options.outlier_fraction <= 1.0))
         throw OptionError("profile.outlier_fraction", "must be in (0, 1]");
     if (!(options.trim >= 0.0 && options.trim <= kMaxTrim))
@@ -273,6 +276,10 @@ ExactProfile exact_profile(const Mesh& mesh, const std::vector<double>& exact_H,
     ExactProfile e;
     e.profile = roughness_profile_from_curvature(mesh, exact_H, o);
     e.h_error = curvature_error(estimated.H, e.profile.H);
+    std::vector<char> boundary = boundary_vertex_mask(mesh);
+    e.h_error_interior = curvature_error(estimated.H, e.profile.H, boundary);
+    for (char& b : boundary) b = b ? 0 : 1;  // now: skip the interior
+    e.h_error_boundary = curvature_error(estimated.H, e.profile.H, boundary);
     return e;
 }
 

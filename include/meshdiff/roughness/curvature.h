@@ -43,6 +43,25 @@
 //!   Differential-Geometry Operators for Triangulated 2-Manifolds", VisMath
 //!   2002: cotangent formula with mixed Voronoi areas (cotangent.h), H = -Hn . n
 //!   = K(x).n / 2. Undefined on boundary and non-manifold-edge vertices.
+//! - Jet: an osculating jet (Cazals & Pouget, "Estimating differential
+//!   quantities using polynomial fitting of osculating jets", CAGD 22(2),
+//!   2005), in its interpolating form: the least-squares fit of the cubic
+//!   z = J1 x + J2 y + J3 x^2 + J4 xy + J5 y^2 + J6 x^3 + J7 x^2 y + J8 xy^2 + J9 y^3
+//!   through the vertex to its 2-ring (widened to the 3-ring below
+//!   kJetMinNeighbors neighbours; capped as above), positions only, in the
+//!   frame of the vertex normal and in coordinates divided by h; each row is
+//!   scaled by 1 / |d|^4 (d the neighbour's offset in units of h), so the
+//!   1-ring leads and the outer ring fixes the cubic terms; a neighbour on the
+//!   vertex itself (a duplicated point) is left out. H is the mean curvature
+//!   of that graph at (0, 0), with its slope:
+//!   H = -((1 + fy^2) fxx - 2 fx fy fxy + (1 + fx^2) fyy) / (2 (1 + fx^2 + fy^2)^(3/2)).
+//!   Unlike the Goldfeather-Interrante fit it has linear terms and uses no
+//!   vertex normals, so an O(h) error of the vertex normal only tilts the
+//!   frame instead of entering H as O(1): it converges as h^2 on irregular
+//!   triangulations where the cubic fit stalls (docs/accuracy.md). The
+//!   weighting, min_neighbors and max_normal_angle_deg options do not apply
+//!   (a weighting other than None is refused). Rank-deficient: the degree-2
+//!   jet (5 columns) on the same points; failing that, H is undefined.
 #pragma once
 
 #include "meshdiff/core/mesh.h"
@@ -59,7 +78,8 @@ enum class CurvatureMethod
 {
     GoldfeatherCubic,
     Quadric,
-    MeyerCotangent
+    MeyerCotangent,
+    Jet
 };
 
 //! Per-neighbour weighting of the least-squares rows of the fitting methods.
@@ -73,9 +93,10 @@ template <>
 struct EnumNames<CurvatureMethod>
 {
     static constexpr const char* what = "curvature method";
-    static constexpr std::array<EnumName<CurvatureMethod>, 3> names{{{CurvatureMethod::GoldfeatherCubic, "goldfeather"},
+    static constexpr std::array<EnumName<CurvatureMethod>, 4> names{{{CurvatureMethod::GoldfeatherCubic, "goldfeather"},
                                                                      {CurvatureMethod::Quadric, "quadric"},
-                                                                     {CurvatureMethod::MeyerCotangent, "meyer"}}};
+                                                                     {CurvatureMethod::MeyerCotangent, "meyer"},
+                                                                     {CurvatureMethod::Jet, "jet"}}};
 };
 
 template <>
@@ -89,6 +110,10 @@ struct EnumNames<RowWeighting>
 //! Largest fitting neighbourhood of a widened (2-ring) fit: see the file
 //! comment. Fits on the 1-ring are never capped.
 constexpr std::size_t kMaxFitNeighbors = 256;
+
+//! The jet fit widens its 2-ring to the 3-ring when the 2-ring has fewer
+//! neighbours than this (a cubic jet has 10 coefficients).
+constexpr std::size_t kJetMinNeighbors = 15;
 
 //! How many capped vertex ids CurvatureField::capped_vertices keeps.
 constexpr std::size_t kCappedVerticesListed = 10;
@@ -106,14 +131,14 @@ struct CurvatureField
 {
     std::vector<double> H;
     std::size_t undefined = 0;  //!< vertices with NaN H
-    std::size_t widened = 0;    //!< fits that used the 2-ring
+    std::size_t widened = 0;    //!< fits that used the 2-ring (Jet: the 3-ring)
     //! Cubic fits (GoldfeatherCubic) with a defined H that left out the two
     //! normal rows of at least one neighbour (max_normal_angle_deg rule), the
     //! fits that fell back to the quadric included; 0 for the other methods.
     std::size_t normal_rows_dropped = 0;
-    std::size_t quadric_fallback = 0;            //!< cubic fits that fell back to the quadric
-    std::size_t no_normal = 0;                   //!< vertices without a vertex normal (all faces degenerate)
-    std::size_t capped = 0;                      //!< 2-ring neighbourhoods cut to kMaxFitNeighbors (fit defined or not)
+    std::size_t quadric_fallback = 0;  //!< cubic fits that fell back to the quadric (Jet: to the degree-2 jet)
+    std::size_t no_normal = 0;         //!< vertices without a vertex normal (all faces degenerate)
+    std::size_t capped = 0;            //!< 2-ring neighbourhoods cut to kMaxFitNeighbors (fit defined or not)
     std::vector<std::uint32_t> capped_vertices;  //!< the lowest ids of those (at most kCappedVerticesListed)
 };
 

@@ -145,6 +145,11 @@ struct ExactProfile
 {
     RoughnessProfile profile;  //!< the profile of the exact H (with vertex data: H on the normalised mesh)
     CurvatureError h_error;    //!< the error of the estimated H against the exact one, on the normalised mesh
+    //! The same error over the interior vertices and over the boundary ones
+    //! (boundary_vertex_mask(): on a boundary or non-manifold edge) apart:
+    //! fits are one-sided at the boundary and converge more slowly there.
+    CurvatureError h_error_interior;
+    CurvatureError h_error_boundary;
 };
 
 //! The profile of \p mesh from \p exact_H (roughness_profile_from_curvature()
