@@ -389,12 +389,14 @@ if b:
               f"bunny_closed s1 {f(sig(b, 1), 3)}, s20 {f(sig(b, 20), 3)}, sG {f(sig(b, 'G'), 3)} (sG/s1 {f(sig(b, 'G') / sig(b, 1), 3)})"))
 ig, ro = load("2_models", "igea.json"), load("2_models", "rocker_arm.json")
 if ig and ro:
-    smoother = [str(L) for L in list(range(1, 21)) + ["G"] if sig(ig, L) < sig(ro, L)]
-    rougher = [f"{L} ({f(sig(ig, L), 3)} vs {f(sig(ro, L), 3)})" for L in list(range(1, 21)) + ["G"] if sig(ig, L) >= sig(ro, L)]
-    V.append(("Fig. 4 Venus (igea) smoother than the Rocker arm at every level",
-              f"s1 igea {f(sig(ig, 1), 3)} vs rocker_arm {f(sig(ro, 1), 3)}; sG {f(sig(ig, 'G'), 3)} vs {f(sig(ro, 'G'), 3)}; "
-              f"igea smoother at levels {', '.join(smoother) or 'none'}; rougher at {', '.join(rougher) or 'none'}; vertices {ig['mesh']['vertices']} vs "
-              f"{ro['mesh']['vertices']} (x{ig['mesh']['vertices'] / ro['mesh']['vertices']:.1f})"))
+    all_levels = list(range(1, 21)) + ["G"]
+    rougher = [str(L) for L in all_levels if sig(ro, L) > sig(ig, L)]
+    smoother = [f"{L} ({f(sig(ro, L), 3)} vs {f(sig(ig, L), 3)})" for L in all_levels if sig(ro, L) <= sig(ig, L)]
+    V.append(("Fig. 4 the Rocker arm smoother than Venus (igea) at every level",
+              f"s1 rocker_arm {f(sig(ro, 1), 3)} vs igea {f(sig(ig, 1), 3)}; sG {f(sig(ro, 'G'), 3)} vs {f(sig(ig, 'G'), 3)}; "
+              f"rocker_arm rougher at {len(rougher)} of {len(all_levels)} levels: {', '.join(rougher) or 'none'}; "
+              f"smoother at {len(smoother)}: {', '.join(smoother) or 'none'}; vertices {ro['mesh']['vertices']} vs "
+              f"{ig['mesh']['vertices']} (igea x{ig['mesh']['vertices'] / ro['mesh']['vertices']:.1f})"))
 n0 = load("1_sphere_noise_stretch", "noise_0.json")
 m0 = load("5_curvature", "sphere_noise_0_meyer.json")
 if n0:
