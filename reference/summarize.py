@@ -367,6 +367,13 @@ def ratio_end(d, L):
     return d["sigma"][-1][k] / d["sigma"][0][k]
 
 
+def rise_after_min(d, L=1):
+    """Iteration of the smallest recorded sigma_L (L = 'G' for global) and sigma at the end over that minimum."""
+    s = d["sigma_global"] if L == "G" else [r[d["levels"].index(L)] for r in d["sigma"]]
+    k = min(range(len(s)), key=lambda i: s[i])
+    return d["iterations"][k], s[-1] / s[k]
+
+
 def at_it(d, it, L=1):
     if not d or it not in d["iterations"]:
         return None
@@ -389,12 +396,14 @@ if b:
               f"bunny_closed s1 {f(sig(b, 1), 3)}, s20 {f(sig(b, 20), 3)}, sG {f(sig(b, 'G'), 3)} (sG/s1 {f(sig(b, 'G') / sig(b, 1), 3)})"))
 ig, ro = load("2_models", "igea.json"), load("2_models", "rocker_arm.json")
 if ig and ro:
-    smoother = [str(L) for L in list(range(1, 21)) + ["G"] if sig(ig, L) < sig(ro, L)]
-    rougher = [f"{L} ({f(sig(ig, L), 3)} vs {f(sig(ro, L), 3)})" for L in list(range(1, 21)) + ["G"] if sig(ig, L) >= sig(ro, L)]
-    V.append(("Fig. 4 Venus (igea) smoother than the Rocker arm at every level",
-              f"s1 igea {f(sig(ig, 1), 3)} vs rocker_arm {f(sig(ro, 1), 3)}; sG {f(sig(ig, 'G'), 3)} vs {f(sig(ro, 'G'), 3)}; "
-              f"igea smoother at levels {', '.join(smoother) or 'none'}; rougher at {', '.join(rougher) or 'none'}; vertices {ig['mesh']['vertices']} vs "
-              f"{ro['mesh']['vertices']} (x{ig['mesh']['vertices'] / ro['mesh']['vertices']:.1f})"))
+    all_levels = list(range(1, 21)) + ["G"]
+    rougher = [str(L) for L in all_levels if sig(ro, L) > sig(ig, L)]
+    smoother = [f"{L} ({f(sig(ro, L), 3)} vs {f(sig(ig, L), 3)})" for L in all_levels if sig(ro, L) <= sig(ig, L)]
+    V.append(("Fig. 4 the Rocker arm smoother than Venus (igea) at every level",
+              f"s1 rocker_arm {f(sig(ro, 1), 3)} vs igea {f(sig(ig, 1), 3)}; sG {f(sig(ro, 'G'), 3)} vs {f(sig(ig, 'G'), 3)}; "
+              f"rocker_arm rougher at {len(rougher)} of {len(all_levels)} levels: {', '.join(rougher) or 'none'}; "
+              f"smoother at {len(smoother)}: {', '.join(smoother) or 'none'}; vertices {ro['mesh']['vertices']} vs "
+              f"{ig['mesh']['vertices']} (igea x{ig['mesh']['vertices'] / ro['mesh']['vertices']:.1f})"))
 n0 = load("1_sphere_noise_stretch", "noise_0.json")
 m0 = load("5_curvature", "sphere_noise_0_meyer.json")
 if n0:
@@ -508,6 +517,28 @@ for sub, mesh in ((P7, "sphere4"), (P7, "bunny"), (P7, "igea"), (P7, "rocker_arm
         parts.append(f"{mesh}: {'never' if last is None else 'up to ' + str(last)}")
 if parts:
     V.append(("Fig. 8 Laplacian removes local roughness best (lowest s1 of the five, post)", "; ".join(parts)))
+parts = []
+for sub, mesh in ((P7, "sphere4"), (P7, "bunny"), (P7, "igea"), (P7, "rocker_arm"), ("3_smoothing", "noisy_sphere"),
+                  ("3_smoothing", "bunny_noisy"), ("3_smoothing", "igea_noisy")):
+    xs = []
+    for m in ("taubin", "bilaplacian", "laplacian"):
+        d = SMOOTH.get((sub, mesh, "post", m))
+        if d:
+            (i1, r1), (iG, rG) = rise_after_min(d, 1), rise_after_min(d, "G")
+            xs.append(f"{m} s1 min @{i1} end/min {r1:.3f}, sG min @{iG} end/min {rG:.3f}")
+    if xs:
+        parts.append(f"{mesh}: " + ", ".join(xs))
+if parts:
+    V.append(("Fig. 8 Taubin and bilaplacian re-roughen (post, 50 it.: iteration of the smallest sigma, end / smallest)",
+              "; ".join(parts)))
+parts = []
+for sub, mesh, nm in ((P7, "ellipsoid12", "(1.2,1,1)"), ("3_smoothing", "ellipsoid", "(1.5,1,1)")):
+    for u in ("post", "pre"):
+        xs = [f"{m} x{f(ratio_end(SMOOTH.get((sub, mesh, u, m)), 1), 3)}" for m in methods if SMOOTH.get((sub, mesh, u, m))]
+        if xs:
+            parts.append(f"{nm} {u}: " + ", ".join(xs))
+if parts:
+    V.append(("Fig. 9 smoothing raises the ellipsoid's local roughness (s1 end/start, 50 it.)", "; ".join(parts)))
 st = [(nm, SMOOTH.get(("3_smoothing", mesh, "post", "mcf"))) for nm, mesh in (("bunny", "bunny_noisy"), ("igea", "igea_noisy"))]
 st += [(nm + " (paper input)", SMOOTH.get((P7, mesh, "post", "mcf")))
        for nm, mesh in (("bunny", "bunny"), ("igea", "igea"), ("rocker_arm", "rocker_arm"), ("sphere 4%", "sphere4"))]

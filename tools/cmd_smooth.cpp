@@ -109,8 +109,9 @@ void add_smooth_command(CLI::App& app, Action& action)
     sub->add_option("--step", o.step, "mcf / modified-mcf time step in units of the squared mean edge length")
         ->capture_default_str();
     sub->add_option("--step-control", args->step_control,
-                    "explicit mcf / modified-mcf: fixed (always --step, the paper's scheme; may diverge) | adaptive "
-                    "(shorten a step beyond the stability bound)")
+                    "explicit mcf / modified-mcf: fixed (always --step; may diverge; the default step 0.1 is our "
+                    "choice, the paper gives no step and its reference [4] uses implicit fairing) | adaptive (shorten "
+                    "a step beyond the stability bound)")
         ->check(CLI::IsMember(enum_names<StepControl>()))
         ->capture_default_str();
     sub->add_option("--stability", o.stability,
