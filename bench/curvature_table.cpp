@@ -35,6 +35,7 @@ std::vector<Estimator> estimators()
 {
     std::vector<Estimator> e;
     CurvatureOptions o;
+    o.method = CurvatureMethod::GoldfeatherCubic;
     e.push_back({"cubic", o});
     o.weighting = RowWeighting::InverseSquare;
     e.push_back({"cubic w", o});
@@ -95,7 +96,7 @@ struct Series
 
 std::vector<Series> series()
 {
-    const int geodesic[] = {10, 20, 40, 80, 160};  // 10 f^2 + 2 vertices
+    const int geodesic[] = {10, 20, 40, 80, 160};   // 10 f^2 + 2 vertices
     const int torus_n[] = {44, 88, 176, 352, 704};  // n x n / 2 vertices
     const int grid[] = {33, 65, 129, 257, 513};     // n^2 vertices
     const std::size_t approx[] = {1000, 4000, 16000, 64000, 256000};
@@ -142,8 +143,9 @@ int main(int argc, char** argv)
             dir = a;
     }
     const auto ests = estimators();
-    fmt::print("## H error under refinement (RMS / max of |H - H_exact|; in brackets the rates of RMS and max\n"
-               "## against the previous row, as powers of h ~ n^-1/2: 2.0 is O(h^2), 0.0 a plateau)\n");
+    fmt::print(
+        "## H error under refinement (RMS / max of |H - H_exact|; in brackets the rates of RMS and max\n"
+        "## against the previous row, as powers of h ~ n^-1/2: 2.0 is O(h^2), 0.0 a plateau)\n");
     for (const auto& s : series()) {
         struct Row
         {

@@ -62,8 +62,10 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
   radii=None            metric levels: radii > 0 on the unit-scaled mesh, or "default";
                         adds d_r per radius (METHOD.md 5a)                 [--radii]
   global_level=True     also the global level                              [--no-global]
-  curvature=None        H estimator: goldfeather (default), quadric, meyer [--curvature]
-  weighting=None        row weighting of the fits: none (default), inverse-square  [--weighting]
+  curvature=None        H estimator: jet (default), goldfeather (the paper's),
+                        quadric, meyer                                     [--curvature]
+  weighting=None        row weighting of the goldfeather and quadric fits: none
+                        (default), inverse-square; refused with jet        [--weighting]
   measure=None          sigma (default) or corsini (METHOD.md 6a)          [--measure]
   unbiased_variance=False  corsini: variance with divisor n - 1            [--unbiased-variance]
   normalize=None        scaling before curvature: paper (default), area (sqrt(area/4pi), does
@@ -181,8 +183,8 @@ constexpr const char* kMeanCurvatureDoc =
     R"doc(Per-vertex mean curvature H, an (n,) float64 array in 1 / (the mesh's length
 unit), NaN where undefined (isolated vertices; boundary vertices for "meyer").
 Sign: H > 0 where convex with outward normals (a sphere of radius r: +1/r).
-method: "goldfeather" (cubic fit, the default), "quadric" or "meyer"
-(cotangent formula). Not normalised: profile() and roughness() estimate H on
+method: "jet" (cubic jet, the default), "goldfeather" (the paper's cubic
+fit), "quadric" or "meyer" (cotangent formula). Not normalised: profile() and roughness() estimate H on
 the mesh scaled to mean vertex distance 1, i.e. H_there = H * scale.
 )doc";
 

@@ -38,7 +38,7 @@ for item in "${inputs[@]}"; do
     mesh=${item#*=}
     md profile "$mesh" --measure corsini --levels 1-20 --json "$d/${name}_corsini.json" > /dev/null
     md profile "$mesh" --measure corsini --levels 1-20 --unbiased-variance --json "$d/${name}_corsini_unbiased.json" > /dev/null
-    md profile "$mesh" --levels 1-20 --json "$d/${name}_sigma.json" > /dev/null
+    md profile "$mesh" --levels 1-20 --curvature goldfeather --json "$d/${name}_sigma.json" > /dev/null
     names+=("$name=$d/$name")
 done
 # The comparison score R(M, M') of the noisy spheres against the clean one.

@@ -30,7 +30,7 @@ mkdir -p "$out" "$work"
 # 1. tori
 for n in 10000 160000; do
     [[ -f $work/torus_$n.ply ]] || "$bin" generate torus-irregular "$work/torus_$n.ply" --vertices $n --seed 1 > /dev/null
-    "$bin" profile "$work/torus_$n.ply" --exact --radii "$radii" --json "$out/torus_$n.json" > /dev/null
+    "$bin" profile "$work/torus_$n.ply" --exact --radii "$radii" --curvature goldfeather --json "$out/torus_$n.json" > /dev/null
     echo "torus $n done"
 done
 
@@ -48,7 +48,7 @@ done
 for r in res2 res3 res4_ascii; do pairs+=("bunny:$shared/bunny.ply:$shared/bunny_$r.ply:bunny_$r"); done
 for p in "${pairs[@]}"; do
     IFS=: read -r _ a b name <<< "$p"
-    "$bin" "$a" "$b" --no-distance --radii "$radii" --json "$out/compare_$name.json" > /dev/null
+    "$bin" "$a" "$b" --no-distance --radii "$radii" --curvature goldfeather --json "$out/compare_$name.json" > /dev/null
     echo "$name done"
 done
 

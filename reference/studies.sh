@@ -10,6 +10,11 @@
 #                                          # outputs stay; sections 5 and 6 need meshes that
 #                                          # sections 1 and 3 left in out/work/
 #
+#   CURVATURE=jet OUT=/tmp/jet-studies SECTIONS="1 2 4 7" reference/studies.sh
+#       # the same studies with another estimator, in another folder: CURVATURE (default
+#       # goldfeather, the paper's) goes to every profile, compare and smooth that does not
+#       # choose its own (sections 5 and 8 compare estimators and keep theirs)
+#
 # MESHDIFF and MESHES are taken relative to the current directory. Needs bash, python3 (standard
 # library) for the data, and a python3 with numpy, scipy and matplotlib for the plots and two
 # checks (PYNUM, default /usr/bin/python3). Large intermediate meshes go to reference/out/work/
@@ -21,8 +26,11 @@ MESHES=${MESHES:-../shared/data/meshes}
 MESHDIFF=$(cd "$(dirname "$MESHDIFF")" && pwd)/$(basename "$MESHDIFF")
 MESHES=$(cd "$MESHES" && pwd)
 REF=$(cd "$(dirname "$0")" && pwd)
-OUT=$REF/out
+OUT=${OUT:-$REF/out}
+mkdir -p "$OUT"
+OUT=$(cd "$OUT" && pwd)
 WORK=$OUT/work
+CURVATURE=${CURVATURE:-goldfeather}
 [[ -x $MESHDIFF ]] || { echo "studies.sh: no meshdiff binary at $MESHDIFF (set MESHDIFF)" >&2; exit 2; }
 [[ -f $MESHES/bunny_closed.ply ]] || { echo "studies.sh: no meshes in $MESHES (set MESHES)" >&2; exit 2; }
 PYNUM=${PYNUM:-/usr/bin/python3}
@@ -38,7 +46,18 @@ need() {
     done
 }
 
-md() { "$MESHDIFF" "$@"; }
+# meshdiff; profile, compare and smooth get --curvature $CURVATURE unless the call names its own.
+md() {
+    case $1 in
+    profile | compare | smooth)
+        if [[ " $* " != *" --curvature "* ]]; then
+            "$MESHDIFF" "$@" --curvature "$CURVATURE"
+            return
+        fi
+        ;;
+    esac
+    "$MESHDIFF" "$@"
+}
 PY="python3"
 J2C="$PY $REF/json2csv.py"
 PLOTP=$REF/plot_profiles.sh
@@ -247,12 +266,16 @@ md generate heightfield-irregular "$WORK/heightfield_irregular.ply" --seed 1 > /
 for s in torus heightfield; do
     for r in regular irregular; do
         prof "$WORK/${s}_$r.ply" "$d/${s}_$r.json" "${EXACT[@]}"
+        # The same with the jet fit (issue 28): how much of the irregular excess is estimator noise.
+        prof "$WORK/${s}_$r.ply" "$d/${s}_${r}_jet.json" "${EXACT[@]}" --curvature jet
     done
     "$PLOTP" "$d/$s.png" "$s: regular against irregular sampling" \
         "regular=$d/${s}_regular.json" "irregular=$d/${s}_irregular.json" > /dev/null
 done
 prof "$MESHES/sphere_ico_2562.ply" "$d/sphere_ico_2562.json"
 prof "$MESHES/sphere_irregular_3072.ply" "$d/sphere_irregular_3072.json"
+prof "$MESHES/sphere_ico_2562.ply" "$d/sphere_ico_2562_jet.json" --curvature jet
+prof "$MESHES/sphere_irregular_3072.ply" "$d/sphere_irregular_3072_jet.json" --curvature jet
 "$PLOTP" "$d/sphere.png" "Unit sphere: regular icosphere against irregular sampling" \
     "sphere_ico_2562=$d/sphere_ico_2562.json" "sphere_irregular_3072=$d/sphere_irregular_3072.json" > /dev/null
 # "Global roughness does not depend on the mesh": one surface, several meshes.
@@ -430,7 +453,7 @@ section done
     echo "total of the sections above: $(awk '{ t += $(NF - 1) } END { print t }' "$WORK/timing.merged") s"
     echo "last run: sections $SECTIONS, $((SECONDS - start_all)) s, $(date -u +%Y-%m-%d)"
     echo "machine: $(uname -sm), $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
-    echo "meshdiff: $("$MESHDIFF" --version 2>&1 | head -1); exact profiles: ${EXACT[*]:-not available}"
+    echo "meshdiff: $("$MESHDIFF" --version 2>&1 | head -1); exact profiles: ${EXACT[*]:-not available}; curvature: $CURVATURE"
 } > "$OUT/timing.txt"
 $PY "$REF/summarize.py" "$OUT" > "$OUT/summary.md"
 echo "studies.sh: done in $((SECONDS - start_all)) s; see $OUT/summary.md" >&2

@@ -130,7 +130,7 @@ expect_within 10 4 profile "$tmp/over.ply" && grep -q "over.ply: vertex [0-9]* h
 # --- profile: text, JSON keys, vertex data
 expect 0 profile "$data/fandisk.ply" --levels 1,2,5 --json "$tmp/p.json" --vertex-data "$tmp/v.ply" &&
     grep -q "global" "$tmp/stdout" && pass || fail "profile text"
-json_check "$tmp/p.json" 'j["schema"] == "meshdiff.profile/1" and j["levels"] == [1, 2, 5] and len(j["sigma"]) == 3 and j["sigma_global"] > 0 and "vertices" in j["mesh"] and j["curvature"]["method"] == "goldfeather" and "undefined_vertices" in j["curvature"] and finite(j)'
+json_check "$tmp/p.json" 'j["schema"] == "meshdiff.profile/1" and j["levels"] == [1, 2, 5] and len(j["sigma"]) == 3 and j["sigma_global"] > 0 and "vertices" in j["mesh"] and j["curvature"]["method"] == "jet" and "undefined_vertices" in j["curvature"] and finite(j)'
 head -c 2000 "$tmp/v.ply" | grep -q "property double D_5" && pass || fail "vertex-data PLY lacks D_5"
 head -c 2000 "$tmp/v.ply" | grep -q "property uchar red" && pass || fail "vertex-data PLY lacks colours"
 expect 0 profile "$tmp/v.ply" --levels 1 || fail "vertex-data PLY does not read back"
@@ -138,7 +138,7 @@ expect 0 profile "$data/fandisk.ply" --json - --no-global --curvature meyer
 json_check "$tmp/stdout" 'j["sigma_global"] is None and j["curvature"]["method"] == "meyer" and len(j["levels"]) == 20'
 
 # --- Corsini et al.'s roughness (--measure corsini): profile and compare, JSON, text, refused options
-json_check "$tmp/p.json" '"normal_rows_dropped" in j["curvature"] and "corsini" not in j'
+json_check "$tmp/p.json" '"steep_fits" in j["curvature"] and "normal_rows_dropped" not in j["curvature"] and "corsini" not in j'
 expect 0 profile "$data/fandisk.ply" --measure corsini --levels 1,2 --json "$tmp/pc.json" &&
     grep -q "multi-scale roughness" "$tmp/stdout" && pass || fail "corsini profile text"
 json_check "$tmp/pc.json" 'j["schema"] == "meshdiff.corsini/1" and j["corsini"]["levels"] == [1, 2] and all(r > 0 for r in j["corsini"]["roughness"]) and j["corsini"]["roughness_global"] > 0 and abs(j["corsini"]["multiscale"] - sum(j["corsini"]["roughness"]) / 2) < 1e-12 and finite(j)'

@@ -17,8 +17,18 @@ using namespace meshdiff;
 
 namespace {
 
-// The error of the estimate against the exact H over the interior vertices.
-CurvatureError error(const Shape& s, const CurvatureOptions& o = {})
+// The paper's estimator, the Goldfeather-Interrante cubic fit (the default
+// is the jet since issue 28): the tests of its rules and cap use it.
+CurvatureOptions paper()
+{
+    CurvatureOptions o;
+    o.method = CurvatureMethod::GoldfeatherCubic;
+    return o;
+}
+
+// The error of the estimate against the exact H over the interior vertices
+// (the cubic fit unless told).
+CurvatureError error(const Shape& s, const CurvatureOptions& o = paper())
 {
     return curvature_error(mean_curvature(s.mesh, o).H, s.exact_H, boundary_vertex_mask(s.mesh));
 }
@@ -237,16 +247,16 @@ TEST(MeanCurvature, FallbacksAndUndefinedVerticesAreCounted)
     Mesh tri;
     tri.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
     tri.faces = {{0, 1, 2}};
-    const auto f = mean_curvature(tri);
+    const auto f = mean_curvature(tri, paper());
     EXPECT_EQ(f.undefined, 3u);
     for (double h : f.H) EXPECT_TRUE(std::isnan(h));
     // Meyer is undefined on boundary vertices, the fits are not.
     const Shape grid = heightfield(17);
     const auto meyer = mean_curvature(grid.mesh, method(CurvatureMethod::MeyerCotangent));
     EXPECT_EQ(meyer.undefined, std::size_t(4 * 16));
-    EXPECT_EQ(mean_curvature(grid.mesh).undefined, 0u);
+    EXPECT_EQ(mean_curvature(grid.mesh, paper()).undefined, 0u);
     // Valence-5 icosphere vertices widen to the 2-ring (min_neighbors 6).
-    EXPECT_EQ(mean_curvature(icosphere(3).mesh).widened, 12u);
+    EXPECT_EQ(mean_curvature(icosphere(3).mesh, paper()).widened, 12u);
 }
 
 TEST(MeanCurvature, DroppedNormalRowsAreCountedOnExactlyTheVerticesOfTheRule)
@@ -259,7 +269,7 @@ TEST(MeanCurvature, DroppedNormalRowsAreCountedOnExactlyTheVerticesOfTheRule)
     // neighbourhood lies on another plane or line: every edge and corner
     // vertex and every face vertex next to one, i.e. all but the inner
     // (k - 3) x (k - 3) vertices of each face (valence 6: not widened).
-    CurvatureOptions o;
+    CurvatureOptions o = paper();
     o.max_normal_angle_deg = 40.0;
     for (int k : {4, 6}) {
         const Mesh cube = subdivided_cube(k);
@@ -277,9 +287,9 @@ TEST(MeanCurvature, NoNormalRowsDroppedWhereNormalsAreClose)
 {
     // A plane (all normals equal, boundary vertices widened) and icospheres
     // (neighbouring normals within a few degrees, valence-5 vertices widened).
-    EXPECT_EQ(mean_curvature(plane_grid(12, 9).mesh).normal_rows_dropped, 0u);
+    EXPECT_EQ(mean_curvature(plane_grid(12, 9).mesh, paper()).normal_rows_dropped, 0u);
     for (int k : {2, 3}) {
-        const auto f = mean_curvature(icosphere(k).mesh);
+        const auto f = mean_curvature(icosphere(k).mesh, paper());
         EXPECT_EQ(f.normal_rows_dropped, 0u);
         EXPECT_EQ(f.widened, 12u);
     }
@@ -289,7 +299,7 @@ TEST(MeanCurvature, InverseSquareWeightingIsMeasuredNotDefault)
 {
     // Both weightings converge on the sphere; the default stays unweighted
     // because the weighted fit is far less stable on real meshes (README).
-    CurvatureOptions w;
+    CurvatureOptions w = paper();
     w.weighting = RowWeighting::InverseSquare;
     EXPECT_LT(error(icosphere(5), w).rms, 5e-3);
     EXPECT_EQ(CurvatureOptions{}.weighting, RowWeighting::None);
@@ -359,7 +369,7 @@ std::vector<double> fit_on_rows(const Mesh& m, const Adjacency& adj, const std::
         }
         rows.offset.push_back(std::uint32_t(rows.index.size()));
     }
-    const auto H = mean_curvature(m, rows, vertex_normals(m)).H;
+    const auto H = mean_curvature(m, rows, vertex_normals(m), paper()).H;
     std::vector<double> out;
     for (auto v : check) out.push_back(H[v]);
     return out;
@@ -372,7 +382,7 @@ TEST(MeanCurvature, CapEngagesBesideAHubAndCountsTheFits)
     // Every rim vertex of a fan has 3 neighbours, so widens to its 2-ring,
     // which holds the whole rim: capped. The hub fits on its 1-ring (never capped).
     const int n = 2000;
-    const auto f = mean_curvature(fan(n));
+    const auto f = mean_curvature(fan(n), paper());
     EXPECT_EQ(f.capped, std::size_t(n));
     EXPECT_EQ(f.widened, std::size_t(n));
     EXPECT_EQ(f.undefined, 0u);
@@ -380,15 +390,16 @@ TEST(MeanCurvature, CapEngagesBesideAHubAndCountsTheFits)
     // A rim vertex's 2-ring holds the hub and the other n - 1 rim vertices: n
     // in all. Up to the cap nothing changes; one more, and every rim vertex is
     // capped (scanned and cut at n = cap + 1, through the hub's k-d tree above).
-    const auto at_cap = mean_curvature(fan(int(kMaxFitNeighbors)));
+    const auto at_cap = mean_curvature(fan(int(kMaxFitNeighbors)), paper());
     EXPECT_EQ(at_cap.capped, 0u);
     EXPECT_TRUE(at_cap.capped_vertices.empty());
     EXPECT_EQ(at_cap.widened, kMaxFitNeighbors);
-    for (std::size_t k : {kMaxFitNeighbors + 1, kMaxFitNeighbors + 2}) EXPECT_EQ(mean_curvature(fan(int(k))).capped, k);
+    for (std::size_t k : {kMaxFitNeighbors + 1, kMaxFitNeighbors + 2})
+        EXPECT_EQ(mean_curvature(fan(int(k)), paper()).capped, k);
     // The largest latitude-longitude sphere of the estimator tables (poles of
     // valence 128) is not capped; one with 400 longitudes is, beside its poles.
-    EXPECT_EQ(mean_curvature(uv_sphere(128, 64).mesh).capped, 0u);
-    EXPECT_EQ(mean_curvature(uv_sphere(400, 40).mesh).capped, 800u);
+    EXPECT_EQ(mean_curvature(uv_sphere(128, 64).mesh, paper()).capped, 0u);
+    EXPECT_EQ(mean_curvature(uv_sphere(400, 40).mesh, paper()).capped, 800u);
 }
 
 TEST(MeanCurvature, CappedFitIsTheFitOnTheNearestOfTheTwoRing)
@@ -399,7 +410,7 @@ TEST(MeanCurvature, CappedFitIsTheFitOnTheNearestOfTheTwoRing)
     const Mesh m = fan(3000, 0.3);
     const Adjacency adj = vertex_adjacency(m);
     const std::vector<std::size_t> check = {1, 2, 77, 1500, 2999, 3000};
-    const auto H = mean_curvature(m).H;
+    const auto H = mean_curvature(m, paper()).H;
     const auto want = fit_on_rows(m, adj, check);
     for (std::size_t k = 0; k < check.size(); ++k) EXPECT_EQ(H[check[k]], want[k]) << "vertex " << check[k];
 
@@ -420,7 +431,7 @@ TEST(MeanCurvature, CappedFitIsTheFitOnTheNearestOfTheTwoRing)
     }
     const Adjacency adj2 = vertex_adjacency(two);
     ASSERT_LE(adj2.degree(1), kMaxFitNeighbors + 1);
-    const auto f = mean_curvature(two);
+    const auto f = mean_curvature(two, paper());
     EXPECT_GE(f.capped, 1u);
     EXPECT_EQ(f.capped_vertices.front(), 0u);
     EXPECT_EQ(f.H[0], fit_on_rows(two, adj2, {0})[0]);

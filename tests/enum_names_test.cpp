@@ -43,7 +43,7 @@ MESHDIFF_SPELLINGS(StepControl, "fixed", "adaptive");
 MESHDIFF_SPELLINGS(WarningKind, "unreferenced-vertices", "repeated-corner-faces", "isolated-vertices", "non-manifold",
                    "orientation-conflicts", "degenerate-faces", "duplicate-faces", "open-surface", "components",
                    "undefined-curvature", "outliers-dominate", "no-defined-d", "capped-neighbourhoods",
-                   "sparse-neighbourhoods");
+                   "sparse-neighbourhoods", "steep-fits");
 MESHDIFF_SPELLINGS(DistanceKind, "surface-to-surface", "point-to-surface", "surface-to-point", "point-to-point");
 #undef MESHDIFF_SPELLINGS
 

@@ -69,12 +69,28 @@ TEST(ProfileJson, HasTheSchemaKeysAndOnlyFiniteNumbers)
     EXPECT_EQ(j["levels"], nlohmann::json({1, 2, 5}));
     EXPECT_EQ(j["mesh"]["components"], 4);
     EXPECT_TRUE(j["curvature"].contains("undefined_vertices"));
-    EXPECT_EQ(j["curvature"]["widened_to_2_ring"], p.curvature_widened);
-    EXPECT_EQ(j["curvature"]["normal_rows_dropped"], p.curvature_normal_rows_dropped);
+    // The jet (the default) names its own neighbourhood and counters.
+    EXPECT_EQ(j["curvature"]["method"], "jet");
+    EXPECT_EQ(j["curvature"]["widened_to_3_ring"], p.curvature_widened);
+    EXPECT_EQ(j["curvature"]["degree2_fallback"], p.curvature_fallback);
+    EXPECT_EQ(j["curvature"]["steep_fits"], p.curvature_steep);
+    for (const char* key : {"widened_to_2_ring", "normal_rows_dropped", "quadric_fallback", "row_weighting",
+                            "min_neighbors", "max_normal_angle_deg"})
+        EXPECT_FALSE(j["curvature"].contains(key)) << key;
     EXPECT_FALSE(j["curvature"].contains("capped_neighbourhoods"));  // only when a fit was capped
     EXPECT_GT(j["mesh"]["scale_factor"].get<double>(), 0.0);
     EXPECT_TRUE(all_finite(j));
     EXPECT_FALSE(j["warnings"].empty());
+    // The paper's cubic fit: its rules' counters.
+    o.curvature.method = CurvatureMethod::GoldfeatherCubic;
+    const RoughnessProfile g = roughness_profile(m.mesh, o);
+    const auto jg = profile_json(mesh_facts(m), g);
+    EXPECT_EQ(jg["curvature"]["method"], "goldfeather");
+    EXPECT_EQ(jg["curvature"]["widened_to_2_ring"], g.curvature_widened);
+    EXPECT_EQ(jg["curvature"]["normal_rows_dropped"], g.curvature_normal_rows_dropped);
+    EXPECT_EQ(jg["curvature"]["quadric_fallback"], g.curvature_fallback);
+    EXPECT_FALSE(jg["curvature"].contains("steep_fits"));
+    EXPECT_TRUE(all_finite(jg));
 }
 
 TEST(ProfileJson, CappedNeighbourhoodsAreListedOnlyWhenThereAreSome)

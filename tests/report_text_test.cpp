@@ -118,6 +118,7 @@ TEST(ProfileText, HasOneRowPerLevelAndTheGlobalRow)
     const LoadedMesh m = read_mesh(data("torus_R1_r025.ply"));
     ProfileOptions o;
     o.levels = {1, 2, 7};
+    o.curvature.method = CurvatureMethod::GoldfeatherCubic;
     const RoughnessProfile p = roughness_profile(m.mesh, o);
     const auto rows = lines(profile_text(mesh_facts(m), p));
     std::size_t header = 0;
@@ -133,6 +134,14 @@ TEST(ProfileText, HasOneRowPerLevelAndTheGlobalRow)
                                std::to_string(p.curvature_fallback);
     EXPECT_TRUE(std::any_of(rows.begin(), rows.end(), [&](const std::string& r) { return contains(r, counts); }))
         << counts;
+    // The jet's own line.
+    o.curvature.method = CurvatureMethod::Jet;
+    const RoughnessProfile q = roughness_profile(m.mesh, o);
+    const std::string jet = "curvature  jet (2-ring, rows weighted 1/|d|^4); undefined " +
+                            std::to_string(q.curvature_undefined) + ", 3-ring " + std::to_string(q.curvature_widened) +
+                            ", degree-2 fallback " + std::to_string(q.curvature_fallback) + ", steep " +
+                            std::to_string(q.curvature_steep) + "\n";
+    EXPECT_TRUE(contains(profile_text(mesh_facts(m), q), jet)) << jet;
 }
 
 TEST(ExactProfileText, NamesThePropertyAndTheHErrorWithARowPerLevel)

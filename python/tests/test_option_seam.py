@@ -93,12 +93,13 @@ COMPARE = [
         ok(["--curvature", "quadric"], dict(curvature="quadric")),
         ok(["--curvature", "jet"], dict(curvature="jet")),
         value(["--curvature", "foo"], dict(curvature="foo")),
-        value(["--curvature", "jet", "--weighting", "inverse-square"], dict(curvature="jet", weighting="inverse-square"),
-              "the jet fit weights its rows itself"),
     ]),
     Option("--weighting", "weighting", [
-        ok(["--weighting", "inverse-square"], dict(weighting="inverse-square")),
+        ok(["--weighting", "inverse-square", "--curvature", "goldfeather"],
+           dict(weighting="inverse-square", curvature="goldfeather")),
         value(["--weighting", "heavy"], dict(weighting="heavy")),
+        value(["--weighting", "inverse-square"], dict(weighting="inverse-square"),
+              "the jet fit (the default) weights its rows itself"),
     ]),
     Option("--normalize", "normalize", [
         ok(["--normalize", "area"], dict(normalize="area")),
@@ -282,10 +283,12 @@ PROFILE = [
         ok(["--curvature", "meyer"], dict(curvature="meyer")),
         ok(["--curvature", "jet"], dict(curvature="jet")),
         value(["--curvature", "foo"], dict(curvature="foo")),
-        value(["--curvature", "jet", "--weighting", "inverse-square"], dict(curvature="jet", weighting="inverse-square"),
+    ]),
+    Option("--weighting", "weighting", [
+        ok(["--weighting", "inverse-square", "--curvature", "quadric"], dict(weighting="inverse-square", curvature="quadric")),
+        value(["--weighting", "inverse-square", "--curvature", "jet"], dict(weighting="inverse-square", curvature="jet"),
               "the jet fit weights its rows itself"),
     ]),
-    Option("--weighting", "weighting", [ok(["--weighting", "inverse-square"], dict(weighting="inverse-square"))]),
     Option("--normalize", "normalize", [
         ok(["--normalize", "area"], dict(normalize="area")),
         value(["--normalize", "original"], dict(normalize="original"), "a profile has no original"),

@@ -60,6 +60,16 @@ std::vector<Warning> warnings(const MeshFacts& f, const RoughnessProfile* p)
         if (p->curvature_undefined)
             add(WarningKind::UndefinedCurvature, double(p->curvature_undefined),
                 fmt::format("{} vertices have undefined curvature and are left out", p->curvature_undefined));
+        if (p->curvature_steep) {
+            const double fits = double(f.topology.vertices) - double(p->curvature_undefined);
+            const double share = fits > 0.0 ? double(p->curvature_steep) / fits : 0.0;
+            if (share > kJetSteepShare)
+                add(WarningKind::SteepFits, share,
+                    fmt::format("{:.0f}% of the jet fits tilt more than 30 degrees from the vertex normal: the "
+                                "surface is rough at the scale of its edges, where the jet's H stops growing with "
+                                "the roughness (sigma saturates; --curvature goldfeather does not)",
+                                100.0 * share));
+        }
         if (p->curvature_capped)
             add(WarningKind::CappedNeighbourhoods, double(p->curvature_capped),
                 fmt::format("{} curvature fits beside a vertex of very high valence used a capped 2-ring (the "

@@ -312,7 +312,8 @@ std::string comparison_text(const Comparison& c)
         for (const auto* p : {&pa, &pb})
             for (const auto& w : warnings(p == &pa ? c.original : c.processed, p))
                 if (w.kind == WarningKind::OutliersDominate || w.kind == WarningKind::CappedNeighbourhoods ||
-                    w.kind == WarningKind::NoDefinedD || w.kind == WarningKind::SparseNeighbourhoods)
+                    w.kind == WarningKind::NoDefinedD || w.kind == WarningKind::SparseNeighbourhoods ||
+                    w.kind == WarningKind::SteepFits)
                     s += fmt::format("  ! {}: {}\n", p == &pa ? "original" : "processed", w.text);
     }
     if (c.corsini) {

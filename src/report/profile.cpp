@@ -98,7 +98,8 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
             {"row_weights", "1/|d|^4"},
             {"undefined_vertices", p.curvature_undefined},
             {"widened_to_3_ring", p.curvature_widened},
-            {"degree2_fallback", p.curvature_fallback}};
+            {"degree2_fallback", p.curvature_fallback},
+            {"steep_fits", p.curvature_steep}};
     else
         j["curvature"] = {{"method", to_string(p.curvature_options.method)},
                           {"row_weighting", to_string(p.curvature_options.weighting)},
@@ -292,8 +293,8 @@ std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
                      detail::scale_meaning(p.normalization.method));
     if (p.curvature_options.method == CurvatureMethod::Jet)
         s += fmt::format(
-            "curvature  jet (2-ring, rows weighted 1/|d|^4); undefined {}, 3-ring {}, degree-2 fallback {}\n",
-            p.curvature_undefined, p.curvature_widened, p.curvature_fallback);
+            "curvature  jet (2-ring, rows weighted 1/|d|^4); undefined {}, 3-ring {}, degree-2 fallback {}, steep {}\n",
+            p.curvature_undefined, p.curvature_widened, p.curvature_fallback, p.curvature_steep);
     else
         s += fmt::format("curvature  {}{}; undefined {}, 2-ring {}, normal rows dropped {}, quadric fallback {}\n",
                          to_string(p.curvature_options.method),

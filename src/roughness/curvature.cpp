@@ -382,7 +382,7 @@ void gather_jet_neighbourhood(std::size_t v, const Mesh& mesh, const Adjacency& 
 // rank-deficient and the degree-2 jet gave H.
 template <class Buffers>
 FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::vector<std::uint32_t>& nbrs, Buffers& s,
-                   double& H)
+                   double& H, bool& steep)
 {
     const Vec3& p = mesh.points[v];
     const Vec3 helper = std::abs(N.x()) < 0.6 ? Vec3::UnitX() : (std::abs(N.y()) < 0.6 ? Vec3::UnitY() : Vec3::UnitZ());
@@ -422,18 +422,20 @@ FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::ve
             -((1.0 + fy * fy) * fxx - 2.0 * fx * fy * fxy + (1.0 + fx * fx) * fyy) / (2.0 * g * std::sqrt(g));
         if (!std::isfinite(Hs)) continue;
         H = Hs * inv_h;
+        steep = fx * fx + fy * fy > kJetSteepSlope * kJetSteepSlope;
         return cols == kJetColumns ? FitResult::Cubic : FitResult::Quadric;
     }
     return FitResult::Failed;
 }
 
 FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
-                     bool cubic, FitScratch& s, double& H, bool& dropped)
+                     bool cubic, FitScratch& s, double& H, bool& dropped, bool& steep)
 {
+    dropped = false;
+    steep = false;
     if (opt.method == CurvatureMethod::Jet) {
-        dropped = false;
-        if (s.nbrs.size() <= kMaxFitNeighbors) return jet_with(v, mesh, normals[v], s.nbrs, *s.jet_fixed, H);
-        return jet_with(v, mesh, normals[v], s.nbrs, s.jet_heap, H);
+        if (s.nbrs.size() <= kMaxFitNeighbors) return jet_with(v, mesh, normals[v], s.nbrs, *s.jet_fixed, H, steep);
+        return jet_with(v, mesh, normals[v], s.nbrs, s.jet_heap, H, steep);
     }
     if (s.nbrs.size() <= kMaxFitNeighbors) return fit_with(v, mesh, normals, opt, cubic, s.nbrs, *s.fixed, H, dropped);
     return fit_with(v, mesh, normals, opt, cubic, s.nbrs, s.heap, H, dropped);
@@ -447,7 +449,7 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
     const bool jet = opt.method == CurvatureMethod::Jet;
     CurvatureField field;
     field.H.assign(n, kNaN);
-    // bit 0 widened, bit 1 fallback, bit 2 no normal, bit 3 capped, bit 4 normal rows dropped
+    // bit 0 widened, bit 1 fallback, bit 2 no normal, bit 3 capped, bit 4 normal rows dropped, bit 5 steep jet
     std::vector<unsigned char> how(n, 0);
     HubTrees hubs;
     for (std::size_t v = 0; v < n; ++v)
@@ -477,12 +479,12 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
             if (capped) how[v] = 8;
             if (s.nbrs.size() < 3) continue;
             double H = kNaN;
-            bool dropped = false;
-            const FitResult r = fit_vertex(v, mesh, normals, opt, cubic, s, H, dropped);
+            bool dropped = false, steep = false;
+            const FitResult r = fit_vertex(v, mesh, normals, opt, cubic, s, H, dropped, steep);
             if (r == FitResult::Failed) continue;
             field.H[v] = H;
             how[v] = static_cast<unsigned char>((widened ? 1 : 0) | (cubic && r == FitResult::Quadric ? 2 : 0) |
-                                                (capped ? 8 : 0) | (dropped ? 16 : 0));
+                                                (capped ? 8 : 0) | (dropped ? 16 : 0) | (steep ? 32 : 0));
         }
     }
     stage.finish();
@@ -492,6 +494,7 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
         if (how[v] & 2) ++field.quadric_fallback;
         if (how[v] & 4) ++field.no_normal;
         if (how[v] & 16) ++field.normal_rows_dropped;
+        if (how[v] & 32) ++field.steep;
         if (how[v] & 8) {
             ++field.capped;
             if (field.capped_vertices.size() < kCappedVerticesListed) field.capped_vertices.push_back(std::uint32_t(v));

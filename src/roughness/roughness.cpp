@@ -231,6 +231,7 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
     p.curvature_widened = field.widened;
     p.curvature_normal_rows_dropped = field.normal_rows_dropped;
     p.curvature_fallback = field.quadric_fallback;
+    p.curvature_steep = field.steep;
     p.curvature_capped = field.capped;
     p.curvature_capped_vertices = field.capped_vertices;
     profile_from_H(p, unit, adj, std::move(field.H), field.undefined, options);

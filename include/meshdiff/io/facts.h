@@ -46,14 +46,15 @@ enum class WarningKind
     OutliersDominate,      //!< level: the level; value: top_share (above 0.5)
     NoDefinedD,            //!< level: the level; value: 0 (no vertex has a defined D)
     CappedNeighbourhoods,  //!< value: curvature fits on a capped 2-ring (curvature.h, kMaxFitNeighbors)
-    SparseNeighbourhoods   //!< level: the level; value: share of vertices without a neighbourhood (above 0.1)
+    SparseNeighbourhoods,  //!< level: the level; value: share of vertices without a neighbourhood (above 0.1)
+    SteepFits              //!< value: share of jet fits steeper than 30 degrees (above kJetSteepShare)
 };
 
 template <>
 struct EnumNames<WarningKind>
 {
     static constexpr const char* what = "warning kind";
-    static constexpr std::array<EnumName<WarningKind>, 14> names{
+    static constexpr std::array<EnumName<WarningKind>, 15> names{
         {{WarningKind::UnreferencedVertices, "unreferenced-vertices"},
          {WarningKind::RepeatedCornerFaces, "repeated-corner-faces"},
          {WarningKind::IsolatedVertices, "isolated-vertices"},
@@ -67,7 +68,8 @@ struct EnumNames<WarningKind>
          {WarningKind::OutliersDominate, "outliers-dominate"},
          {WarningKind::NoDefinedD, "no-defined-d"},
          {WarningKind::CappedNeighbourhoods, "capped-neighbourhoods"},
-         {WarningKind::SparseNeighbourhoods, "sparse-neighbourhoods"}}};
+         {WarningKind::SparseNeighbourhoods, "sparse-neighbourhoods"},
+         {WarningKind::SteepFits, "steep-fits"}}};
 };
 
 //! One warning about a mesh or its profile.

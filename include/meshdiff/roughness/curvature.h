@@ -7,7 +7,7 @@
 //! normalised mesh, so there H is dimensionless.
 //!
 //! Estimators:
-//! - GoldfeatherCubic (default): Goldfeather & Interrante, "A Novel
+//! - GoldfeatherCubic (the paper's): Goldfeather & Interrante, "A Novel
 //!   Cubic-Order Algorithm for Approximating Principal Direction Vectors",
 //!   ACM TOG 23(1), 2004. Least-squares fit of
 //!   z = A/2 x^2 + B xy + C/2 y^2 + D x^3 + E x^2 y + F x y^2 + G y^3
@@ -43,7 +43,8 @@
 //!   Differential-Geometry Operators for Triangulated 2-Manifolds", VisMath
 //!   2002: cotangent formula with mixed Voronoi areas (cotangent.h), H = -Hn . n
 //!   = K(x).n / 2. Undefined on boundary and non-manifold-edge vertices.
-//! - Jet: an osculating jet (Cazals & Pouget, "Estimating differential
+//! - Jet (the default since issue 28: it converges on irregular meshes,
+//!   docs/accuracy.md): an osculating jet (Cazals & Pouget, "Estimating differential
 //!   quantities using polynomial fitting of osculating jets", CAGD 22(2),
 //!   2005), in its interpolating form: the least-squares fit of the cubic
 //!   z = J1 x + J2 y + J3 x^2 + J4 xy + J5 y^2 + J6 x^3 + J7 x^2 y + J8 xy^2 + J9 y^3
@@ -115,15 +116,25 @@ constexpr std::size_t kMaxFitNeighbors = 256;
 //! neighbours than this (a cubic jet has 10 coefficients).
 constexpr std::size_t kJetMinNeighbors = 15;
 
+//! A jet fit is steep when the slope of its graph at the vertex, |grad f|,
+//! exceeds this (tan 30 degrees): the fitted tangent plane is tilted by more
+//! than 30 degrees from the vertex normal. Many steep fits mean a surface
+//! rough at the scale of its edges (noise of the order of an edge length),
+//! where the jet's H stops growing with the roughness (docs/accuracy.md).
+constexpr double kJetSteepSlope = 0.57735026918962573;
+
+//! Share of steep jet fits above which a profile warns (WarningKind::SteepFits).
+constexpr double kJetSteepShare = 0.1;
+
 //! How many capped vertex ids CurvatureField::capped_vertices keeps.
 constexpr std::size_t kCappedVerticesListed = 10;
 
 struct CurvatureOptions
 {
-    CurvatureMethod method = CurvatureMethod::GoldfeatherCubic;  //!< estimator
-    RowWeighting weighting = RowWeighting::None;                 //!< row weighting of the fits (measured: see README)
-    int min_neighbors = 6;                                       //!< widen to the 2-ring below this 1-ring size
-    double max_normal_angle_deg = 60.0;  //!< use a neighbour's normal rows only within this angle
+    CurvatureMethod method = CurvatureMethod::Jet;  //!< estimator (the default since issue 28: docs/accuracy.md)
+    RowWeighting weighting = RowWeighting::None;    //!< row weighting of the fits (measured: see README)
+    int min_neighbors = 6;                          //!< widen to the 2-ring below this 1-ring size
+    double max_normal_angle_deg = 60.0;             //!< use a neighbour's normal rows only within this angle
 };
 
 //! H per vertex (NaN where undefined) and how each vertex was estimated.
@@ -137,6 +148,7 @@ struct CurvatureField
     //! fits that fell back to the quadric included; 0 for the other methods.
     std::size_t normal_rows_dropped = 0;
     std::size_t quadric_fallback = 0;  //!< cubic fits that fell back to the quadric (Jet: to the degree-2 jet)
+    std::size_t steep = 0;             //!< jet fits steeper than kJetSteepSlope (Jet only)
     std::size_t no_normal = 0;         //!< vertices without a vertex normal (all faces degenerate)
     std::size_t capped = 0;            //!< 2-ring neighbourhoods cut to kMaxFitNeighbors (fit defined or not)
     std::vector<std::uint32_t> capped_vertices;  //!< the lowest ids of those (at most kCappedVerticesListed)

@@ -89,6 +89,7 @@ struct RoughnessProfile
     std::size_t curvature_widened = 0;                     //!< fits widened to the 2-ring
     std::size_t curvature_normal_rows_dropped = 0;         //!< CurvatureField::normal_rows_dropped
     std::size_t curvature_fallback = 0;                    //!< cubic fits that fell back to the quadric
+    std::size_t curvature_steep = 0;                       //!< CurvatureField::steep (jet fits)
     std::size_t curvature_capped = 0;                      //!< 2-ring neighbourhoods capped (CurvatureField::capped)
     std::vector<std::uint32_t> curvature_capped_vertices;  //!< the lowest ids of those (at most 10)
     double outlier_fraction = 0.001;                       //!< ProfileOptions::outlier_fraction as used (top_share)

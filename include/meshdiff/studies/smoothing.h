@@ -52,8 +52,9 @@
 //! only, so they crowd where the surface recedes (ear tips, rims). Every
 //! iteration therefore computes S from the current positions and reports
 //! dt / S (SmoothingReport::stability_ratio; above 1 the step may amplify
-//! the shortest-wavelength modes). StepControl::Fixed (the default, the
-//! paper's scheme) always takes dt = step e^2. StepControl::Adaptive takes
+//! the shortest-wavelength modes). StepControl::Fixed (the default; the
+//! paper gives no step, and its reference [4] uses implicit fairing) always
+//! takes dt = step e^2. StepControl::Adaptive takes
 //! dt_k = min(step e^2, stability * S): every iteration is then a stable step
 //! of the same flow, but on a poor mesh a step can be orders of magnitude
 //! shorter than asked, so the flow time (SmoothingReport::time) can fall far
@@ -101,7 +102,7 @@ enum class SmoothingUpdate
 //! Step control of the explicit flows (mcf, modified-mcf); see above.
 enum class StepControl
 {
-    Fixed,    //!< dt = step e^2 at every iteration (the paper's scheme; may diverge)
+    Fixed,    //!< dt = step e^2 at every iteration (a fixed explicit step; may diverge)
     Adaptive  //!< dt_k = min(step e^2, stability * S of the current mesh)
 };
 
