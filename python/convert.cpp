@@ -61,6 +61,7 @@ std::string py_spelling(const std::string& field)
         {"outputs.samples_out", "samples_out"},
         {"outputs.html", "html"},
         {"outputs.color_range", "color_range"},
+        {"outputs.html_face_budget", "html_face_budget"},
         {"outputs.vertex_data", "vertex_data"},
         {"outputs.exact", "exact"},
         {"outputs.exact_property", "exact_property"},
@@ -454,6 +455,12 @@ std::optional<HausdorffOptions> surface_distance_hausdorff(Obj hausdorff, Obj to
     return hausdorff_options(h);
 }
 
+// A face budget as the library takes it (a count beyond size_t is its largest).
+std::size_t face_budget(std::uint64_t b)
+{
+    return std::size_t(std::min<std::uint64_t>(b, std::uint64_t(std::numeric_limits<std::size_t>::max())));
+}
+
 CompareOutputs compare_outputs(const CompareKeywords& a)
 {
     CompareOutputs o;
@@ -463,6 +470,7 @@ CompareOutputs compare_outputs(const CompareKeywords& a)
     o.distance_maps = output_path(a.distance_maps, "outputs.distance_maps");
     o.samples_out = output_path(a.samples_out, "outputs.samples_out");
     o.html = output_path(a.html, "outputs.html");
+    if (auto b = whole(a.html_face_budget, "outputs.html_face_budget")) o.html_face_budget = face_budget(*b);
     if (py::isinstance<py::str>(a.color_range)) {
         parse_color_range(a.color_range.cast<std::string>(), o);
     } else if (!a.color_range.is_none()) {
@@ -485,6 +493,7 @@ ProfileRequest profile_request(const ProfileKeywords& a)
     r.json = output_path(a.json, "outputs.json");
     r.vertex_data = output_path(a.vertex_data, "outputs.vertex_data");
     r.html = output_path(a.html, "outputs.html");
+    if (auto b = whole(a.html_face_budget, "outputs.html_face_budget")) r.html_face_budget = face_budget(*b);
     if (auto c = number(a.color_range, "outputs.color_range")) r.color_range = *c;
     r.exact = flag(a.exact, "outputs.exact", r.exact);
     if (auto p = text(a.exact_property, "outputs.exact_property")) r.exact_property = *p;

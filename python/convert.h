@@ -192,7 +192,8 @@ struct CompareKeywords
     py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize, trim, local,
         local_trim, k, roughness, distance, samples, density, face_sampling, seed, vertex_samples, edge_samples,
         face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore, histogram;
-    py::object json, distance_map, distance_map_original, distance_maps, samples_out, html, color_range;
+    py::object json, distance_map, distance_map_original, distance_maps, samples_out, html, color_range,
+        html_face_budget;
     py::object threads;
 };
 
@@ -206,7 +207,7 @@ CompareOutputs compare_outputs(const CompareKeywords& a);
 struct ProfileKeywords
 {
     py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize, trim;
-    py::object json, vertex_data, html, color_range, exact, exact_property;
+    py::object json, vertex_data, html, color_range, exact, exact_property, html_face_budget;
     py::object threads;
 };
 

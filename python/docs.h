@@ -102,7 +102,10 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
   samples_out=None      write both directions' samples (PLY point cloud)   [--samples-out]
   html=None             write the HTML report (one self-contained page)    [--html]
   color_range=None      (MIN, MAX), 'LO:HI', 'max' or 'pNN' (percentile)   [--color-range]
-                        of the distance colours (maps: max, html: p99)
+                        of the distance colours (default p99, maps and html)
+  html_face_budget=None most faces the HTML report draws per mesh (>= 1000;
+                        default 250000); above it a mesh is drawn clustered,
+                        the numbers stay the full mesh's; needs html    [--html-face-budget]
   threads=None          OpenMP threads; None or 0: all cores               [--threads]
 )doc";
 
@@ -152,6 +155,8 @@ Options (keyword-only, as `meshdiff profile`; None: the library's default):
   exact=False        also the profile of the exact H stored in the input
                      (under "exact"), and the error of the estimate   [--exact]
   exact_property=None  the vertex property holding it ("exact_H")     [--exact-property]
+  html_face_budget=None  most faces the HTML report draws (>= 1000;
+                     default 250000); needs html                      [--html-face-budget]
 )doc";
 
 //! profile() (followed by kProfileOptionsDoc).

@@ -296,7 +296,8 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
                                  Obj vertex_samples, Obj edge_samples, Obj face_samples, Obj hausdorff,
                                  Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance, Obj hausdorff_budget, Obj fscore,
                                  Obj histogram, Obj json, Obj distance_map, Obj distance_map_original,
-                                 Obj distance_maps, Obj samples_out, Obj html, Obj color_range, Obj threads)
+                                 Obj distance_maps, Obj samples_out, Obj html, Obj color_range, Obj html_face_budget,
+                                 Obj threads)
 {
     CompareKeywords kw;
     kw.levels = levels;
@@ -333,6 +334,7 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
     kw.samples_out = samples_out;
     kw.html = html;
     kw.color_range = color_range;
+    kw.html_face_budget = html_face_budget;
     kw.threads = threads;
     return kw;
 }
@@ -340,7 +342,7 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
 // The ProfileKeywords of the keywords of profile() and profile_file().
 ProfileKeywords profile_keywords(Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
                                  Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data, Obj html,
-                                 Obj color_range, Obj exact, Obj exact_property, Obj threads)
+                                 Obj color_range, Obj exact, Obj exact_property, Obj html_face_budget, Obj threads)
 {
     ProfileKeywords kw;
     kw.levels = levels;
@@ -358,6 +360,7 @@ ProfileKeywords profile_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
     kw.color_range = color_range;
     kw.exact = exact;
     kw.exact_property = exact_property;
+    kw.html_face_budget = html_face_budget;
     kw.threads = threads;
     return kw;
 }
@@ -410,7 +413,7 @@ void def_compare_like(py::module_& m, const char* name, F&& f, const std::string
           py::arg("json") = py::none(), py::arg("distance_map") = py::none(),
           py::arg("distance_map_original") = py::none(), py::arg("distance_maps") = py::none(),
           py::arg("samples_out") = py::none(), py::arg("html") = py::none(), py::arg("color_range") = py::none(),
-          py::arg("threads") = py::none());
+          py::arg("html_face_budget") = py::none(), py::arg("threads") = py::none());
 }
 
 // compare() and compare_files().
@@ -425,7 +428,8 @@ void def_compare(py::module_& m)
            Obj local, Obj local_trim, Obj k, Obj roughness, Obj distance, Obj samples, Obj density, Obj face_sampling,
            Obj seed, Obj vertex_samples, Obj edge_samples, Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance,
            Obj hausdorff_abs_tolerance, Obj hausdorff_budget, Obj fscore, Obj histogram, Obj json, Obj distance_map,
-           Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj html, Obj color_range, Obj threads) {
+           Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj html, Obj color_range,
+           Obj html_face_budget, Obj threads) {
             return py_compare(
                 V1, F1, V2, F2,
                 compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
@@ -433,7 +437,7 @@ void def_compare(py::module_& m)
                                  face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff,
                                  hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore, histogram,
                                  json, distance_map, distance_map_original, distance_maps, samples_out, html,
-                                 color_range, threads));
+                                 color_range, html_face_budget, threads));
         },
         compare_doc, py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"));
     def_compare_like(
@@ -443,7 +447,7 @@ void def_compare(py::module_& m)
            Obj distance, Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples,
            Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance, Obj hausdorff_budget,
            Obj fscore, Obj histogram, Obj json, Obj distance_map, Obj distance_map_original, Obj distance_maps,
-           Obj samples_out, Obj html, Obj color_range, Obj threads) {
+           Obj samples_out, Obj html, Obj color_range, Obj html_face_budget, Obj threads) {
             return py_compare_files(
                 original, processed,
                 compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
@@ -451,7 +455,7 @@ void def_compare(py::module_& m)
                                  face_sampling, seed, vertex_samples, edge_samples, face_samples, hausdorff,
                                  hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore, histogram,
                                  json, distance_map, distance_map_original, distance_maps, samples_out, html,
-                                 color_range, threads));
+                                 color_range, html_face_budget, threads));
         },
         compare_files_doc, py::arg("original"), py::arg("processed"));
 }
@@ -466,11 +470,11 @@ void def_profile(py::module_& m)
         "profile",
         [](const ArrayLike& V, const ArrayLike& F, Obj levels, Obj radii, Obj global_level, Obj curvature,
            Obj weighting, Obj measure, Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data,
-           Obj html, Obj color_range, Obj exact, Obj exact_property, Obj threads) {
+           Obj html, Obj color_range, Obj exact, Obj exact_property, Obj html_face_budget, Obj threads) {
             return py_profile(V, F,
                               profile_keywords(levels, radii, global_level, curvature, weighting, measure,
                                                unbiased_variance, normalize, trim, json, vertex_data, html, color_range,
-                                               exact, exact_property, threads));
+                                               exact, exact_property, html_face_budget, threads));
         },
         profile_doc.c_str(), py::arg("V"), py::arg("F"), py::kw_only(), py::arg("levels") = py::none(),
         py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
@@ -479,15 +483,16 @@ void def_profile(py::module_& m)
         py::arg("trim") = py::none(), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(),
         py::arg("html") = py::none(), py::arg("color_range") = py::none(),
         py::arg("exact") = py::bool_(pdefaults.exact), py::arg("exact_property") = py::none(),
-        py::arg("threads") = py::none());
+        py::arg("html_face_budget") = py::none(), py::arg("threads") = py::none());
     m.def(
         "profile_file",
         [](Obj path, Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
            Obj unbiased_variance, Obj normalize, Obj trim, Obj json, Obj vertex_data, Obj html, Obj color_range,
-           Obj exact, Obj exact_property, Obj threads) {
-            return py_profile_file(path, profile_keywords(levels, radii, global_level, curvature, weighting, measure,
-                                                          unbiased_variance, normalize, trim, json, vertex_data, html,
-                                                          color_range, exact, exact_property, threads));
+           Obj exact, Obj exact_property, Obj html_face_budget, Obj threads) {
+            return py_profile_file(
+                path, profile_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
+                                       normalize, trim, json, vertex_data, html, color_range, exact, exact_property,
+                                       html_face_budget, threads));
         },
         profile_file_doc.c_str(), py::arg("path"), py::kw_only(), py::arg("levels") = py::none(),
         py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
@@ -496,7 +501,7 @@ void def_profile(py::module_& m)
         py::arg("trim") = py::none(), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(),
         py::arg("html") = py::none(), py::arg("color_range") = py::none(),
         py::arg("exact") = py::bool_(pdefaults.exact), py::arg("exact_property") = py::none(),
-        py::arg("threads") = py::none());
+        py::arg("html_face_budget") = py::none(), py::arg("threads") = py::none());
 }
 
 // corsini_profile(), mean_curvature() and roughness().

@@ -90,6 +90,7 @@ const std::vector<std::string>& option_fields()
         "outputs.samples_out",
         "outputs.html",
         "outputs.color_range",
+        "outputs.html_face_budget",
         "outputs.vertex_data",
         "outputs.exact",
         "outputs.exact_property",

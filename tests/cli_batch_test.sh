@@ -135,6 +135,19 @@ page = open(ok["html"]).read()
 start = page.index('id="meshdiff-report">') + len('id="meshdiff-report">')
 assert json.loads(page[start:page.index("</script>", start)]) == ok["result"]
 PY
+# --html-face-budget goes to every pair's page (bunny_res3 has 3,851 faces: drawn clustered under 1,000); without
+# --html-dir it is refused before any pair runs
+expect 6 batch "$tmp/html_pairs.csv" --out "$tmp/html3.jsonl" --html-dir "$tmp/reports3" --html-face-budget 1000 \
+    --levels 1 -q && python3 - "$tmp/html3.jsonl" <<'PY' && pass || fail "batch --html-face-budget"
+import json, re, sys
+ok = json.loads(open(sys.argv[1]).readline())
+page = open(ok["html"]).read()
+assert '"face_budget":1000' in page, re.findall('"face_budget":[0-9]+', page)
+assert '"reduced":true' in page
+PY
+expect 2 batch "$tmp/html_pairs.csv" --out "$tmp/html4.jsonl" --html-face-budget 1000 -q &&
+    grep -q -- "--html-face-budget: needs --html" "$tmp/stderr" && [ ! -e "$tmp/html4.jsonl" ] &&
+    pass || fail "batch --html-face-budget without --html-dir: $(cat "$tmp/stderr")"
 expect 3 batch "$tmp/html_pairs.csv" --out "$tmp/html2.jsonl" --html-dir "$data/bunny_res3.ply" -q &&
     grep -q "bunny_res3.ply: cannot create the HTML reports folder" "$tmp/stderr" && [ ! -e "$tmp/html2.jsonl" ] &&
     pass || fail "batch --html-dir onto a file: $(cat "$tmp/stderr")"

@@ -28,6 +28,7 @@ struct ProfileArgs
     ProfileCliOptions profile;
     ProfileRequest request;  // outputs bound to the options below
     Given color_range;
+    Given html_face_budget;
     Given threads;
     ProgressCliOptions progress;
 };
@@ -42,6 +43,7 @@ int run_profile(const ProfileArgs& a)
     r.corsini_unbiased = a.profile.unbiased_variance;
     r.profile = to_profile_options(a.profile);
     if (a.color_range.given()) r.color_range = parse_number("outputs.color_range", a.color_range.text);
+    r.html_face_budget = html_face_budget(a.html_face_budget);
     validate(r, {a.mesh});
     ProgressDisplay progress(a.progress);
     r.profile.progress = &progress;
@@ -81,6 +83,7 @@ void add_profile_command(CLI::App& app, Action& action)
     args->color_range.option =
         sub->add_option("--color-range", args->color_range.text,
                         "fix the symmetric H colour range [-R, R] (default: 95th percentile of |H|)");
+    add_html_face_budget_option(sub, args->html_face_budget);
     sub->add_flag("--exact", args->request.exact,
                   "also compute the profile from a per-vertex H stored in the PLY (the true profile of a generated "
                   "surface) and the error of the estimated H");

@@ -2,6 +2,7 @@
 
 #include "meshdiff/error.h"
 #include "meshdiff/options.h"
+#include "meshdiff/report/html.h"
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <map>
 
 namespace meshdiff::cli {
@@ -53,6 +55,7 @@ std::string cli_spelling(const std::string& field)
         {"outputs.samples_out", "--samples-out"},
         {"outputs.html", "--html"},
         {"outputs.color_range", "--color-range"},
+        {"outputs.html_face_budget", "--html-face-budget"},
         {"outputs.vertex_data", "--vertex-data"},
         {"outputs.exact", "--exact"},
         {"outputs.exact_property", "--exact-property"},
@@ -290,13 +293,32 @@ void add_compare_output_options(CLI::App* sub, CompareOutputCliOptions& o)
                     "both meshes in 3D coloured by distance or roughness D_L (docs/cli.md)");
     sub->add_option("--color-range", o.color_range,
                     "the distance colour range of the maps and the HTML report: MIN MAX, LO:HI, max, or pNN (0 to "
-                    "that percentile of both meshes' vertex distances; default: max for the maps, p99 for --html)")
+                    "that percentile of both meshes' vertex distances; default: p99 for both)")
         ->expected(1, 2);
+    add_html_face_budget_option(sub, o.html_face_budget);
+}
+
+void add_html_face_budget_option(CLI::App* sub, Given& budget)
+{
+    budget.option = sub->add_option("--html-face-budget", budget.text,
+                                    fmt::format("with --html: most faces drawn per mesh (default {}, at least {}); a "
+                                                "larger mesh is drawn clustered, the page says so, and every number "
+                                                "is that of the full mesh",
+                                                kDefaultHtmlFaceBudget, kMinHtmlFaceBudget));
+    budget.option->type_name("UINT");
+}
+
+std::size_t html_face_budget(const Given& budget)
+{
+    if (!budget.given()) return kDefaultHtmlFaceBudget;
+    const std::uint64_t b = parse_whole_number("outputs.html_face_budget", budget.text);
+    return std::size_t(std::min<std::uint64_t>(b, std::uint64_t(std::numeric_limits<std::size_t>::max())));
 }
 
 CompareOutputs to_compare_outputs(const CompareOutputCliOptions& o)
 {
     CompareOutputs out = o.outputs;
+    out.html_face_budget = html_face_budget(o.html_face_budget);
     if (o.color_range.size() == 1) parse_color_range(o.color_range[0], out);
     if (o.color_range.size() == 2)
         out.color_range = std::pair{parse_number("outputs.color_range", o.color_range.at(0)),

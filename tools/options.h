@@ -72,10 +72,17 @@ struct CompareOutputCliOptions
 {
     CompareOutputs outputs;
     std::vector<std::string> color_range;  // MIN MAX as given
+    Given html_face_budget;
 };
 void add_compare_output_options(CLI::App* sub, CompareOutputCliOptions& o);
 //! \throw OptionError for a colour range that is not two numbers.
 CompareOutputs to_compare_outputs(const CompareOutputCliOptions& o);
+
+//! --html-face-budget N (compare and profile).
+void add_html_face_budget_option(CLI::App* sub, Given& budget);
+//! The face budget \p budget gives, or the default.
+//! \throw OptionError("outputs.html_face_budget") for a text that is not a whole number.
+std::size_t html_face_budget(const Given& budget);
 
 //! --threads, kept as given (0: all cores).
 void add_threads_option(CLI::App* sub, Given& threads);

@@ -90,6 +90,7 @@ def compare(
     samples_out: Optional[_Path] = ...,
     html: Optional[_Path] = ...,
     color_range: Union[str, Tuple[float, float], None] = ...,
+    html_face_budget: Optional[int] = ...,
     threads: Optional[int] = ...,
     progress: _Progress = ...,
     maps: bool = ...,
@@ -132,6 +133,7 @@ def compare(
     samples_out: Optional[_Path] = ...,
     html: Optional[_Path] = ...,
     color_range: Union[str, Tuple[float, float], None] = ...,
+    html_face_budget: Optional[int] = ...,
     threads: Optional[int] = ...,
     progress: _Progress = ...,
     maps: bool = ...,
@@ -174,6 +176,7 @@ def compare_files(
     samples_out: Optional[_Path] = ...,
     html: Optional[_Path] = ...,
     color_range: Union[str, Tuple[float, float], None] = ...,
+    html_face_budget: Optional[int] = ...,
     threads: Optional[int] = ...,
     progress: _Progress = ...,
 ) -> _Report: ...
@@ -196,6 +199,7 @@ def profile(
     color_range: Optional[float] = ...,
     exact: bool = ...,
     exact_property: Optional[str] = ...,
+    html_face_budget: Optional[int] = ...,
     threads: Optional[int] = ...,
     progress: _Progress = ...,
 ) -> _Report: ...
@@ -218,6 +222,7 @@ def profile(
     color_range: Optional[float] = ...,
     exact: bool = ...,
     exact_property: Optional[str] = ...,
+    html_face_budget: Optional[int] = ...,
     threads: Optional[int] = ...,
     progress: _Progress = ...,
 ) -> _Report: ...
@@ -239,6 +244,7 @@ def profile_file(
     color_range: Optional[float] = ...,
     exact: bool = ...,
     exact_property: Optional[str] = ...,
+    html_face_budget: Optional[int] = ...,
     threads: Optional[int] = ...,
     progress: _Progress = ...,
 ) -> _Report: ...

@@ -256,6 +256,12 @@ COMPARE = [
         value(["--color-range", "0.05:0"], dict(color_range="0.05:0")),
         value(["--color-range", "wide"], dict(color_range="wide")),
     ]),
+    Option("--html-face-budget", "html_face_budget", [
+        ok(["--html", "r.html", "--html-face-budget", "2000"], dict(html="r.html", html_face_budget=2000)),
+        value(["--html", "r.html", "--html-face-budget", "999"], dict(html="r.html", html_face_budget=999)),
+        value(["--html-face-budget", "5000"], dict(html_face_budget=5000), "a budget needs the HTML report"),
+        type_(["--html", "r.html", "--html-face-budget", "x"], dict(html="r.html", html_face_budget="x")),
+    ]),  # batch: with --html-dir, passed to every pair (tests/cli_batch_test.sh)
     Option("--threads", "threads", [
         ok(["--threads", "1"], dict(threads=1)),
         value(["--threads", "2000"], dict(threads=2000)),
@@ -319,6 +325,11 @@ PROFILE = [
         value(["--color-range", "-1"], dict(color_range=-1.0)),
         type_(["--color-range", "x"], dict(color_range="x")),
     ]),
+    Option("--html-face-budget", "html_face_budget", [
+        ok(["--html", "p.html", "--html-face-budget", "1000"], dict(html="p.html", html_face_budget=1000)),
+        value(["--html", "p.html", "--html-face-budget", "0"], dict(html="p.html", html_face_budget=0)),
+        value(["--html-face-budget", "5000"], dict(html_face_budget=5000), "a budget needs the HTML report"),
+    ]),
     Option("--exact", "exact", [
         ok(["--exact"], dict(exact=True)),
         value(["--exact", "--measure", "corsini"], dict(exact=True, measure="corsini")),
@@ -377,7 +388,7 @@ def test_every_option_is_in_the_table(cli):
     assert python_keywords(meshdiff.profile) == python_keywords(meshdiff.profile_file)
     passed = {o.flag for o in COMPARE if o.batch is True}
     assert cli_options(cli, "batch") == passed | set(BATCH_ONLY)
-    assert counts == {"compare": 37, "profile": 18}, counts  # the options covered, stated
+    assert counts == {"compare": 38, "profile": 19}, counts  # the options covered, stated
 
 
 CASES = [pytest.param("compare", o, c, id=f"compare {o.flag}: {c!r}") for o in COMPARE for c in o.cases] + [

@@ -203,8 +203,9 @@ namespace {
 
 void check(const HtmlOptions& o)
 {
-    if (o.face_budget < 1000)
-        throw InvalidArgumentError(fmt::format("html: a face budget of {} is below 1000", o.face_budget));
+    if (o.face_budget < kMinHtmlFaceBudget)
+        throw InvalidArgumentError(
+            fmt::format("html: a face budget of {} is below {}", o.face_budget, kMinHtmlFaceBudget));
     if (o.color_range && !(std::isfinite(o.color_range->first) && std::isfinite(o.color_range->second) &&
                            o.color_range->first < o.color_range->second))
         throw InvalidArgumentError("html: the colour range needs finite MIN < MAX");

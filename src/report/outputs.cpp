@@ -48,6 +48,17 @@ std::launch facts_policy()
     return omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred;
 }
 
+// The HTML report's face budget: at least kMinHtmlFaceBudget; other than the
+// default only with an HTML report to draw.
+void check_face_budget(std::size_t budget, const std::string& html)
+{
+    if (budget < kMinHtmlFaceBudget)
+        throw OptionError("outputs.html_face_budget",
+                          fmt::format("{} is below {} faces per mesh", budget, kMinHtmlFaceBudget));
+    if (budget != kDefaultHtmlFaceBudget && html.empty())
+        throw OptionError("outputs.html_face_budget", "needs {outputs.html} (the HTML report it is for)");
+}
+
 }  // namespace
 
 std::pair<std::string, std::string> map_paths(const CompareOutputs& o)
@@ -80,6 +91,7 @@ void validate(const CompareOutputs& o, const CompareOptions& options, const std:
         if (!original_map.empty()) throw OptionError(original_field, "needs the surface distance");
     }
     if (o.html == "-") throw OptionError("outputs.html", "is a file: '-' (standard output) is not offered");
+    check_face_budget(o.html_face_budget, o.html);
     check_targets({{"outputs.json", o.json},
                    {processed_field, processed_map},
                    {original_field, original_map},
@@ -133,6 +145,7 @@ std::string write_outputs(const Comparison& c, const LoadedMesh& original, const
     if (!o.html.empty()) {
         HtmlOptions html;
         html.command = o.command;
+        html.face_budget = o.html_face_budget;
         html.color_range = o.color_range;
         if (o.color_percentile && !c.original_vertex_distance.empty()) {
             html.color_range = distance_color_range(c, *o.color_percentile);
@@ -186,6 +199,7 @@ void validate(const ProfileRequest& r, const std::vector<std::string>& inputs)
                           fmt::format("{} must be finite and > 0 (0: the 95th percentile of |H|)", r.color_range));
     if (r.exact && r.exact_property.empty()) throw OptionError("outputs.exact_property", "is empty");
     if (r.html == "-") throw OptionError("outputs.html", "is a file: '-' (standard output) is not offered");
+    check_face_budget(r.html_face_budget, r.html);
     check_targets({{"outputs.json", r.json}, {"outputs.vertex_data", r.vertex_data}, {"outputs.html", r.html}}, inputs);
 }
 
@@ -236,6 +250,7 @@ ProfileReport profile_report(const LoadedMesh& loaded, const ProfileRequest& r)
     if (!r.html.empty()) {
         HtmlOptions html;
         html.command = r.command;
+        html.face_budget = r.html_face_budget;
         if (r.color_range > 0.0) html.color_range = std::pair{-r.color_range, r.color_range};
         write_html_file(r.html, profile_html(profile, loaded.mesh, loaded.input.path, out.json, html));
         out.text += fmt::format("HTML report: {}\n", r.html);

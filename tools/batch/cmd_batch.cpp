@@ -290,6 +290,7 @@ void add_batch_command(CLI::App& app, Action& action)
                     "with --maps-dir: the distance colour range of the maps of every pair: MIN MAX, LO:HI, max or "
                     "pNN (as compare's)")
         ->expected(1, 2);
+    add_html_face_budget_option(sub, args->outputs.html_face_budget);
     add_threads_option(sub, args->threads);
     auto* progress = sub->add_flag("--progress", args->progress,
                                    "show the progress (one line per pair on stderr; the default, as for compare "

@@ -30,6 +30,8 @@ namespace meshdiff {
 //! drawn reduced (reduce_for_display()), and the page says so. Its numbers
 //! are always those of the full meshes.
 constexpr std::size_t kDefaultHtmlFaceBudget = 250'000;
+//! The smallest face budget accepted.
+constexpr std::size_t kMinHtmlFaceBudget = 1000;
 
 //! The default distance colour range of the page: [0, this percentile of both
 //! meshes' vertex distances] (vertex_maps.h distance_color_range()).

@@ -10,6 +10,7 @@
 
 #include "meshdiff/compare.h"
 #include "meshdiff/io/io.h"
+#include "meshdiff/report/html.h"
 #include "meshdiff/report/vertex_maps.h"
 #include "meshdiff/roughness/corsini.h"
 #include "meshdiff/roughness/roughness.h"
@@ -38,6 +39,11 @@ struct CompareOutputs
     //! (the JSON report then carries them too).
     std::string html;
     std::string command;  //!< the command line (or call) the HTML report shows
+    //! Most faces the HTML report draws per mesh (HtmlOptions::face_budget):
+    //! a larger mesh is drawn clustered, the page says so, and every number
+    //! stays that of the full mesh. At least kMinHtmlFaceBudget; other than
+    //! the default only with html.
+    std::size_t html_face_budget = kDefaultHtmlFaceBudget;
     //! The colour range [MIN, MAX] of the distance maps, MIN < MAX, both
     //! finite; unset: [0, the largest distance] (of both maps when both are
     //! written).
@@ -59,7 +65,8 @@ std::pair<std::string, std::string> map_paths(const CompareOutputs& o);
 
 //! The rules of \p o with \p options: distance_maps excludes the two single
 //! map options; a colour range needs MIN < MAX, both finite, and excludes a
-//! colour percentile, which is in (0, 100]; samples_out and
+//! colour percentile, which is in (0, 100]; html_face_budget is at least
+//! kMinHtmlFaceBudget and, when not the default, needs html; samples_out and
 //! the maps need the surface distance; no two outputs name one file and no
 //! output is one of \p inputs (also through links).
 //! \throw OptionError naming the field.
@@ -94,13 +101,14 @@ struct ProfileRequest
     std::string exact_property = "exact_H";  //!< the PLY vertex property holding it
     std::string html;     //!< the HTML report (html.h profile_html()); empty: none (sigma measure only)
     std::string command;  //!< the command line (or call) the HTML report shows
+    std::size_t html_face_budget = kDefaultHtmlFaceBudget;  //!< as CompareOutputs::html_face_budget
 };
 
 //! The rules of \p r: validate() of its profile options; corsini_unbiased
 //! only with the Corsini measure, which takes no radii, vertex data, exact
 //! profile, HTML report or colour range; color_range finite and >= 0;
-//! exact_property not empty; html not "-"; no output is one of \p inputs,
-//! nor another output.
+//! exact_property not empty; html not "-"; html_face_budget as in
+//! CompareOutputs; no output is one of \p inputs, nor another output.
 //! \throw OptionError naming the field.
 void validate(const ProfileRequest& r, const std::vector<std::string>& inputs);
 
