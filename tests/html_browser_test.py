@@ -164,8 +164,12 @@ try:
                    "surface_distance.hausdorff.relative.upper", "surface_distance.forward.mean",
                    "surface_distance.backward.rms", "surface_distance.forward.p99", "original.mesh.vertices",
                    "processed.mesh.faces", "original.mesh.components", "roughness_distance.distance.0",
-                   "roughness_distance.global.distance", "original.sigma.19", "processed.sigma_global"]:
+                   "roughness_distance.global.distance", "original.sigma.19", "processed.sigma_global",
+                   "roughness_distance.local.rms.0", "roughness_distance.local.rms.19",
+                   "roughness_distance.local.global"]:
         check(needed in keys, f"the table shows {needed}")
+    check(driver.find_element("id", "local-definition").text.startswith("local RMS: rms_L = "),
+          "the local RMS column is defined under the table")
     check("--html" in driver.find_element("id", "command").text, "the page shows the command line")
     check(len(driver.find_elements("css selector", "svg.plot")) >= 4, "sigma, d_L and both histograms plotted")
 
@@ -269,6 +273,18 @@ try:
     pimg.save(os.path.join(work, "profile.png"))
     check(sum(1 for c in pimg.getdata() if c != (255, 255, 255)) > 0.05 * pimg.width * pimg.height,
           "profile: the mesh is drawn")
+    # --measure corsini --html: the Corsini table (per level, global, multi-scale) equals the JSON.
+    chtml, cjs = os.path.join(work, "corsini.html"), os.path.join(work, "corsini.json")
+    run(A, B, "--measure", "corsini", "--levels", "1,2,3", "-n", "20000", "--html", chtml, "--json", cjs)
+    cli_json = json.load(open(cjs))
+    open_page(chtml)
+    cells = driver.execute_script(
+        "return [...document.querySelectorAll('td[data-key]')].map(td => [td.dataset.key, td.dataset.value || null])")
+    bad = [(k, v) for k, v in cells if v is not None and float(v) != at(k)]
+    ckeys = {k for k, _ in cells}
+    check(not bad and {"corsini_distance.distance.2", "original.corsini.roughness.0", "processed.corsini.multiscale",
+                       "corsini_distance.multiscale.distance", "corsini_distance.global.distance"} <= ckeys,
+          f"corsini: the Corsini table's {len(cells)} cells equal the JSON ({bad[:3]}; {sorted(ckeys)[:5]})")
     logs = driver.get_log("browser")
     errors = [e for e in logs if e["level"] == "SEVERE"]
     check(not errors, f"no console error ({errors[:3]})")

@@ -115,12 +115,26 @@
   if (rd && sigmaOf('original')) {
     section('Roughness profile');
     app.appendChild(el('p', { text: rd.formula + ', k = ' + rd.k }));
+    // The local roughness difference (each original vertex's D_L against the processed mesh's at the
+    // closest point), when computed: its column is the one that ranks decimations (reference/README.md).
+    const local = rd.local;
+    const localCell = (L) => {
+      const j = local ? local.levels.indexOf(L) : -1;
+      return j < 0 ? el('td', { text: fmt(null) }) : cell('roughness_distance.local.rms.' + j);
+    };
     const rows = rd.levels.map((L, i) => [el('td', { cls: 'l', text: String(L) }),
       cell('original.sigma.' + i), cell('processed.sigma.' + i),
-      cell('roughness_distance.relative_change.' + i), cell('roughness_distance.distance.' + i)]);
+      cell('roughness_distance.relative_change.' + i), cell('roughness_distance.distance.' + i)]
+      .concat(local ? [localCell(L)] : []));
     if (rd.global) rows.push([el('td', { cls: 'l', text: 'global' }), cell('original.sigma_global'), cell('processed.sigma_global'),
-      cell('roughness_distance.global.relative_change'), cell('roughness_distance.global.distance')]);
-    app.appendChild(table(['level', 'sigma original', 'sigma processed', 'relative change', 'd_L'], rows));
+      cell('roughness_distance.global.relative_change'), cell('roughness_distance.global.distance')]
+      .concat(local ? [local.global === undefined ? el('td', { text: fmt(null) }) : cell('roughness_distance.local.global')] : []));
+    app.appendChild(table(['level', 'sigma original', 'sigma processed', 'relative change', 'd_L']
+      .concat(local ? ['local RMS'] : []), rows));
+    if (local) {
+      app.appendChild(el('p', { id: 'local-definition', text: 'local RMS: ' + local.definition +
+        (local.trim > 0 ? '; without the ' + fmt(100 * local.trim) + '% largest differences' : '') + '.' }));
+    }
   } else if (isProfile && get('sigma')) {
     section('Roughness profile');
     app.appendChild(el('p', { text: String(get('neighborhood') || '') }));
@@ -128,6 +142,22 @@
       cell('level_details.' + i + '.vertices_used'), cell('level_details.' + i + '.top_share')]);
     if (get('global')) rows.push([el('td', { cls: 'l', text: 'global' }), cell('sigma_global'), cell('global.vertices_used'), cell('global.top_share')]);
     app.appendChild(table(['level', 'sigma', 'vertices used', 'share of the worst 0.1%'], rows));
+  } else if (report.corsini_distance && get('original.corsini')) {
+    // --measure corsini: Corsini et al.'s dihedral-angle roughness per level, globally and multi-scale.
+    const cd = report.corsini_distance;
+    section('Corsini roughness');
+    app.appendChild(el('p', { text: cd.formula + ', k = ' + cd.k }));
+    app.appendChild(el('p', { text: get('original.corsini.definition') }));
+    const rows = cd.levels.map((L, i) => [el('td', { cls: 'l', text: String(L) }),
+      cell('original.corsini.roughness.' + i), cell('processed.corsini.roughness.' + i),
+      cell('corsini_distance.relative_change.' + i), cell('corsini_distance.distance.' + i)]);
+    if (cd.global) rows.push([el('td', { cls: 'l', text: 'global' }), cell('original.corsini.global.roughness'),
+      cell('processed.corsini.global.roughness'), cell('corsini_distance.global.relative_change'),
+      cell('corsini_distance.global.distance')]);
+    if (cd.multiscale) rows.push([el('td', { cls: 'l', text: 'multi-scale' }), cell('original.corsini.multiscale'),
+      cell('processed.corsini.multiscale'), cell('corsini_distance.multiscale.relative_change'),
+      cell('corsini_distance.multiscale.distance')]);
+    app.appendChild(table(['level', 'R original', 'R processed', 'relative change', 'R(M, M\')'], rows));
   } else if (report.roughness_unavailable) {
     section('Roughness profile');
     app.appendChild(el('p', { text: 'unavailable: ' + report.roughness_unavailable }));
