@@ -126,6 +126,43 @@ TEST(DistanceMap, OriginalSideIsTheBruteForceDistanceOfEveryOriginalVertex)
     EXPECT_EQ(distance_map(c, MapSide::Processed).comments, distance_map(c).comments);
 }
 
+TEST(DistanceMap, TheOriginalsMapCarriesTheLocalRoughnessDifferencePerLevel)
+{
+    // issue 29: the local roughness difference as a per-vertex map on the
+    // original (PREFIX_original.ply of --distance-maps): local_L = D_L(i) -
+    // D'_L(cp(i)), whose RMS (untrimmed here) is roughness_distance.local.
+    CompareOptions o;
+    o.profile.levels = {1, 3};
+    o.sampling.samples = 5000;
+    o.vertex_distances = true;
+    o.local_trim = 0.0;
+    const Comparison c = compare_meshes(sphere(), ellipsoid(), o);
+    ASSERT_TRUE(c.local_roughness);
+    const VertexMap m = distance_map(c, MapSide::Original);
+    ASSERT_EQ(m.scalars.size(), 5u);
+    for (std::size_t k = 0; k < 2; ++k) {
+        const VertexScalar& s = m.scalars[3 + k];
+        EXPECT_EQ(s.name, k == 0 ? "local_1" : "local_3");
+        ASSERT_EQ(s.values.size(), sphere().mesh.n_vertices());
+        double sum = 0.0;
+        std::size_t n = 0;
+        for (double x : s.values)
+            if (!std::isnan(x)) {
+                sum += x * x;
+                ++n;
+            }
+        EXPECT_EQ(n, c.local_roughness->used[k]);
+        EXPECT_NEAR(std::sqrt(sum / double(n)), c.local_roughness->rms[k], 1e-12 * c.local_roughness->rms[k]);
+    }
+    EXPECT_NE(m.comments.back().find("local_L (L = 1, 3)"), std::string::npos) << m.comments.back();
+    // The processed mesh's map has no such property (the measure is over the original's vertices).
+    EXPECT_EQ(distance_map(c, MapSide::Processed).scalars.size(), 3u);
+    // Without vertex data kept, none either.
+    o.vertex_distances = false;
+    o.local = true;
+    EXPECT_TRUE(compare_meshes(sphere(), ellipsoid(), o).local_roughness->vertex.empty());
+}
+
 TEST(DistanceMap, BothSidesShareOneRangeWhenAsked)
 {
     const Comparison& c = distance_comparison();

@@ -3,6 +3,7 @@
 #include "meshdiff/error.h"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -62,6 +63,16 @@ VertexMap distance_map(const Comparison& c, MapSide side, std::optional<std::pai
     if (sd.size() == d.size()) m.scalars.push_back({"signed_distance", sd});
     // The distance again as "quality", the property MeshLab reads (its colourize, histogram and clamp filters).
     m.scalars.push_back({"quality", d});
+    // On the original: the local roughness difference per level (local_roughness.h), where it was kept.
+    std::vector<int> local_levels;
+    if (!processed && c.local_roughness) {
+        const LocalRoughnessDistance& l = *c.local_roughness;
+        for (std::size_t k = 0; k < l.vertex.size() && k < l.levels.size(); ++k)
+            if (l.vertex[k].size() == d.size()) {
+                m.scalars.push_back({fmt::format("local_{}", l.levels[k]), l.vertex[k]});
+                local_levels.push_back(l.levels[k]);
+            }
+    }
     m.colors = sequential_colors(d, lo, hi);
     m.comments = {fmt::format("per-vertex distance of {} to the surface of {}", self.input.path, other.input.path),
                   fmt::format("colour: blue (low) to red (high) over [{:.9g}, {:.9g}]", lo, hi)};
@@ -91,6 +102,11 @@ VertexMap distance_map(const Comparison& c, MapSide side, std::optional<std::pai
             "(angle-weighted pseudo-normals)");
     else
         m.comments.push_back("no signed_distance: the other mesh cannot be signed against (see the report)");
+    if (!local_levels.empty())
+        m.comments.push_back(fmt::format(
+            "local_L (L = {}): D_L of the vertex minus the processed mesh's D_L at its closest point (roughness "
+            "lost > 0, added < 0; NaN where either is undefined); their trimmed RMS is roughness_distance.local",
+            fmt::join(local_levels, ", ")));
     return m;
 }
 
