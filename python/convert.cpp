@@ -62,6 +62,8 @@ std::string py_spelling(const std::string& field)
         {"outputs.html", "html"},
         {"outputs.color_range", "color_range"},
         {"outputs.html_face_budget", "html_face_budget"},
+        {"profile.bootstrap", "bootstrap"},
+        {"profile.bootstrap_seed", "bootstrap_seed"},
         {"outputs.vertex_data", "vertex_data"},
         {"outputs.exact", "exact"},
         {"outputs.exact_property", "exact_property"},
@@ -426,6 +428,8 @@ CompareOptions compare_options(const CompareKeywords& a)
     c.corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", c.corsini_unbiased);
     if (auto n = choice<NormalizeMethod>(a.normalize, "profile.normalize")) c.profile.normalize = *n;
     if (auto t = number(a.trim, "profile.trim")) c.profile.trim = *t;
+    if (auto b = whole(a.bootstrap, "profile.bootstrap")) c.profile.bootstrap = std::size_t(*b);
+    if (auto b = whole(a.bootstrap_seed, "profile.bootstrap_seed")) c.profile.bootstrap_seed = *b;
     c.local = flag(a.local, "local", c.local);
     if (auto t = number(a.local_trim, "local_trim")) c.local_trim = *t;
     if (auto k = number(a.k, "k")) c.k = *k;
@@ -490,6 +494,8 @@ ProfileRequest profile_request(const ProfileKeywords& a)
     r.corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", r.corsini_unbiased);
     if (auto n = choice<NormalizeMethod>(a.normalize, "profile.normalize")) r.profile.normalize = *n;
     if (auto t = number(a.trim, "profile.trim")) r.profile.trim = *t;
+    if (auto b = whole(a.bootstrap, "profile.bootstrap")) r.profile.bootstrap = std::size_t(*b);
+    if (auto b = whole(a.bootstrap_seed, "profile.bootstrap_seed")) r.profile.bootstrap_seed = *b;
     r.json = output_path(a.json, "outputs.json");
     r.vertex_data = output_path(a.vertex_data, "outputs.vertex_data");
     r.html = output_path(a.html, "outputs.html");

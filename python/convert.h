@@ -189,9 +189,10 @@ std::optional<HausdorffOptions> surface_distance_hausdorff(Obj hausdorff, Obj to
 //! The comparison options (compare(), compare_files()).
 struct CompareKeywords
 {
-    py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize, trim, local,
-        local_trim, k, roughness, distance, samples, density, face_sampling, seed, vertex_samples, edge_samples,
-        face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore, histogram;
+    py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize, trim,
+        bootstrap, bootstrap_seed, local, local_trim, k, roughness, distance, samples, density, face_sampling, seed,
+        vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
+        hausdorff_budget, fscore, histogram;
     py::object json, distance_map, distance_map_original, distance_maps, samples_out, html, color_range,
         html_face_budget;
     py::object threads;
@@ -206,7 +207,8 @@ CompareOutputs compare_outputs(const CompareKeywords& a);
 //! The profile options (profile(), profile_file()).
 struct ProfileKeywords
 {
-    py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize, trim;
+    py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize, trim,
+        bootstrap, bootstrap_seed;
     py::object json, vertex_data, html, color_range, exact, exact_property, html_face_budget;
     py::object threads;
 };

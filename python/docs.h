@@ -72,6 +72,9 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
                         not drift under decimation), original (both in the original's frame)  [--normalize]
   trim=None             trimmed sigma: the share (0..0.25) of vertices with the largest |D|
                         left out at every level; None: 0, the paper's      [--trim]
+  bootstrap=None        resamples of the vertices for a 95% bootstrap interval of sigma
+                        at every level ("sigma_interval"; 0..10000; None: none) [--bootstrap]
+  bootstrap_seed=None   seed of the resamples (None: 1)                    [--bootstrap-seed]
   local=True            the local roughness difference: per level, the RMS over the original's
                         vertices of D_L minus the processed D_L at the closest point, in
                         ["roughness_distance"]["local"] (levels, rms, radii, rms_radii, global)  [--no-local]
@@ -144,6 +147,7 @@ constexpr const char* kProfileOptionsDoc = R"doc(
 Options (keyword-only, as `meshdiff profile`; None: the library's default):
   levels=None, radii=None, global_level=True, curvature=None, weighting=None,
   measure=None, unbiased_variance=False, normalize=None (paper or area), trim=None,
+  bootstrap=None, bootstrap_seed=None,
   threads=None   (see compare());
   with radii (or "default": 0.0125 * 2**(k/2), k = 0..8) the dict also holds
   "radii", "sigma_radii" and "radius_details" (METHOD.md 5a); with

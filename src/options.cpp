@@ -61,6 +61,8 @@ const std::vector<std::string>& option_fields()
         "profile.outlier_fraction",
         "profile.normalize",
         "profile.trim",
+        "profile.bootstrap",
+        "profile.bootstrap_seed",
         "measure",
         "local",
         "local_trim",

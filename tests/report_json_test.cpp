@@ -5,9 +5,11 @@
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io/io.h"
+#include "meshdiff/report/text.h"
 #include "meshdiff/studies/shapes.h"
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 using namespace meshdiff;
@@ -91,6 +93,37 @@ TEST(ProfileJson, HasTheSchemaKeysAndOnlyFiniteNumbers)
     EXPECT_EQ(jg["curvature"]["quadric_fallback"], g.curvature_fallback);
     EXPECT_FALSE(jg["curvature"].contains("steep_fits"));
     EXPECT_TRUE(all_finite(jg));
+}
+
+TEST(ProfileJson, BootstrapIntervalsOnlyWhenAsked)
+{
+    const LoadedMesh m = read_mesh(data("fandisk.ply"));
+    ProfileOptions o;
+    o.levels = {1, 2};
+    const auto plain = profile_json(mesh_facts(m), roughness_profile(m.mesh, o));
+    EXPECT_FALSE(plain.contains("bootstrap"));
+    EXPECT_FALSE(plain["level_details"][0].contains("sigma_interval"));
+    o.bootstrap = 100;
+    o.bootstrap_seed = 7;
+    const RoughnessProfile p = roughness_profile(m.mesh, o);
+    const auto j = profile_json(mesh_facts(m), p);
+    EXPECT_EQ(j["bootstrap"]["resamples"], 100);
+    EXPECT_EQ(j["bootstrap"]["seed"], 7);
+    EXPECT_EQ(j["bootstrap"]["confidence"], kBootstrapConfidence);
+    EXPECT_EQ(j["level_details"][1]["sigma_interval"][0].get<double>(), p.levels[1].sigma_interval->first);
+    EXPECT_EQ(j["global"]["sigma_interval"][1].get<double>(), p.global.sigma_interval->second);
+    // Every other key is the plain report's.
+    nlohmann::json stripped = j;
+    stripped.erase("bootstrap");
+    for (auto& l : stripped["level_details"]) l.erase("sigma_interval");
+    stripped["global"].erase("sigma_interval");
+    EXPECT_EQ(stripped, plain);
+    const std::string text = profile_text(mesh_facts(m), p);
+    EXPECT_NE(text.find("95% interval"), std::string::npos);
+    char row[64];
+    std::snprintf(row, sizeof row, "[%.6g, %.6g]", p.levels[0].sigma_interval->first,
+                  p.levels[0].sigma_interval->second);
+    EXPECT_NE(text.find(row), std::string::npos) << text;
 }
 
 TEST(ProfileJson, CappedNeighbourhoodsAreListedOnlyWhenThereAreSome)

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <random>
 
@@ -272,4 +273,79 @@ TEST(RoughnessProfile, FromExactCurvatureOfASphereIsZeroEverywhere)
     EXPECT_LT(q.levels[0].sigma, q.levels[9].sigma);
     EXPECT_LT(q.levels[9].sigma, q.global.sigma * 1.0001);
     EXPECT_THROW(roughness_profile_from_curvature(t.mesh, {1.0, 2.0}), InvalidArgumentError);
+}
+
+// ---- bootstrap interval of sigma (issue 29: "a seeded bootstrap interval of sigma_L over vertices")
+
+TEST(Bootstrap, IntervalOfTheRmsOfNormalNoiseHasTheWidthTheoryGives)
+{
+    // D iid normal(0, 1), n = 20,000: sigma-hat = RMS has standard error about
+    // 1 / sqrt(2 n) (Var(D^2) = 2), so the 95% interval is about 2 x 1.96 / sqrt(2 n) = 0.0196 wide around 1.
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> normal;
+    std::vector<double> D(20000);
+    for (double& d : D) d = normal(rng);
+    D[7] = std::numeric_limits<double>::quiet_NaN();  // undefined values are left out
+    const auto i = bootstrap_interval(D, 0.0, 2000, 1);
+    ASSERT_TRUE(i);
+    double sum = 0.0;
+    for (double d : D)
+        if (!std::isnan(d)) sum += d * d;
+    const double sigma = std::sqrt(sum / double(D.size() - 1));
+    EXPECT_LT(i->first, sigma);
+    EXPECT_GT(i->second, sigma);
+    const double width = i->second - i->first, theory = 2.0 * 1.96 / std::sqrt(2.0 * double(D.size() - 1));
+    EXPECT_NEAR(width, theory, 0.15 * theory);
+    // Nothing to resample: no interval.
+    EXPECT_FALSE(bootstrap_interval(D, 0.0, 0, 1));
+    EXPECT_FALSE(bootstrap_interval(std::vector<double>(5, std::nan("")), 0.0, 100, 1));
+}
+
+TEST(Bootstrap, SeededAndTheSameAtAnyThreadCount)
+{
+    std::mt19937_64 rng(3);
+    std::exponential_distribution<double> e;
+    std::vector<double> D(5000), w(5000);
+    for (double& d : D) d = e(rng);
+    for (double& x : w) x = 0.5 + e(rng);
+    for (double trim : {0.0, 0.05})
+        for (const std::vector<double>* weights :
+             {static_cast<const std::vector<double>*>(nullptr), static_cast<const std::vector<double>*>(&w)}) {
+            const int saved = omp_get_max_threads();
+            omp_set_num_threads(1);
+            const auto one = bootstrap_interval(D, trim, 300, 9, weights);
+            omp_set_num_threads(2);
+            const auto two = bootstrap_interval(D, trim, 300, 9, weights);
+            omp_set_num_threads(saved);
+            ASSERT_TRUE(one && two);
+            EXPECT_EQ(one->first, two->first);  // bitwise
+            EXPECT_EQ(one->second, two->second);
+            EXPECT_EQ(*one, *bootstrap_interval(D, trim, 300, 9, weights));
+            EXPECT_NE(*one, *bootstrap_interval(D, trim, 300, 10, weights));  // another seed, another draw
+            // The interval holds the statistic it is about.
+            std::size_t dropped = 0;
+            const double s = trimmed_rms(D, trim, weights, &dropped);
+            EXPECT_LT(one->first, s) << trim;
+            EXPECT_GT(one->second, s) << trim;
+        }
+}
+
+TEST(Bootstrap, ProfileLevelsCarryTheirIntervalAndTheOptionIsChecked)
+{
+    const Shape s = noisy_sphere(3, 0.02, 1);
+    ProfileOptions o;
+    o.levels = {1, 3};
+    o.radii = {0.3};
+    o.bootstrap = 200;
+    const RoughnessProfile p = roughness_profile(s.mesh, o);
+    EXPECT_EQ(p.bootstrap, 200u);
+    for (const LevelRoughness* l : {&p.levels[0], &p.levels[1], &p.global, &p.radii[0]}) {
+        ASSERT_TRUE(l->sigma_interval);
+        EXPECT_LT(l->sigma_interval->first, l->sigma);
+        EXPECT_GT(l->sigma_interval->second, l->sigma);
+    }
+    o.bootstrap = 0;
+    EXPECT_FALSE(roughness_profile(s.mesh, o).levels[0].sigma_interval);
+    o.bootstrap = kMaxBootstrap + 1;
+    EXPECT_THROW(roughness_profile(s.mesh, o), OptionError);
 }

@@ -56,6 +56,8 @@ std::string cli_spelling(const std::string& field)
         {"outputs.html", "--html"},
         {"outputs.color_range", "--color-range"},
         {"outputs.html_face_budget", "--html-face-budget"},
+        {"profile.bootstrap", "--bootstrap"},
+        {"profile.bootstrap_seed", "--bootstrap-seed"},
         {"outputs.vertex_data", "--vertex-data"},
         {"outputs.exact", "--exact"},
         {"outputs.exact_property", "--exact-property"},
@@ -161,6 +163,13 @@ void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii, b
     o.levels.option->type_name("LIST");
     if (with_radii) o.radii.option->type_name("LIST");
     if (!with_measure) return;
+    add(sub, "--bootstrap", o.bootstrap,
+        fmt::format("N resamples of the vertices for a {:g}% bootstrap interval of sigma at every level (0: none; at "
+                    "most {}): whether a change of sigma is beyond the vertex sampling",
+                    100.0 * kBootstrapConfidence, kMaxBootstrap),
+        std::to_string(defaults.bootstrap), "UINT");
+    add(sub, "--bootstrap-seed", o.bootstrap_seed, "seed of the bootstrap resamples",
+        std::to_string(defaults.bootstrap_seed), "UINT");
     add(sub, "--measure", o.measure,
         "sigma: the paper's curvature-deviation profile; corsini: Corsini et al.'s dihedral-angle roughness "
         "(variance of dihedral angles per ring level, METHOD.md 6a)",
@@ -176,6 +185,9 @@ ProfileOptions to_profile_options(const ProfileCliOptions& o, ProfileOptions def
     if (o.radii.given()) p.radii = parse_radii(o.radii.text);
     p.global = !o.no_global;
     if (o.trim.given()) p.trim = parse_number("profile.trim", o.trim.text);
+    if (o.bootstrap.given()) p.bootstrap = std::size_t(parse_whole_number("profile.bootstrap", o.bootstrap.text));
+    if (o.bootstrap_seed.given())
+        p.bootstrap_seed = parse_whole_number("profile.bootstrap_seed", o.bootstrap_seed.text);
     if (o.normalize.given()) p.normalize = parse_enum_option<NormalizeMethod>("profile.normalize", o.normalize.text);
     if (o.curvature.given())
         p.curvature.method = parse_enum_option<CurvatureMethod>("profile.curvature.method", o.curvature.text);

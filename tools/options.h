@@ -33,7 +33,7 @@ struct Given
 //! Options of the roughness profile shared by profile, compare and batch.
 struct ProfileCliOptions
 {
-    Given levels, radii, curvature, weighting, measure, normalize, trim;
+    Given levels, radii, curvature, weighting, measure, normalize, trim, bootstrap, bootstrap_seed;
     bool no_global = false;
     bool unbiased_variance = false;
 };

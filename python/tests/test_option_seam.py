@@ -116,6 +116,16 @@ COMPARE = [
         value(["--trim", "0.01", "--measure", "corsini"], dict(trim=0.01, measure="corsini")),
         type_(["--trim", "x"], dict(trim="x")),
     ]),
+    Option("--bootstrap", "bootstrap", [
+        ok(["--bootstrap", "50", "--levels", "1,2"], dict(bootstrap=50, levels=[1, 2])),
+        value(["--bootstrap", "10001"], dict(bootstrap=10001)),
+        type_(["--bootstrap", "x"], dict(bootstrap="x")),
+    ]),
+    Option("--bootstrap-seed", "bootstrap_seed", [
+        ok(["--bootstrap", "20", "--bootstrap-seed", "5", "--levels", "1"], dict(bootstrap=20, bootstrap_seed=5, levels=[1])),
+        value(["--bootstrap-seed", "-1"], dict(bootstrap_seed=-1)),
+        type_(["--bootstrap-seed", "1.5"], dict(bootstrap_seed=1.5)),
+    ]),
     Option("--local-trim", "local_trim", [
         ok(["--local-trim", "0"], dict(local_trim=0.0)),
         ok(["--local-trim", "0.2", "--levels", "1"], dict(local_trim=0.2, levels=[1])),
@@ -304,6 +314,16 @@ PROFILE = [
         ok(["--measure", "corsini"], dict(measure="corsini")),
         value(["--measure", "corsini", "--radii", "0.1"], dict(measure="corsini", radii=[0.1])),
     ]),
+    Option("--bootstrap", "bootstrap", [
+        ok(["--bootstrap", "50", "--levels", "1,2"], dict(bootstrap=50, levels=[1, 2])),
+        value(["--bootstrap", "10001"], dict(bootstrap=10001)),
+        type_(["--bootstrap", "x"], dict(bootstrap="x")),
+    ]),
+    Option("--bootstrap-seed", "bootstrap_seed", [
+        ok(["--bootstrap", "20", "--bootstrap-seed", "5", "--levels", "1"], dict(bootstrap=20, bootstrap_seed=5, levels=[1])),
+        value(["--bootstrap-seed", "-1"], dict(bootstrap_seed=-1)),
+        type_(["--bootstrap-seed", "1.5"], dict(bootstrap_seed=1.5)),
+    ]),
     Option("--unbiased-variance", "unbiased_variance", [
         ok(["--measure", "corsini", "--unbiased-variance"], dict(measure="corsini", unbiased_variance=True)),
         value(["--unbiased-variance"], dict(unbiased_variance=True)),
@@ -388,7 +408,7 @@ def test_every_option_is_in_the_table(cli):
     assert python_keywords(meshdiff.profile) == python_keywords(meshdiff.profile_file)
     passed = {o.flag for o in COMPARE if o.batch is True}
     assert cli_options(cli, "batch") == passed | set(BATCH_ONLY)
-    assert counts == {"compare": 38, "profile": 19}, counts  # the options covered, stated
+    assert counts == {"compare": 40, "profile": 21}, counts  # the options covered, stated
 
 
 CASES = [pytest.param("compare", o, c, id=f"compare {o.flag}: {c!r}") for o in COMPARE for c in o.cases] + [

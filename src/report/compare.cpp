@@ -202,6 +202,9 @@ struct LevelRow
     std::string name;
     const LevelDistance* d;
     double local;
+    // The two profiles' levels, for their bootstrap intervals (nullptr: none).
+    const LevelRoughness* original = nullptr;
+    const LevelRoughness* processed = nullptr;
 };
 
 struct LevelColumns
@@ -212,6 +215,7 @@ struct LevelColumns
     const char* distance;
     bool local;
     const char* note = "";
+    bool bootstrap = false;  //!< a column saying whether the two bootstrap intervals of sigma overlap
 };
 
 // The table of a per-level measure (sigma, Corsini's R): a value without data
@@ -220,7 +224,8 @@ std::string level_table(const LevelColumns& c, const std::vector<LevelRow>& rows
 {
     std::string s =
         fmt::format("  {:>7} {:>13} {:>13} {:>10} {:>9}", c.key, c.original, c.processed, "change", c.distance);
-    s += (c.local ? fmt::format(" {:>11}", "local") : std::string()) + c.note + "\n";
+    s += (c.local ? fmt::format(" {:>11}", "local") : std::string()) +
+         (c.bootstrap ? fmt::format(" {:>10}", "intervals") : std::string()) + c.note + "\n";
     auto value = [](bool has, double x) { return has ? fmt::format("{:.6g}", x) : std::string("-"); };
     for (const auto& r : rows) {
         const LevelDistance& d = *r.d;
@@ -231,6 +236,14 @@ std::string level_table(const LevelColumns& c, const std::vector<LevelRow>& rows
                          value(d.processed_data, d.processed), change,
                          d.defined ? fmt::format("{:.4f}", d.distance) : std::string("-"));
         if (c.local) s += fmt::format(" {:>11}", std::isfinite(r.local) ? fmt::format("{:.6g}", r.local) : "-");
+        if (c.bootstrap) {
+            const auto* a = r.original ? &r.original->sigma_interval : nullptr;
+            const auto* b = r.processed ? &r.processed->sigma_interval : nullptr;
+            std::string verdict = "-";
+            if (a && b && *a && *b)
+                verdict = (*a)->second < (*b)->first || (*b)->second < (*a)->first ? "apart" : "overlap";
+            s += fmt::format(" {:>10}", verdict);
+        }
         s += "\n";
     }
     return s;
@@ -287,24 +300,47 @@ std::string comparison_text(const Comparison& c)
                 if (keys[i] == key) return rms[i];
             return std::nan("");
         };
+        const bool bootstrap = pa.bootstrap > 0;
+        if (bootstrap)
+            s += fmt::format(
+                "  intervals: the {:g}% bootstrap intervals of the two sigmas ({} resamples of the vertices, seed {}) "
+                "are apart (a change beyond the vertex sampling) or overlap\n",
+                100.0 * kBootstrapConfidence, pa.bootstrap, pa.bootstrap_seed);
+        // The profiles' level with the distance's level (both profiles have the same levels, in order).
+        auto level_of = [](const RoughnessProfile& p, int level) -> const LevelRoughness* {
+            for (const auto& l : p.levels)
+                if (l.level == level) return &l;
+            return nullptr;
+        };
         std::vector<LevelRow> rows;
         for (const auto& d : c.roughness->levels)
-            rows.push_back({std::to_string(d.level), &d, local ? local_at(local->levels, local->rms, d.level) : 0.0});
+            rows.push_back({std::to_string(d.level), &d, local ? local_at(local->levels, local->rms, d.level) : 0.0,
+                            level_of(pa, d.level), level_of(pb, d.level)});
         if (c.roughness->has_global)
-            rows.push_back({"global", &c.roughness->global, local && local->has_global ? local->global : std::nan("")});
-        s += level_table({"level", "sigma orig", "sigma proc", "d_L", local != nullptr}, rows);
+            rows.push_back({"global", &c.roughness->global, local && local->has_global ? local->global : std::nan(""),
+                            pa.has_global ? &pa.global : nullptr, pb.has_global ? &pb.global : nullptr});
+        LevelColumns columns{"level", "sigma orig", "sigma proc", "d_L", local != nullptr};
+        columns.bootstrap = bootstrap;
+        s += level_table(columns, rows);
         if (!c.roughness->radii.empty()) {
             rows.clear();
+            auto radius_of = [](const RoughnessProfile& p, double r) -> const LevelRoughness* {
+                for (const auto& l : p.radii)
+                    if (l.radius == r) return &l;
+                return nullptr;
+            };
             for (const auto& d : c.roughness->radii) {
                 double l = std::nan("");
                 if (local)
                     for (std::size_t i = 0; i < local->radii.size(); ++i)
                         if (local->radii[i] == d.radius) l = local->rms_radii[i];
-                rows.push_back({fmt::format("{:g}", d.radius), &d, l});
+                rows.push_back(
+                    {fmt::format("{:g}", d.radius), &d, l, radius_of(pa, d.radius), radius_of(pb, d.radius)});
             }
-            s += level_table(
-                {"radius", "sigma orig", "sigma proc", "d_r", local != nullptr, "   (metric levels, area-weighted)"},
-                rows);
+            LevelColumns radius_columns{"radius", "sigma orig",     "sigma proc",
+                                        "d_r",    local != nullptr, "   (metric levels, area-weighted)"};
+            radius_columns.bootstrap = bootstrap;
+            s += level_table(radius_columns, rows);
         }
         if (pa.curvature_undefined || pb.curvature_undefined)
             s += fmt::format("  undefined curvature: {} and {} vertices left out\n", pa.curvature_undefined,

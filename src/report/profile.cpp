@@ -69,6 +69,8 @@ nlohmann::json level_json(const LevelRoughness& l)
                         {"top_share", number_or_null(l.top_share)},
                         {"worst_vertices", l.worst_vertices}};
     if (l.trimmed) j["trimmed"] = l.trimmed;  // only with a trim: other reports are unchanged
+    if (l.sigma_interval)                     // only with a bootstrap
+        j["sigma_interval"] = {number_or_null(l.sigma_interval->first), number_or_null(l.sigma_interval->second)};
     return j;
 }
 nlohmann::json radius_json(const LevelRoughness& l)
@@ -131,6 +133,14 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
     if (p.trim > 0.0)
         j["trim"] = {{"share", p.trim},
                      {"definition", "sigma without the ceil(share x count) vertices of largest |D| at each level"}};
+    if (p.bootstrap > 0)
+        j["bootstrap"] = {{"resamples", p.bootstrap},
+                          {"seed", p.bootstrap_seed},
+                          {"confidence", kBootstrapConfidence},
+                          {"definition",
+                           "sigma_interval of each level: the 2.5th and 97.5th percentiles of sigma over the "
+                           "resamples of the vertices used, drawn with replacement (trim and area weights applied "
+                           "to each)"}};
     if (!p.radii.empty()) {  // only then: reports without metric levels are unchanged
         nlohmann::json radii = nlohmann::json::array(), sigma_r = nlohmann::json::array(),
                        details_r = nlohmann::json::array();
@@ -306,18 +316,26 @@ std::string profile_text(const MeshFacts& f, const RoughnessProfile& p)
     if (p.trim > 0.0)
         s += fmt::format("trim       sigma without the {:g}% of vertices with the largest |D| at each level\n",
                          100.0 * p.trim);
-    s += fmt::format("\n   level        sigma     used   no-nbhd {:>9}\n",
-                     fmt::format("top{:g}%", 100.0 * p.outlier_fraction));
+    if (p.bootstrap > 0)
+        s += fmt::format("bootstrap  {:g}% interval of sigma over {} resamples of the vertices (seed {})\n",
+                         100.0 * kBootstrapConfidence, p.bootstrap, p.bootstrap_seed);
+    const std::string interval_head = p.bootstrap > 0 ? "   95% interval" : "";
+    s += fmt::format("\n   level        sigma     used   no-nbhd {:>9}{}\n",
+                     fmt::format("top{:g}%", 100.0 * p.outlier_fraction), interval_head);
     auto row = [&](const std::string& name, const LevelRoughness& l) {
-        s += fmt::format("{:>8} {:>12} {:>8} {:>9} {:>8.1f}%\n", name,
+        const std::string interval =
+            p.bootstrap == 0   ? std::string()
+            : l.sigma_interval ? fmt::format("   [{:.6g}, {:.6g}]", l.sigma_interval->first, l.sigma_interval->second)
+                               : std::string("   -");
+        s += fmt::format("{:>8} {:>12} {:>8} {:>9} {:>8.1f}%{}\n", name,
                          l.vertices_used ? fmt::format("{:.6g}", l.sigma) : std::string("-"), l.vertices_used,
-                         l.no_neighborhood, 100.0 * l.top_share);
+                         l.no_neighborhood, 100.0 * l.top_share, interval);
     };
     for (const auto& l : p.levels) row(std::to_string(l.level), l);
     if (p.has_global) row("global", p.global);
     if (!p.radii.empty()) {
-        s += fmt::format("\n  radius        sigma     used   no-nbhd {:>9}   (metric levels, area-weighted)\n",
-                         fmt::format("top{:g}%", 100.0 * p.outlier_fraction));
+        s += fmt::format("\n  radius        sigma     used   no-nbhd {:>9}{}   (metric levels, area-weighted)\n",
+                         fmt::format("top{:g}%", 100.0 * p.outlier_fraction), interval_head);
         for (const auto& l : p.radii) row(fmt::format("{:g}", l.radius), l);
     }
     const auto w = warnings(f, &p);

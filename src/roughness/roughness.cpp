@@ -45,6 +45,9 @@ void validate(const ProfileOptions& options)
         throw OptionError("profile.outlier_fraction", "must be in (0, 1]");
     if (!(options.trim >= 0.0 && options.trim <= kMaxTrim))
         throw OptionError("profile.trim", fmt::format("{} is not a share in [0, {}]", options.trim, kMaxTrim));
+    if (options.bootstrap > kMaxBootstrap)
+        throw OptionError("profile.bootstrap",
+                          fmt::format("{} resamples is above the limit of {}", options.bootstrap, kMaxBootstrap));
 }
 
 LevelRoughness level_roughness(int level, const std::vector<double>& D, double outlier_fraction)
@@ -117,6 +120,83 @@ double trimmed_rms(const std::vector<double>& D, double trim, const std::vector<
 
 namespace {
 
+// splitmix64: the resamples' random numbers (fast, and the same on every platform).
+std::uint64_t splitmix64(std::uint64_t& state)
+{
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+// A uniform index in [0, m) from 64 random bits (Lemire's multiply-shift; the
+// bias, below m / 2^64, is far below anything a resample could show).
+std::size_t uniform_index(std::uint64_t bits, std::size_t m)
+{
+    // The high 64 bits of bits x m, in 32-bit halves (portable C++).
+    const std::uint64_t a_hi = bits >> 32, a_lo = bits & 0xFFFFFFFFull;
+    const std::uint64_t b_hi = std::uint64_t(m) >> 32, b_lo = std::uint64_t(m) & 0xFFFFFFFFull;
+    const std::uint64_t lo_lo = a_lo * b_lo, hi_lo = a_hi * b_lo, lo_hi = a_lo * b_hi, hi_hi = a_hi * b_hi;
+    const std::uint64_t cross = (lo_lo >> 32) + (hi_lo & 0xFFFFFFFFull) + lo_hi;
+    return std::size_t(hi_hi + (hi_lo >> 32) + (cross >> 32));
+}
+
+}  // namespace
+
+std::optional<std::pair<double, double>> bootstrap_interval(const std::vector<double>& D, double trim,
+                                                            std::size_t resamples, std::uint64_t seed,
+                                                            const std::vector<double>* weights)
+{
+    std::vector<std::uint32_t> used;
+    used.reserve(D.size());
+    for (std::size_t i = 0; i < D.size(); ++i)
+        if (!std::isnan(D[i])) used.push_back(std::uint32_t(i));
+    const std::size_t m = used.size();
+    if (resamples == 0 || m == 0) return std::nullopt;
+    const std::size_t drop = std::min(m, std::size_t(std::ceil(trim * double(m))));
+    std::vector<double> sigma(resamples);
+    // Resample b draws its m vertices from its own stream (seed, b): the same
+    // sigmas at any thread count. Summed in draw order.
+#pragma omp parallel
+    {
+        std::vector<std::uint32_t> pick(drop > 0 ? m : 0);
+#pragma omp for schedule(static)
+        for (std::ptrdiff_t ib = 0; ib < std::ptrdiff_t(resamples); ++ib) {
+            std::uint64_t state = seed ^ (0xD1B54A32D192ED03ull * (std::uint64_t(ib) + 1));
+            double total = 0.0, wtotal = 0.0;
+            if (drop == 0) {
+                for (std::size_t j = 0; j < m; ++j) {
+                    const std::uint32_t i = used[uniform_index(splitmix64(state), m)];
+                    const double w = weights ? (*weights)[i] : 1.0;
+                    total += w * D[i] * D[i];
+                    wtotal += w;
+                }
+            } else {
+                for (std::size_t j = 0; j < m; ++j) pick[j] = used[uniform_index(splitmix64(state), m)];
+                // Leave out the drop largest |D| of the resample (ties by id), as trimmed_rms().
+                auto worse = [&](std::uint32_t a, std::uint32_t b) {
+                    const double da = std::abs(D[a]), db = std::abs(D[b]);
+                    return da != db ? da > db : a < b;
+                };
+                std::nth_element(pick.begin(), pick.begin() + std::ptrdiff_t(drop - 1), pick.end(), worse);
+                std::sort(pick.begin() + std::ptrdiff_t(drop), pick.end());
+                for (std::size_t j = drop; j < m; ++j) {
+                    const double w = weights ? (*weights)[pick[j]] : 1.0;
+                    total += w * D[pick[j]] * D[pick[j]];
+                    wtotal += w;
+                }
+            }
+            sigma[std::size_t(ib)] = wtotal > 0.0 ? std::sqrt(total / wtotal) : 0.0;
+        }
+    }
+    std::sort(sigma.begin(), sigma.end());
+    const double tail = (1.0 - kBootstrapConfidence) / 2.0;
+    const auto at = [&](double q) { return sigma[std::size_t(std::llround(q * double(resamples - 1)))]; };
+    return std::pair{at(tail), at(1.0 - tail)};
+}
+
+namespace {
+
 // sigma of \p l trimmed as \p options ask (nothing changes without a trim).
 void apply_trim(LevelRoughness& l, const std::vector<double>& D, const ProfileOptions& options,
                 const std::vector<double>* weights = nullptr)
@@ -133,6 +213,8 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
     const std::size_t n = H.size();
     p.outlier_fraction = options.outlier_fraction;
     p.trim = options.trim;
+    p.bootstrap = options.bootstrap;
+    p.bootstrap_seed = options.bootstrap_seed;
     const DiskMeans means = disk_means(unit, adj, H, options.levels);
     // Levels are independent: one per thread, each result in its own slot.
     const std::size_t n_levels = options.levels.size();
@@ -147,6 +229,7 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
             for (std::size_t i = 0; i < n; ++i) Dl[i] = H[i] - means.mean[li][i];  // NaN propagates
             LevelRoughness lr = level_roughness(options.levels[li], Dl, options.outlier_fraction);
             apply_trim(lr, Dl, options);
+            lr.sigma_interval = bootstrap_interval(Dl, options.trim, options.bootstrap, options.bootstrap_seed);
             lr.no_neighborhood = (n - undefined) - lr.vertices_used;
             p.levels[li] = std::move(lr);
             if (options.keep_vertex_data) p.D[li] = Dl;
@@ -168,6 +251,7 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
                                                : H[i] - double((sum - H[i]) / (long double)(m - 1));
         p.global = level_roughness(0, D, options.outlier_fraction);
         apply_trim(p.global, D, options);
+        p.global.sigma_interval = bootstrap_interval(D, options.trim, options.bootstrap, options.bootstrap_seed);
         p.global.no_neighborhood = (n - undefined) - p.global.vertices_used;
         if (options.keep_vertex_data) p.D_global = D;
     }
@@ -181,6 +265,7 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
             for (std::size_t i = 0; i < n; ++i) D[i] = H[i] - balls.mean[k][i];  // NaN propagates
             LevelRoughness lr = weighted_level_roughness(options.radii[k], D, area, options.outlier_fraction);
             apply_trim(lr, D, options, &area);
+            lr.sigma_interval = bootstrap_interval(D, options.trim, options.bootstrap, options.bootstrap_seed, &area);
             lr.no_neighborhood = (n - undefined) - lr.vertices_used;
             p.radii[k] = std::move(lr);
             if (options.keep_vertex_data) p.D_radii[k] = D;

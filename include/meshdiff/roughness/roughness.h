@@ -18,6 +18,8 @@
 #include "meshdiff/roughness/curvature.h"
 
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace meshdiff {
@@ -36,6 +38,14 @@ constexpr double kSparseNeighbourhoodShare = 0.1;
 
 //! The largest share ProfileOptions::trim may leave out.
 constexpr double kMaxTrim = 0.25;
+
+//! Most bootstrap resamples ProfileOptions::bootstrap takes (the work is
+//! resamples x vertices per level).
+constexpr std::size_t kMaxBootstrap = 10'000;
+
+//! Coverage of the bootstrap interval of sigma: the 2.5th and 97.5th
+//! percentiles of the resampled sigmas.
+constexpr double kBootstrapConfidence = 0.95;
 
 struct ProfileOptions
 {
@@ -58,6 +68,16 @@ struct ProfileOptions
     //! normalised mesh, each finite and > 0, in the order reported. Empty by
     //! default (default_radii() is what `--radii default` asks for).
     std::vector<double> radii{};
+    //! Bootstrap interval of sigma at every level: this many resamples of the
+    //! vertices used (with replacement; the trim and the area weights of
+    //! metric levels applied to each), the interval between the 2.5th and
+    //! 97.5th percentiles of their sigmas (LevelRoughness::sigma_interval).
+    //! It shows how much of a difference between two sigmas the sampling of
+    //! the surface by its vertices alone could make. 0 (the default): none;
+    //! at most kMaxBootstrap.
+    std::size_t bootstrap = 0;
+    //! Seed of the resamples: the same seed, the same interval, at any thread count.
+    std::uint64_t bootstrap_seed = 1;
     //! Reports the stages (curvature, rings, metric levels) and stops the
     //! computation with Cancelled when it says so (progress.h); not owned.
     //! nullptr: the Progress of the calling thread's ProgressScope, if any.
@@ -78,6 +98,9 @@ struct LevelRoughness
     double top_share = 0.0;
     std::vector<std::uint32_t> worst_vertices;  //!< the ids of those vertices, largest |D| first (at most 10)
     std::size_t trimmed = 0;                    //!< vertices left out of sigma by ProfileOptions::trim
+    //! With ProfileOptions::bootstrap: the kBootstrapConfidence interval of
+    //! sigma over the resamples (lo, hi); unset without it or without data.
+    std::optional<std::pair<double, double>> sigma_interval;
 };
 
 struct RoughnessProfile
@@ -94,6 +117,8 @@ struct RoughnessProfile
     std::vector<std::uint32_t> curvature_capped_vertices;  //!< the lowest ids of those (at most 10)
     double outlier_fraction = 0.001;                       //!< ProfileOptions::outlier_fraction as used (top_share)
     double trim = 0.0;                                     //!< ProfileOptions::trim as used
+    std::size_t bootstrap = 0;                             //!< ProfileOptions::bootstrap as used
+    std::uint64_t bootstrap_seed = 1;                      //!< ProfileOptions::bootstrap_seed as used
     std::vector<LevelRoughness> levels;                    //!< in the order of ProfileOptions::levels
     bool has_global = false;
     LevelRoughness global;  //!< level 0
@@ -159,6 +184,16 @@ struct ExactProfile
 //!        keep_vertex_data or \p exact_H has the wrong size.
 ExactProfile exact_profile(const Mesh& mesh, const std::vector<double>& exact_H, const ProfileOptions& options,
                            const RoughnessProfile& estimated);
+
+//! The bootstrap interval of the (trimmed, weighted) RMS of \p D over its
+//! defined values: \p resamples resamples with replacement, each drawn from
+//! its own splitmix64 stream of \p seed (so the result is the same at any
+//! thread count), the trim and \p weights applied to each; the 2.5th and
+//! 97.5th percentiles of their RMS (nearest rank). Unset without resamples or
+//! without a defined value. Exposed for tests.
+std::optional<std::pair<double, double>> bootstrap_interval(const std::vector<double>& D, double trim,
+                                                            std::size_t resamples, std::uint64_t seed,
+                                                            const std::vector<double>* weights = nullptr);
 
 //! sigma of one level computed from D values (NaN skipped), with the counts
 //! and the outlier diagnostic. Exposed for tests and for other D sources.
