@@ -459,12 +459,6 @@ std::optional<HausdorffOptions> surface_distance_hausdorff(Obj hausdorff, Obj to
     return hausdorff_options(h);
 }
 
-// A face budget as the library takes it (a count beyond size_t is its largest).
-std::size_t face_budget(std::uint64_t b)
-{
-    return std::size_t(std::min<std::uint64_t>(b, std::uint64_t(std::numeric_limits<std::size_t>::max())));
-}
-
 CompareOutputs compare_outputs(const CompareKeywords& a)
 {
     CompareOutputs o;
@@ -474,7 +468,7 @@ CompareOutputs compare_outputs(const CompareKeywords& a)
     o.distance_maps = output_path(a.distance_maps, "outputs.distance_maps");
     o.samples_out = output_path(a.samples_out, "outputs.samples_out");
     o.html = output_path(a.html, "outputs.html");
-    if (auto b = whole(a.html_face_budget, "outputs.html_face_budget")) o.html_face_budget = face_budget(*b);
+    if (auto b = whole(a.html_face_budget, "outputs.html_face_budget")) o.html_face_budget = std::size_t(*b);
     if (py::isinstance<py::str>(a.color_range)) {
         parse_color_range(a.color_range.cast<std::string>(), o);
     } else if (!a.color_range.is_none()) {
@@ -499,7 +493,7 @@ ProfileRequest profile_request(const ProfileKeywords& a)
     r.json = output_path(a.json, "outputs.json");
     r.vertex_data = output_path(a.vertex_data, "outputs.vertex_data");
     r.html = output_path(a.html, "outputs.html");
-    if (auto b = whole(a.html_face_budget, "outputs.html_face_budget")) r.html_face_budget = face_budget(*b);
+    if (auto b = whole(a.html_face_budget, "outputs.html_face_budget")) r.html_face_budget = std::size_t(*b);
     if (auto c = number(a.color_range, "outputs.color_range")) r.color_range = *c;
     r.exact = flag(a.exact, "outputs.exact", r.exact);
     if (auto p = text(a.exact_property, "outputs.exact_property")) r.exact_property = *p;

@@ -323,8 +323,7 @@ void add_html_face_budget_option(CLI::App* sub, Given& budget)
 std::size_t html_face_budget(const Given& budget)
 {
     if (!budget.given()) return kDefaultHtmlFaceBudget;
-    const std::uint64_t b = parse_whole_number("outputs.html_face_budget", budget.text);
-    return std::size_t(std::min<std::uint64_t>(b, std::uint64_t(std::numeric_limits<std::size_t>::max())));
+    return std::size_t(parse_whole_number("outputs.html_face_budget", budget.text));
 }
 
 CompareOutputs to_compare_outputs(const CompareOutputCliOptions& o)

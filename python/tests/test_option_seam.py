@@ -64,6 +64,23 @@ class Option:
 
 
 NO_PYTHON_DISPLAY = "a progress display on stderr for a person at a terminal; Python has no display"
+# --bootstrap and --bootstrap-seed: the same cases for compare and profile (fresh Option objects for each table).
+def bootstrap_options():
+    return [
+        Option("--bootstrap", "bootstrap", [
+            ok(["--bootstrap", "50", "--levels", "1,2"], dict(bootstrap=50, levels=[1, 2])),
+            value(["--bootstrap", "10001"], dict(bootstrap=10001)),
+            type_(["--bootstrap", "x"], dict(bootstrap="x")),
+        ]),
+        Option("--bootstrap-seed", "bootstrap_seed", [
+            ok(["--bootstrap", "20", "--bootstrap-seed", "5", "--levels", "1"],
+               dict(bootstrap=20, bootstrap_seed=5, levels=[1])),
+            value(["--bootstrap-seed", "-1"], dict(bootstrap_seed=-1)),
+            type_(["--bootstrap-seed", "1.5"], dict(bootstrap_seed=1.5)),
+        ]),
+    ]
+
+
 NOT_IN_BATCH_FILE = "a file per comparison: batch writes one JSON line per pair (--out) and maps with --maps-dir"
 
 # Options of `meshdiff compare` (and of `meshdiff batch`, which passes them to each pair).
@@ -116,16 +133,7 @@ COMPARE = [
         value(["--trim", "0.01", "--measure", "corsini"], dict(trim=0.01, measure="corsini")),
         type_(["--trim", "x"], dict(trim="x")),
     ]),
-    Option("--bootstrap", "bootstrap", [
-        ok(["--bootstrap", "50", "--levels", "1,2"], dict(bootstrap=50, levels=[1, 2])),
-        value(["--bootstrap", "10001"], dict(bootstrap=10001)),
-        type_(["--bootstrap", "x"], dict(bootstrap="x")),
-    ]),
-    Option("--bootstrap-seed", "bootstrap_seed", [
-        ok(["--bootstrap", "20", "--bootstrap-seed", "5", "--levels", "1"], dict(bootstrap=20, bootstrap_seed=5, levels=[1])),
-        value(["--bootstrap-seed", "-1"], dict(bootstrap_seed=-1)),
-        type_(["--bootstrap-seed", "1.5"], dict(bootstrap_seed=1.5)),
-    ]),
+    *bootstrap_options(),
     Option("--local-trim", "local_trim", [
         ok(["--local-trim", "0"], dict(local_trim=0.0)),
         ok(["--local-trim", "0.2", "--levels", "1"], dict(local_trim=0.2, levels=[1])),
@@ -314,16 +322,7 @@ PROFILE = [
         ok(["--measure", "corsini"], dict(measure="corsini")),
         value(["--measure", "corsini", "--radii", "0.1"], dict(measure="corsini", radii=[0.1])),
     ]),
-    Option("--bootstrap", "bootstrap", [
-        ok(["--bootstrap", "50", "--levels", "1,2"], dict(bootstrap=50, levels=[1, 2])),
-        value(["--bootstrap", "10001"], dict(bootstrap=10001)),
-        type_(["--bootstrap", "x"], dict(bootstrap="x")),
-    ]),
-    Option("--bootstrap-seed", "bootstrap_seed", [
-        ok(["--bootstrap", "20", "--bootstrap-seed", "5", "--levels", "1"], dict(bootstrap=20, bootstrap_seed=5, levels=[1])),
-        value(["--bootstrap-seed", "-1"], dict(bootstrap_seed=-1)),
-        type_(["--bootstrap-seed", "1.5"], dict(bootstrap_seed=1.5)),
-    ]),
+    *bootstrap_options(),
     Option("--unbiased-variance", "unbiased_variance", [
         ok(["--measure", "corsini", "--unbiased-variance"], dict(measure="corsini", unbiased_variance=True)),
         value(["--unbiased-variance"], dict(unbiased_variance=True)),

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <utility>
 
 namespace meshdiff {
 
@@ -263,6 +264,22 @@ void gather_neighbourhood(std::size_t v, const Mesh& mesh, const Adjacency& adj,
 // The fitting estimators (cubic with quadric fallback, or quadric only).
 // `dropped`: set when the cubic system left out a neighbour's normal rows (the
 // max_normal_angle_deg rule).
+// Any tangent frame (u, w) with u x w = N: the frame of both fits.
+std::pair<Vec3, Vec3> tangent_frame(const Vec3& N)
+{
+    const Vec3 helper = std::abs(N.x()) < 0.6 ? Vec3::UnitX() : (std::abs(N.y()) < 0.6 ? Vec3::UnitY() : Vec3::UnitZ());
+    const Vec3 u = N.cross(helper).normalized();
+    return {u, N.cross(u)};
+}
+
+// h of both fits: the mean distance from p to its fitting neighbours.
+double mean_distance(const Mesh& mesh, const Vec3& p, const std::vector<std::uint32_t>& nbrs)
+{
+    double h = 0.0;
+    for (auto q : nbrs) h += (mesh.points[q] - p).norm();
+    return h / double(nbrs.size());
+}
+
 template <class Buffers>
 FitResult fit_with(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
                    bool cubic, const std::vector<std::uint32_t>& nbrs, Buffers& s, double& H, bool& dropped)
@@ -270,15 +287,10 @@ FitResult fit_with(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& nor
     dropped = false;
     const Vec3& N = normals[v];
     const Vec3& p = mesh.points[v];
-    // Any tangent frame with u x v = N.
-    const Vec3 helper = std::abs(N.x()) < 0.6 ? Vec3::UnitX() : (std::abs(N.y()) < 0.6 ? Vec3::UnitY() : Vec3::UnitZ());
-    const Vec3 u = N.cross(helper).normalized();
-    const Vec3 w = N.cross(u);
+    const auto [u, w] = tangent_frame(N);
 
     const std::size_t m = nbrs.size();
-    double h = 0.0;
-    for (auto q : nbrs) h += (mesh.points[q] - p).norm();
-    h /= double(m);
+    const double h = mean_distance(mesh, p, nbrs);
     if (!(h > 0.0)) return FitResult::Failed;
     const double inv_h = 1.0 / h;
     const double cos_max = std::cos(opt.max_normal_angle_deg * M_PI / 180.0);
@@ -385,12 +397,8 @@ FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::ve
                    double& H, bool& steep)
 {
     const Vec3& p = mesh.points[v];
-    const Vec3 helper = std::abs(N.x()) < 0.6 ? Vec3::UnitX() : (std::abs(N.y()) < 0.6 ? Vec3::UnitY() : Vec3::UnitZ());
-    const Vec3 u = N.cross(helper).normalized();
-    const Vec3 w = N.cross(u);
-    double h = 0.0;
-    for (auto q : nbrs) h += (mesh.points[q] - p).norm();
-    h /= double(nbrs.size());
+    const auto [u, w] = tangent_frame(N);
+    const double h = mean_distance(mesh, p, nbrs);
     if (!(h > 0.0)) return FitResult::Failed;
     const double inv_h = 1.0 / h;
     s.M.resize(Eigen::Index(nbrs.size()), kJetColumns);
@@ -431,7 +439,6 @@ FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::ve
 FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
                      bool cubic, FitScratch& s, double& H, bool& dropped, bool& steep)
 {
-    dropped = false;
     steep = false;
     if (opt.method == CurvatureMethod::Jet) {
         if (s.nbrs.size() <= kMaxFitNeighbors) return jet_with(v, mesh, normals[v], s.nbrs, *s.jet_fixed, H, steep);

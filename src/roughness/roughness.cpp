@@ -156,7 +156,8 @@ std::optional<std::pair<double, double>> bootstrap_interval(const std::vector<do
     const std::size_t drop = std::min(m, std::size_t(std::ceil(trim * double(m))));
     std::vector<double> sigma(resamples);
     // Resample b draws its m vertices from its own stream (seed, b): the same
-    // sigmas at any thread count. Summed in draw order.
+    // sigmas at any thread count. Summed in draw order (with a trim: in the
+    // order nth_element leaves the kept ones, deterministic too).
 #pragma omp parallel
     {
         std::vector<std::uint32_t> pick(drop > 0 ? m : 0);
@@ -179,7 +180,6 @@ std::optional<std::pair<double, double>> bootstrap_interval(const std::vector<do
                     return da != db ? da > db : a < b;
                 };
                 std::nth_element(pick.begin(), pick.begin() + std::ptrdiff_t(drop - 1), pick.end(), worse);
-                std::sort(pick.begin() + std::ptrdiff_t(drop), pick.end());
                 for (std::size_t j = drop; j < m; ++j) {
                     const double w = weights ? (*weights)[pick[j]] : 1.0;
                     total += w * D[pick[j]] * D[pick[j]];
