@@ -287,7 +287,8 @@ FitResult fit_with(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& nor
     dropped = false;
     const Vec3& N = normals[v];
     const Vec3& p = mesh.points[v];
-    const auto [u, w] = tangent_frame(N);
+    const std::pair<Vec3, Vec3> frame = tangent_frame(N);
+    const Vec3 &u = frame.first, &w = frame.second;  // named: lambdas capture them (C++17)
 
     const std::size_t m = nbrs.size();
     const double h = mean_distance(mesh, p, nbrs);
@@ -397,7 +398,8 @@ FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::ve
                    double& H, bool& steep)
 {
     const Vec3& p = mesh.points[v];
-    const auto [u, w] = tangent_frame(N);
+    const std::pair<Vec3, Vec3> frame = tangent_frame(N);
+    const Vec3 &u = frame.first, &w = frame.second;  // named: lambdas capture them (C++17)
     const double h = mean_distance(mesh, p, nbrs);
     if (!(h > 0.0)) return FitResult::Failed;
     const double inv_h = 1.0 / h;
