@@ -1,4 +1,5 @@
 #include "batch_list.h"
+#include "batch_records.h"
 #include "cli.h"
 #include "commands.h"
 #include "interrupt.h"
@@ -136,6 +137,8 @@ nlohmann::json compare_pair(const BatchArgs& a, const std::string& self, const P
     return batch_error_json(p.id, p.original, p.processed, error, code);
 }
 
+constexpr const char* kNotBatchOutput = "; --out must be a file that only batch writes (left as it was)";
+
 // The ids recorded as ok in an existing output. Every whole line must be a
 // batch record, else the file is not one batch writes and it is refused
 // (exit 3) untouched. A last line without its newline that starts as a record
@@ -154,28 +157,17 @@ std::set<std::string> finished_ids(int fd, const std::string& path)
     ssize_t got = 0;
     while ((got = pread(fd, buf, sizeof buf, off_t(text.size()))) > 0) text.append(buf, std::size_t(got));
     if (got < 0) throw IoError(fmt::format("{}: read failed: {}", path, std::strerror(errno)));
-    const auto last_newline = text.rfind('\n');
-    const std::size_t whole = last_newline == std::string::npos ? 0 : last_newline + 1;
+    const std::size_t whole = whole_lines_end(text);
     std::set<std::string> done;
-    std::size_t lineno = 0, start = 0;
-    while (start < whole) {
-        const auto end = text.find('\n', start);
-        const std::string line = text.substr(start, end - start);
-        start = end + 1;
-        ++lineno;
-        const auto j = nlohmann::json::parse(line, nullptr, false);
-        if (j.is_discarded() || !j.is_object() || !j.contains("id") || !j["id"].is_string() || !j.contains("status"))
-            throw IoError(fmt::format(
-                "{}:{}: not a meshdiff batch record; --out must be a file that only batch writes (left as it was)",
-                path, lineno));
-        if (j["status"] == "ok") done.insert(j["id"].get<std::string>());
-    }
+    for_each_record(text, whole, path, kNotBatchOutput, [&](BatchRecord&& r) {
+        if (r.ok) done.insert(r.id);
+    });
     if (whole < text.size()) {
         // Every record batch writes starts with {" (an object with its keys in order).
         if (text.compare(whole, 2, "{\"") != 0)
-            throw IoError(fmt::format(
-                "{}:{}: not a meshdiff batch record; --out must be a file that only batch writes (left as it was)",
-                path, lineno + 1));
+            throw IoError(fmt::format("{}:{}: not a meshdiff batch record{}", path,
+                                      std::count(text.begin(), text.begin() + std::ptrdiff_t(whole), '\n') + 1,
+                                      kNotBatchOutput));
         if (ftruncate(fd, off_t(whole)) != 0) throw IoError(fmt::format("{}: cannot cut a torn last line", path));
         std::cerr << fmt::format("batch: {}: dropped a torn last line (a killed run's record)\n", path);
     }

@@ -2,10 +2,12 @@
 // resumed runs) into one flat CSV, one row per pair, and lists the pairs that
 // failed or are missing.
 #include "batch_list.h"
+#include "batch_records.h"
 #include "cli.h"
 #include "commands.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io/output_file.h"
+#include "meshdiff/report/csv.h"
 #include "meshdiff/report/html.h"
 #include "options.h"
 
@@ -53,139 +55,17 @@ void read_records(const std::string& path, std::map<std::string, Record>& record
     buf << in.rdbuf();
     std::string text = buf.str();
     if (!text.empty() && text.back() != '\n') {
-        const auto keep = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+        const std::size_t keep = whole_lines_end(text);
         std::cerr << fmt::format("batch-summary: {}: skipped a torn last line (a killed run's record)\n", path);
         text.resize(keep);
     }
-    std::size_t lineno = 0, start = 0;
-    while (start < text.size()) {
-        const auto end = text.find('\n', start);
-        const std::string line = text.substr(start, end - start);
-        start = end + 1;
-        ++lineno;
-        if (line.empty() || line == "\r") continue;
-        auto j = nlohmann::json::parse(line, nullptr, false);
-        if (j.is_discarded() || !j.is_object() || !j.contains("id") || !j["id"].is_string() || !j.contains("status") ||
-            !j["status"].is_string())
-            throw IoError(fmt::format("{}:{}: not a meshdiff batch record", path, lineno));
-        const std::string id = j["id"].get<std::string>();
-        const bool ok = j["status"] == "ok";
-        if (ok && !(j.contains("result") && j["result"].is_object()))
-            throw IoError(fmt::format("{}:{}: an ok record without its result object", path, lineno));
-        auto [it, fresh] = records.try_emplace(id);
-        if (fresh) order.push_back(id);
-        if (ok || !it->second.ok) it->second = {std::move(j), ok};  // the last ok line wins
-    }
-}
-
-// One CSV row: column name -> cell text; the column order is the order of
-// first appearance over all rows.
-class Table
-{
-public:
-    void set(std::size_t row, const std::string& column, std::string value)
-    {
-        if (rows_.size() <= row) rows_.resize(row + 1);
-        if (index_.emplace(column, columns_.size()).second) columns_.push_back(column);
-        rows_[row][column] = std::move(value);
-    }
-
-    void write(std::ostream& out) const
-    {
-        for (std::size_t c = 0; c < columns_.size(); ++c) out << (c ? "," : "") << quote(columns_[c]);
-        out << "\n";
-        for (const auto& row : rows_) {
-            for (std::size_t c = 0; c < columns_.size(); ++c) {
-                const auto it = row.find(columns_[c]);
-                out << (c ? "," : "") << (it == row.end() ? "" : quote(it->second));
-            }
-            out << "\n";
-        }
-    }
-
-private:
-    static std::string quote(const std::string& s)
-    {
-        if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-        std::string q = "\"";
-        for (const char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-        return q + "\"";
-    }
-
-    std::vector<std::string> columns_;
-    std::map<std::string, std::size_t> index_;
-    std::vector<std::map<std::string, std::string>> rows_;
-};
-
-// A JSON scalar as a CSV cell: numbers in their shortest round-trip form,
-// booleans as true/false, null as an empty cell.
-std::string cell(const nlohmann::json& v)
-{
-    if (v.is_null()) return "";
-    if (v.is_string()) return v.get<std::string>();
-    return v.dump();
-}
-
-// The scalars under \p j, one column each, named by their path joined with
-// '_' (below \p prefix); strings only for the Hausdorff method and where it
-// is attained, the distance kind of each direction (point clouds), and the
-// reasons of *_unavailable fields. Lists of numbers
-// (histograms, coordinates) and the sampling settings are left out; a list of objects with a "threshold" (the
-// F-scores) gives one group of columns per threshold.
-void flatten(Table& t, std::size_t row, const std::string& prefix, const nlohmann::json& j)
-{
-    static const std::set<std::string> skipped = {"location", "sampling", "formula"};
-    for (auto it = j.begin(); it != j.end(); ++it) {
-        const std::string name = prefix.empty() ? it.key() : prefix + "_" + it.key();
-        const nlohmann::json& v = it.value();
-        if (skipped.count(it.key())) continue;
-        if (v.is_object()) {
-            flatten(t, row, name, v);
-        } else if (v.is_array()) {
-            for (const auto& e : v)
-                if (e.is_object() && e.contains("threshold") && e["threshold"].is_number()) {
-                    nlohmann::json rest = e;
-                    rest.erase("threshold");
-                    flatten(t, row, fmt::format("{}_{}", name, cell(e["threshold"])), rest);
-                }
-        } else if (!v.is_string() || name.find("hausdorff_method") != std::string::npos ||
-                   name.find("hausdorff_attained") != std::string::npos ||
-                   name.find("distance_kind") != std::string::npos ||
-                   (name.size() > 12 && name.compare(name.size() - 12, 12, "_unavailable") == 0)) {
-            t.set(row, name, cell(v));
-        }
-    }
-}
-
-// d_L and the relative change per ring level and per radius, and the global ones.
-void roughness_columns(Table& t, std::size_t row, const nlohmann::json& rd)
-{
-    auto per = [&](const char* key, const char* dist, const char* rel, const char* tag) {
-        if (!rd.contains(key) || !rd[key].is_array()) return;
-        const auto& keys = rd[key];
-        for (std::size_t i = 0; i < keys.size(); ++i) {
-            const std::string label = fmt::format("{}{}", tag, cell(keys[i]));
-            if (rd.contains(dist) && i < rd[dist].size()) t.set(row, "d_" + label, cell(rd[dist][i]));
-            if (rd.contains(rel) && i < rd[rel].size()) t.set(row, "relative_change_" + label, cell(rd[rel][i]));
-        }
-    };
-    per("levels", "distance", "relative_change", "L");
-    if (rd.contains("global") && rd["global"].is_object()) {
-        t.set(row, "d_global", cell(rd["global"].value("distance", nlohmann::json())));
-        t.set(row, "relative_change_global", cell(rd["global"].value("relative_change", nlohmann::json())));
-    }
-    per("radii", "distance_radii", "relative_change_radii", "r");
-}
-
-void mesh_columns(Table& t, std::size_t row, const char* side, const nlohmann::json& result)
-{
-    if (!result.contains(side) || !result[side].is_object()) return;
-    const auto& p = result[side];
-    if (p.contains("mesh") && p["mesh"].is_object()) {
-        for (const char* k : {"vertices", "faces"})
-            if (p["mesh"].contains(k)) t.set(row, fmt::format("{}_{}", side, k), cell(p["mesh"][k]));
-    }
-    if (p.contains("sigma_global")) t.set(row, fmt::format("{}_sigma_global", side), cell(p["sigma_global"]));
+    for_each_record(text, text.size(), path, "", [&](BatchRecord&& r) {
+        if (r.ok && !(r.json.contains("result") && r.json["result"].is_object()))
+            throw IoError(fmt::format("{}:{}: an ok record without its result object", path, r.line));
+        auto [it, fresh] = records.try_emplace(r.id);
+        if (fresh) order.push_back(r.id);
+        if (r.ok || !it->second.ok) it->second = {std::move(r.json), r.ok};  // the last ok line wins
+    });
 }
 
 int run_summary(const SummaryArgs& a)
@@ -221,7 +101,7 @@ int run_summary(const SummaryArgs& a)
         ids = order;
     }
 
-    Table table;
+    CsvTable table;
     nlohmann::json merged = nlohmann::json::array();  // the page's records, one per row
     std::size_t ok = 0, failed = 0, missing = 0;
     std::vector<std::string> problems;
@@ -240,35 +120,14 @@ int run_summary(const SummaryArgs& a)
         merged.push_back(j);
         table.set(row, "status", j["status"].get<std::string>());
         for (const char* k : {"original", "processed", "exit_code", "error", "elapsed_seconds", "meshdiff_version"})
-            table.set(row, k, j.contains(k) ? cell(j[k]) : "");
+            table.set(row, k, j.contains(k) ? csv_cell(j[k]) : "");
         if (!it->second.ok) {
             ++failed;
-            problems.push_back(fmt::format("failed: {}: {}", id, j.contains("error") ? cell(j["error"]) : "?"));
+            problems.push_back(fmt::format("failed: {}: {}", id, j.contains("error") ? csv_cell(j["error"]) : "?"));
             continue;
         }
         ++ok;
-        const nlohmann::json& r = j["result"];
-        mesh_columns(table, row, "original", r);
-        mesh_columns(table, row, "processed", r);
-        if (r.contains("surface_distance") && r["surface_distance"].is_object()) {
-            const nlohmann::json& sd = r["surface_distance"];
-            // The headline columns first: the Hausdorff distance (the certified
-            // upper bound, or the sampled maximum), the means and RMS.
-            const bool certified = sd.contains("hausdorff") && sd["hausdorff"].is_object() &&
-                                   sd["hausdorff"].value("method", "") == "certified";
-            table.set(row, "hausdorff",
-                      certified ? cell(sd["hausdorff"].value("upper", nlohmann::json()))
-                                : cell(sd.value("sampled_hausdorff", nlohmann::json())));
-            for (const char* dir : {"forward", "backward"})
-                for (const char* k : {"mean", "rms"})
-                    if (sd.contains(dir) && sd[dir].contains(k))
-                        table.set(row, fmt::format("{}_{}", dir, k), cell(sd[dir][k]));
-            flatten(table, row, "", sd);
-        }
-        if (r.contains("same_connectivity") && r["same_connectivity"].is_object())
-            flatten(table, row, "same_connectivity", r["same_connectivity"]);
-        if (r.contains("roughness_distance") && r["roughness_distance"].is_object())
-            roughness_columns(table, row, r["roughness_distance"]);
+        add_comparison_columns(table, row, j["result"]);
     }
 
     if (!a.html.empty()) {
