@@ -23,6 +23,7 @@
 #include "meshdiff/geometry/normals.h"
 #include "meshdiff/geometry/point_triangle.h"
 #include "meshdiff/geometry/sampling.h"
+#include "meshdiff/geometry/vertex_areas.h"
 
 #include "meshdiff/roughness/corsini.h"
 #include "meshdiff/roughness/curvature.h"

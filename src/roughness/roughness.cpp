@@ -2,6 +2,7 @@
 
 #include "meshdiff/error.h"
 #include "meshdiff/geometry/normals.h"
+#include "meshdiff/geometry/vertex_areas.h"
 #include "meshdiff/roughness/metric_levels.h"
 #include "meshdiff/roughness/neighborhood.h"
 

@@ -12,6 +12,7 @@
 
 #include "meshdiff/core/mesh.h"
 #include "meshdiff/core/topology.h"
+#include "meshdiff/geometry/vertex_areas.h"  // vertex_areas() was declared here until 0.2
 #include "meshdiff/roughness/roughness.h"
 
 #include <cstdint>
@@ -45,11 +46,6 @@ void check_ball_work(const Mesh& mesh, const Adjacency& adjacency, const std::ve
 //! Throws OptionError("profile.radii") unless every radius is finite, > 0 and
 //! <= kMaxRadius, and there are at most kMaxRadii.
 void check_radii(const std::vector<double>& radii);
-
-//! The area share of each vertex: one third of the area of each incident
-//! face (a face with a repeated corner, or of zero area, contributes 0).
-//! Sums to surface_area() over the faces without a repeated corner.
-std::vector<double> vertex_areas(const Mesh& mesh);
 
 //! N_r(centre) as defined above, ascending ids (the centre excluded). A plain
 //! breadth-first search bounded by the ball: the single-centre, single-radius
