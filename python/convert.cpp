@@ -420,16 +420,28 @@ SamplingOptions sampling_options(Obj samples, Obj density, Obj face_sampling, Ob
     return s;
 }
 
+namespace {
+
+// The profile options, the measure and the Corsini variance of the roughness
+// keywords \p a, checked in this order (compare() and profile() alike).
+void roughness_options(const RoughnessKeywords& a, ProfileOptions& profile, RoughnessMeasure& measure,
+                       bool& corsini_unbiased)
+{
+    profile = profile_options(a.levels, a.radii, a.global_level, a.curvature, a.weighting);
+    if (auto m = choice<RoughnessMeasure>(a.measure, "measure")) measure = *m;
+    corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", corsini_unbiased);
+    if (auto n = choice<NormalizeMethod>(a.normalize, "profile.normalize")) profile.normalize = *n;
+    if (auto t = number(a.trim, "profile.trim")) profile.trim = *t;
+    if (auto b = whole(a.bootstrap, "profile.bootstrap")) profile.bootstrap = std::size_t(*b);
+    if (auto b = whole(a.bootstrap_seed, "profile.bootstrap_seed")) profile.bootstrap_seed = *b;
+}
+
+}  // namespace
+
 CompareOptions compare_options(const CompareKeywords& a)
 {
     CompareOptions c;
-    c.profile = profile_options(a.levels, a.radii, a.global_level, a.curvature, a.weighting);
-    if (auto m = choice<RoughnessMeasure>(a.measure, "measure")) c.measure = *m;
-    c.corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", c.corsini_unbiased);
-    if (auto n = choice<NormalizeMethod>(a.normalize, "profile.normalize")) c.profile.normalize = *n;
-    if (auto t = number(a.trim, "profile.trim")) c.profile.trim = *t;
-    if (auto b = whole(a.bootstrap, "profile.bootstrap")) c.profile.bootstrap = std::size_t(*b);
-    if (auto b = whole(a.bootstrap_seed, "profile.bootstrap_seed")) c.profile.bootstrap_seed = *b;
+    roughness_options(a, c.profile, c.measure, c.corsini_unbiased);
     c.local = flag(a.local, "local", c.local);
     if (auto t = number(a.local_trim, "local_trim")) c.local_trim = *t;
     if (auto k = number(a.k, "k")) c.k = *k;
@@ -483,13 +495,7 @@ CompareOutputs compare_outputs(const CompareKeywords& a)
 ProfileRequest profile_request(const ProfileKeywords& a)
 {
     ProfileRequest r;
-    r.profile = profile_options(a.levels, a.radii, a.global_level, a.curvature, a.weighting);
-    if (auto m = choice<RoughnessMeasure>(a.measure, "measure")) r.measure = *m;
-    r.corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", r.corsini_unbiased);
-    if (auto n = choice<NormalizeMethod>(a.normalize, "profile.normalize")) r.profile.normalize = *n;
-    if (auto t = number(a.trim, "profile.trim")) r.profile.trim = *t;
-    if (auto b = whole(a.bootstrap, "profile.bootstrap")) r.profile.bootstrap = std::size_t(*b);
-    if (auto b = whole(a.bootstrap_seed, "profile.bootstrap_seed")) r.profile.bootstrap_seed = *b;
+    roughness_options(a, r.profile, r.measure, r.corsini_unbiased);
     r.json = output_path(a.json, "outputs.json");
     r.vertex_data = output_path(a.vertex_data, "outputs.vertex_data");
     r.html = output_path(a.html, "outputs.html");

@@ -187,12 +187,18 @@ SamplingOptions sampling_options(Obj samples, Obj density, Obj face_sampling, Ob
 std::optional<HausdorffOptions> surface_distance_hausdorff(Obj hausdorff, Obj tolerance, Obj abs_tolerance, Obj budget);
 
 //! The comparison options (compare(), compare_files()).
-struct CompareKeywords
+//! The roughness keywords that compare() and profile() share.
+struct RoughnessKeywords
 {
     py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize, trim,
-        bootstrap, bootstrap_seed, local, local_trim, k, roughness, distance, samples, density, face_sampling, seed,
-        vertex_samples, edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
-        hausdorff_budget, fscore, histogram;
+        bootstrap, bootstrap_seed;
+};
+
+struct CompareKeywords : RoughnessKeywords
+{
+    py::object local, local_trim, k, roughness, distance, samples, density, face_sampling, seed, vertex_samples,
+        edge_samples, face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore,
+        histogram;
     py::object json, distance_map, distance_map_original, distance_maps, samples_out, html, color_range,
         html_face_budget;
     py::object threads;
@@ -205,10 +211,8 @@ CompareOptions compare_options(const CompareKeywords& a);
 CompareOutputs compare_outputs(const CompareKeywords& a);
 
 //! The profile options (profile(), profile_file()).
-struct ProfileKeywords
+struct ProfileKeywords : RoughnessKeywords
 {
-    py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize, trim,
-        bootstrap, bootstrap_seed;
     py::object json, vertex_data, html, color_range, exact, exact_property, html_face_budget;
     py::object threads;
 };

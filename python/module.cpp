@@ -289,17 +289,11 @@ private:
 
 // ---------------------------------------------------------------- bindings
 
-// The CompareKeywords of the keywords of compare() and compare_files().
-CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
-                                 Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap, Obj bootstrap_seed,
-                                 Obj local, Obj local_trim, Obj k, Obj roughness, Obj distance, Obj samples,
-                                 Obj density, Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples,
-                                 Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance,
-                                 Obj hausdorff_budget, Obj fscore, Obj histogram, Obj json, Obj distance_map,
-                                 Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj html,
-                                 Obj color_range, Obj html_face_budget, Obj threads)
+// The RoughnessKeywords that compare() and profile() share.
+RoughnessKeywords roughness_keywords(Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
+                                     Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap, Obj bootstrap_seed)
 {
-    CompareKeywords kw;
+    RoughnessKeywords kw;
     kw.levels = levels;
     kw.radii = radii;
     kw.global_level = global_level;
@@ -311,6 +305,23 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
     kw.trim = trim;
     kw.bootstrap = bootstrap;
     kw.bootstrap_seed = bootstrap_seed;
+    return kw;
+}
+
+// The CompareKeywords of the keywords of compare() and compare_files().
+CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
+                                 Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap, Obj bootstrap_seed,
+                                 Obj local, Obj local_trim, Obj k, Obj roughness, Obj distance, Obj samples,
+                                 Obj density, Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples,
+                                 Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance,
+                                 Obj hausdorff_budget, Obj fscore, Obj histogram, Obj json, Obj distance_map,
+                                 Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj html,
+                                 Obj color_range, Obj html_face_budget, Obj threads)
+{
+    CompareKeywords kw;
+    static_cast<RoughnessKeywords&>(kw) =
+        roughness_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize,
+                           trim, bootstrap, bootstrap_seed);
     kw.local = local;
     kw.local_trim = local_trim;
     kw.k = k;
@@ -348,17 +359,9 @@ ProfileKeywords profile_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
                                  Obj html_face_budget, Obj threads)
 {
     ProfileKeywords kw;
-    kw.levels = levels;
-    kw.radii = radii;
-    kw.global_level = global_level;
-    kw.curvature = curvature;
-    kw.weighting = weighting;
-    kw.measure = measure;
-    kw.unbiased_variance = unbiased_variance;
-    kw.normalize = normalize;
-    kw.trim = trim;
-    kw.bootstrap = bootstrap;
-    kw.bootstrap_seed = bootstrap_seed;
+    static_cast<RoughnessKeywords&>(kw) =
+        roughness_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize,
+                           trim, bootstrap, bootstrap_seed);
     kw.json = json;
     kw.vertex_data = vertex_data;
     kw.html = html;

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 
 namespace meshdiff {
@@ -80,6 +81,22 @@ nlohmann::json radius_json(const LevelRoughness& l)
     j["radius"] = l.radius;
     return j;
 }
+// The per-level arrays of a profile under the three names of \p names: the
+// keys (levels or radii), sigma, and the details of each level.
+template <class KeyOf>
+void level_arrays(nlohmann::json& j, const std::vector<LevelRoughness>& ls, const std::array<const char*, 3>& names,
+                  KeyOf key_of, nlohmann::json (*details_of)(const LevelRoughness&))
+{
+    nlohmann::json keys = nlohmann::json::array(), sigma = nlohmann::json::array(), details = nlohmann::json::array();
+    for (const auto& l : ls) {
+        keys.push_back(key_of(l));
+        sigma.push_back(sigma_json(l));
+        details.push_back(details_of(l));
+    }
+    j[names[0]] = keys;
+    j[names[1]] = sigma;
+    j[names[2]] = details;
+}
 }  // namespace
 
 nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
@@ -118,16 +135,9 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
         j["curvature"]["capped_vertices"] = p.curvature_capped_vertices;
         j["curvature"]["max_fit_neighbors"] = kMaxFitNeighbors;
     }
-    nlohmann::json levels = nlohmann::json::array(), sigma = nlohmann::json::array(), details = nlohmann::json::array();
-    for (const auto& l : p.levels) {
-        levels.push_back(l.level);
-        sigma.push_back(sigma_json(l));
-        details.push_back(level_json(l));
-    }
-    j["levels"] = levels;
-    j["sigma"] = sigma;
+    level_arrays(
+        j, p.levels, {"levels", "sigma", "level_details"}, [](const LevelRoughness& l) { return l.level; }, level_json);
     j["sigma_global"] = p.has_global ? sigma_json(p.global) : nlohmann::json(nullptr);
-    j["level_details"] = details;
     if (p.has_global) j["global"] = level_json(p.global);
     j["neighborhood"] = "N_L(i) = vertices within L edges of i, i excluded; global: all other vertices";
     if (p.trim > 0.0)
@@ -142,16 +152,9 @@ nlohmann::json profile_json(const MeshFacts& f, const RoughnessProfile& p)
                            "resamples of the vertices used, drawn with replacement (trim and area weights applied "
                            "to each)"}};
     if (!p.radii.empty()) {  // only then: reports without metric levels are unchanged
-        nlohmann::json radii = nlohmann::json::array(), sigma_r = nlohmann::json::array(),
-                       details_r = nlohmann::json::array();
-        for (const auto& l : p.radii) {
-            radii.push_back(l.radius);
-            sigma_r.push_back(sigma_json(l));
-            details_r.push_back(radius_json(l));
-        }
-        j["radii"] = radii;
-        j["sigma_radii"] = sigma_r;
-        j["radius_details"] = details_r;
+        level_arrays(
+            j, p.radii, {"radii", "sigma_radii", "radius_details"}, [](const LevelRoughness& l) { return l.radius; },
+            radius_json);
         j["neighborhood_radii"] =
             "N_r(i) = vertices joined to i by mesh edges inside the closed ball of radius r about i (unit-scaled "
             "mesh), i excluded; means and sigma weighted by vertex area (one third of incident face areas)";
@@ -229,7 +232,6 @@ nlohmann::json corsini_json(const CorsiniProfile& p)
     j["roughness"] = r;
     j["roughness_global"] = p.has_global ? nlohmann::json(p.global.roughness) : nlohmann::json(nullptr);
     j["multiscale"] = p.levels.empty() ? nlohmann::json(nullptr) : nlohmann::json(p.multiscale);
-    j["level_details"] = details;
     if (p.has_global) j["global"] = corsini_level_json(p.global);
     j["dihedral"] = {{"edges", p.edges},
                      {"edges_with_angle", p.dihedral_edges},
