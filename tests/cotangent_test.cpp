@@ -7,18 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include <cmath>
 
 using namespace meshdiff;
-
-namespace {
-
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
-
-}  // namespace
+using meshdiff::test::data;
 
 TEST(Cotangent, OfKnownAnglesAndZeroForAFlatCorner)
 {

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include "meshdiff/studies/shapes.h"
 
 #include <unistd.h>
@@ -15,14 +17,10 @@
 #include <vector>
 
 using namespace meshdiff;
+using meshdiff::test::data;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
 
 fs::path write_text(const std::string& name, const std::string& text)
 {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include "meshdiff/error.h"
 #include "meshdiff/io/facts.h"
 #include "meshdiff/report/colormap.h"
@@ -17,13 +19,9 @@
 #include <vector>
 
 using namespace meshdiff;
+using meshdiff::test::data;
 
 namespace {
-
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
 
 // The text of the element <script ... id="ID"> of a page.
 std::string element(const std::string& page, const std::string& id)

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include "meshdiff/error.h"
 #include "meshdiff/studies/shapes.h"
 
@@ -10,14 +12,10 @@
 #include <fstream>
 
 using namespace meshdiff;
+using meshdiff::test::data;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
 
 fs::path temp_dir()
 {

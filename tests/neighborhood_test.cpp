@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include "meshdiff/error.h"
 #include "meshdiff/io/io.h"
 #include "meshdiff/studies/shapes.h"
@@ -22,13 +24,9 @@
 #include <vector>
 
 using namespace meshdiff;
+using meshdiff::test::data;
 
 namespace {
-
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
 
 // Appends \p part to \p mesh, shifted by \p offset, as a separate component.
 void append(Mesh& mesh, const Mesh& part, const Vec3& offset)

@@ -2,17 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include "meshdiff/error.h"
 #include "meshdiff/io/io.h"
 
 using namespace meshdiff;
-
-namespace {
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
-}  // namespace
+using meshdiff::test::data;
 
 TEST(Normalization, UnitMeanRadiusAboutTheCentroid)
 {

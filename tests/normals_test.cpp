@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include "meshdiff/io/io.h"
 #include "meshdiff/studies/shapes.h"
 
@@ -12,13 +14,9 @@
 #include <vector>
 
 using namespace meshdiff;
+using meshdiff::test::data;
 
 namespace {
-
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
 
 double angle(const Vec3& a, const Vec3& b)
 {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include "meshdiff/compare.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io/io.h"
@@ -13,13 +15,9 @@
 #include <functional>
 
 using namespace meshdiff;
+using meshdiff::test::data;
 
 namespace {
-
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
 
 // No NaN or Inf can reach a JSON report: nlohmann would write null for them,
 // so check that every number is finite (nulls are allowed only where documented).

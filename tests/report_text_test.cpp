@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include "meshdiff/compare.h"
 #include "meshdiff/io/io.h"
 #include "meshdiff/studies/shapes.h"
@@ -15,13 +17,9 @@
 #include <vector>
 
 using namespace meshdiff;
+using meshdiff::test::data;
 
 namespace {
-
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
 
 // printf's %.6g, which is what fmt's {:.6g} prints for these numbers.
 std::string g6(double x)

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include "meshdiff/error.h"
 #include "meshdiff/geometry/normals.h"
 #include "meshdiff/io/io.h"
@@ -19,13 +21,9 @@
 #include <random>
 
 using namespace meshdiff;
+using meshdiff::test::data;
 
 namespace {
-
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
 
 // Brute force: D_L by a BFS per vertex, straight from the definition.
 std::vector<double> brute_force_D(const Mesh& mesh, const std::vector<double>& H, int L)

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/data.h"
+
 #include "meshdiff/distance/signed_distance.h"
 #include "meshdiff/error.h"
 #include "meshdiff/geometry/point_triangle.h"
@@ -16,14 +18,10 @@
 #include <vector>
 
 using namespace meshdiff;
+using meshdiff::test::data;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string data(const std::string& name)
-{
-    return std::string(MESHDIFF_TEST_DATA_DIR) + "/" + name;
-}
 
 const Rgb kRed = {255, 0, 0};
 const Rgb kBlue = {0, 0, 255};
