@@ -4,6 +4,8 @@
 // machine is noisy: compare medians and ratios, not single runs. --kernels
 // both alternates runs with the AVX-512 kernels (where the CPU has them) and
 // with the baseline ones, and prints both medians and their ratio.
+#include "bench_common.h"
+
 #include "meshdiff/geometry/normals.h"
 #include "meshdiff/io/facts.h"
 #include "meshdiff/io/io.h"
@@ -27,31 +29,13 @@
 using namespace meshdiff;
 using Clock = std::chrono::steady_clock;
 
+using namespace meshdiff::timing;
+
 namespace {
 
 double seconds_since(Clock::time_point t0)
 {
     return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-double cpu_seconds()
-{
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
-double peak_rss_mb()
-{
-    rusage ru{};
-    getrusage(RUSAGE_SELF, &ru);
-    return double(ru.ru_maxrss) / 1024.0;
-}
-
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
 struct Stages
@@ -137,7 +121,7 @@ void bench(const std::string& label, const std::string& path, const Mesh* genera
             "{:.3f}, rings cpu {:.3f}); peak RSS so far {:.0f} MB; threads {}\n",
             label, k == 1 ? " [scalar kernels]" : (detail::cpu_has_avx512() ? " [AVX-512 kernels]" : ""),
             med(k, &Stages::total), med(k, &Stages::read), med(k, &Stages::facts), med(k, &Stages::normalize_normals),
-            med(k, &Stages::curvature), med(k, &Stages::rings), med(k, &Stages::rings_cpu), peak_rss_mb(),
+            med(k, &Stages::curvature), med(k, &Stages::rings), med(k, &Stages::rings_cpu), peak_rss_mib(),
             omp_get_max_threads());
     }
     if (!runs[0].empty() && !runs[1].empty())

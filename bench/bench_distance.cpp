@@ -27,6 +27,8 @@
 //                                 mean X rms X time_s T cpu_s C threads N
 //                                 peak_rss_mib M" for scripts (T: median wall
 //                                 time, C: median CPU time of all threads)
+#include "bench_common.h"
+
 #include "meshdiff/distance/surface_distance.h"
 #include "meshdiff/geometry/closest_point.h"
 #include "meshdiff/io/io.h"
@@ -42,31 +44,18 @@
 #include <string>
 #include <vector>
 
+using namespace meshdiff::timing;
+
 namespace {
 
 using meshdiff::Mesh;
 using meshdiff::Vec3;
-
-double peak_rss_mib()
-{
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return double(u.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
-}
 
 // One-minute load average of the machine (other processes compete for cores).
 double load1()
 {
     double l[1] = {0.0};
     return getloadavg(l, 1) == 1 ? l[0] : -1.0;
-}
-
-// User + system CPU time of the process (all threads), in seconds.
-double cpu_seconds()
-{
-    rusage u{};
-    getrusage(RUSAGE_SELF, &u);
-    return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
 // Torus (axis z, centre radius R, tube radius r) on an nu x nv grid, with a

@@ -14,6 +14,8 @@
 //     reference/cgal_hausdorff times with CGAL's bounded_error_Hausdorff_distance.
 // Each line gives the intervals, their widths, the evaluations and rounds.
 // --certified-only runs case 3 alone (for CPU-time measurements with time(1)).
+#include "bench_common.h"
+
 #include "meshdiff/distance/hausdorff.h"
 #include "meshdiff/distance/surface_distance.h"
 #include "meshdiff/geometry/closest_point.h"
@@ -29,19 +31,9 @@
 #include <string>
 #include <vector>
 
-namespace {
+using namespace meshdiff::timing;
 
-double median_seconds(int runs, const std::function<void()>& f)
-{
-    std::vector<double> t;
-    for (int k = 0; k < runs; ++k) {
-        const auto t0 = std::chrono::steady_clock::now();
-        f();
-        t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    }
-    std::sort(t.begin(), t.end());
-    return t[t.size() / 2];
-}
+namespace {
 
 void print_interval(const char* name, const meshdiff::CertifiedHausdorff& h)
 {

@@ -8,6 +8,8 @@
 // the runs of the thread counts interleaved so that a noisy machine hurts
 // them alike.
 // Usage: meshdiff_bench_speedup A.ply B.ply [--repeat 3] [--threads 1,2] [--radii 0.05 | none]
+#include "bench_common.h"
+
 #include "meshdiff/compare.h"
 #include "meshdiff/core/progress.h"
 #include "meshdiff/io/io.h"
@@ -26,20 +28,9 @@
 using namespace meshdiff;
 using Clock = std::chrono::steady_clock;
 
+using namespace meshdiff::timing;
+
 namespace {
-
-double cpu_seconds()
-{
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
-double median(std::vector<double> v)
-{
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 struct Time
 {
