@@ -64,6 +64,7 @@ std::string py_spelling(const std::string& field)
         {"outputs.html_face_budget", "html_face_budget"},
         {"profile.bootstrap", "bootstrap"},
         {"profile.bootstrap_seed", "bootstrap_seed"},
+        {"profile.paper", "paper"},
         {"outputs.vertex_data", "vertex_data"},
         {"outputs.exact", "exact"},
         {"outputs.exact_property", "exact_property"},
@@ -427,7 +428,8 @@ namespace {
 void roughness_options(const RoughnessKeywords& a, ProfileOptions& profile, RoughnessMeasure& measure,
                        bool& corsini_unbiased)
 {
-    profile = profile_options(a.levels, a.radii, a.global_level, a.curvature, a.weighting);
+    profile = profile_options(a.levels, a.radii, a.global_level, a.curvature, a.weighting,
+                              flag(a.paper, "profile.paper", false) ? paper_profile_options() : ProfileOptions{});
     if (auto m = choice<RoughnessMeasure>(a.measure, "measure")) measure = *m;
     corsini_unbiased = flag(a.unbiased_variance, "corsini_unbiased", corsini_unbiased);
     if (auto n = choice<NormalizeMethod>(a.normalize, "profile.normalize")) profile.normalize = *n;

@@ -191,7 +191,7 @@ std::optional<HausdorffOptions> surface_distance_hausdorff(Obj hausdorff, Obj to
 struct RoughnessKeywords
 {
     py::object levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize, trim,
-        bootstrap, bootstrap_seed;
+        bootstrap, bootstrap_seed, paper;
 };
 
 struct CompareKeywords : RoughnessKeywords

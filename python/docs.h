@@ -75,6 +75,9 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
   bootstrap=None        resamples of the vertices for a 95% bootstrap interval of sigma
                         at every level ("sigma_interval"; 0..10000; None: none) [--bootstrap]
   bootstrap_seed=None   seed of the resamples (None: 1)                    [--bootstrap-seed]
+  paper=False           the paper's exact method: goldfeather fit without row weights,
+                        paper normalisation, untrimmed sigma; a curvature, weighting,
+                        normalize or trim that contradicts it is a ValueError  [--paper]
   local=True            the local roughness difference: per level, the RMS over the original's
                         vertices of D_L minus the processed D_L at the closest point, in
                         ["roughness_distance"]["local"] (levels, rms, radii, rms_radii, global)  [--no-local]
@@ -147,7 +150,7 @@ constexpr const char* kProfileOptionsDoc = R"doc(
 Options (keyword-only, as `meshdiff profile`; None: the library's default):
   levels=None, radii=None, global_level=True, curvature=None, weighting=None,
   measure=None, unbiased_variance=False, normalize=None (paper or area), trim=None,
-  bootstrap=None, bootstrap_seed=None,
+  bootstrap=None, bootstrap_seed=None, paper=False,
   threads=None   (see compare());
   with radii (or "default": 0.0125 * 2**(k/2), k = 0..8) the dict also holds
   "radii", "sigma_radii" and "radius_details" (METHOD.md 5a); with

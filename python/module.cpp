@@ -291,7 +291,8 @@ private:
 
 // The RoughnessKeywords that compare() and profile() share.
 RoughnessKeywords roughness_keywords(Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
-                                     Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap, Obj bootstrap_seed)
+                                     Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap, Obj bootstrap_seed,
+                                     Obj paper)
 {
     RoughnessKeywords kw;
     kw.levels = levels;
@@ -305,13 +306,14 @@ RoughnessKeywords roughness_keywords(Obj levels, Obj radii, Obj global_level, Ob
     kw.trim = trim;
     kw.bootstrap = bootstrap;
     kw.bootstrap_seed = bootstrap_seed;
+    kw.paper = paper;
     return kw;
 }
 
 // The CompareKeywords of the keywords of compare() and compare_files().
 CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
                                  Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap, Obj bootstrap_seed,
-                                 Obj local, Obj local_trim, Obj k, Obj roughness, Obj distance, Obj samples,
+                                 Obj paper, Obj local, Obj local_trim, Obj k, Obj roughness, Obj distance, Obj samples,
                                  Obj density, Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples,
                                  Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance,
                                  Obj hausdorff_budget, Obj fscore, Obj histogram, Obj json, Obj distance_map,
@@ -321,7 +323,7 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
     CompareKeywords kw;
     static_cast<RoughnessKeywords&>(kw) =
         roughness_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize,
-                           trim, bootstrap, bootstrap_seed);
+                           trim, bootstrap, bootstrap_seed, paper);
     kw.local = local;
     kw.local_trim = local_trim;
     kw.k = k;
@@ -355,13 +357,13 @@ CompareKeywords compare_keywords(Obj levels, Obj radii, Obj global_level, Obj cu
 // The ProfileKeywords of the keywords of profile() and profile_file().
 ProfileKeywords profile_keywords(Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
                                  Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap, Obj bootstrap_seed,
-                                 Obj json, Obj vertex_data, Obj html, Obj color_range, Obj exact, Obj exact_property,
-                                 Obj html_face_budget, Obj threads)
+                                 Obj paper, Obj json, Obj vertex_data, Obj html, Obj color_range, Obj exact,
+                                 Obj exact_property, Obj html_face_budget, Obj threads)
 {
     ProfileKeywords kw;
     static_cast<RoughnessKeywords&>(kw) =
         roughness_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance, normalize,
-                           trim, bootstrap, bootstrap_seed);
+                           trim, bootstrap, bootstrap_seed, paper);
     kw.json = json;
     kw.vertex_data = vertex_data;
     kw.html = html;
@@ -410,7 +412,8 @@ void def_compare_like(py::module_& m, const char* name, F&& f, const std::string
           py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
           py::arg("unbiased_variance") = py::bool_(defaults.corsini_unbiased), py::arg("normalize") = py::none(),
           py::arg("trim") = py::none(), py::arg("bootstrap") = py::none(), py::arg("bootstrap_seed") = py::none(),
-          py::arg("local") = py::bool_(defaults.local), py::arg("local_trim") = py::none(), py::arg("k") = py::none(),
+          py::arg("paper") = py::bool_(false), py::arg("local") = py::bool_(defaults.local),
+          py::arg("local_trim") = py::none(), py::arg("k") = py::none(),
           py::arg("roughness") = py::bool_(defaults.roughness), py::arg("distance") = py::bool_(defaults.distance),
           py::arg("samples") = py::none(), py::arg("density") = py::none(), py::arg("face_sampling") = py::none(),
           py::arg("seed") = py::none(), py::arg("vertex_samples") = py::bool_(defaults.sampling.vertices),
@@ -433,7 +436,7 @@ void def_compare(py::module_& m)
         m, "compare",
         [](const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V2, const ArrayLike& F2, Obj levels, Obj radii,
            Obj global_level, Obj curvature, Obj weighting, Obj measure, Obj unbiased_variance, Obj normalize, Obj trim,
-           Obj bootstrap, Obj bootstrap_seed, Obj local, Obj local_trim, Obj k, Obj roughness, Obj distance,
+           Obj bootstrap, Obj bootstrap_seed, Obj paper, Obj local, Obj local_trim, Obj k, Obj roughness, Obj distance,
            Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples,
            Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance, Obj hausdorff_budget,
            Obj fscore, Obj histogram, Obj json, Obj distance_map, Obj distance_map_original, Obj distance_maps,
@@ -441,30 +444,30 @@ void def_compare(py::module_& m)
             return py_compare(
                 V1, F1, V2, F2,
                 compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
-                                 normalize, trim, bootstrap, bootstrap_seed, local, local_trim, k, roughness, distance,
-                                 samples, density, face_sampling, seed, vertex_samples, edge_samples, face_samples,
-                                 hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore,
-                                 histogram, json, distance_map, distance_map_original, distance_maps, samples_out, html,
-                                 color_range, html_face_budget, threads));
+                                 normalize, trim, bootstrap, bootstrap_seed, paper, local, local_trim, k, roughness,
+                                 distance, samples, density, face_sampling, seed, vertex_samples, edge_samples,
+                                 face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
+                                 hausdorff_budget, fscore, histogram, json, distance_map, distance_map_original,
+                                 distance_maps, samples_out, html, color_range, html_face_budget, threads));
         },
         compare_doc, py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"));
     def_compare_like(
         m, "compare_files",
         [](Obj original, Obj processed, Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting,
-           Obj measure, Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap, Obj bootstrap_seed, Obj local,
-           Obj local_trim, Obj k, Obj roughness, Obj distance, Obj samples, Obj density, Obj face_sampling, Obj seed,
-           Obj vertex_samples, Obj edge_samples, Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance,
+           Obj measure, Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap, Obj bootstrap_seed, Obj paper,
+           Obj local, Obj local_trim, Obj k, Obj roughness, Obj distance, Obj samples, Obj density, Obj face_sampling,
+           Obj seed, Obj vertex_samples, Obj edge_samples, Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance,
            Obj hausdorff_abs_tolerance, Obj hausdorff_budget, Obj fscore, Obj histogram, Obj json, Obj distance_map,
            Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj html, Obj color_range,
            Obj html_face_budget, Obj threads) {
             return py_compare_files(
                 original, processed,
                 compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
-                                 normalize, trim, bootstrap, bootstrap_seed, local, local_trim, k, roughness, distance,
-                                 samples, density, face_sampling, seed, vertex_samples, edge_samples, face_samples,
-                                 hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget, fscore,
-                                 histogram, json, distance_map, distance_map_original, distance_maps, samples_out, html,
-                                 color_range, html_face_budget, threads));
+                                 normalize, trim, bootstrap, bootstrap_seed, paper, local, local_trim, k, roughness,
+                                 distance, samples, density, face_sampling, seed, vertex_samples, edge_samples,
+                                 face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
+                                 hausdorff_budget, fscore, histogram, json, distance_map, distance_map_original,
+                                 distance_maps, samples_out, html, color_range, html_face_budget, threads));
         },
         compare_files_doc, py::arg("original"), py::arg("processed"));
 }
@@ -479,42 +482,43 @@ void def_profile(py::module_& m)
         "profile",
         [](const ArrayLike& V, const ArrayLike& F, Obj levels, Obj radii, Obj global_level, Obj curvature,
            Obj weighting, Obj measure, Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap,
-           Obj bootstrap_seed, Obj json, Obj vertex_data, Obj html, Obj color_range, Obj exact, Obj exact_property,
-           Obj html_face_budget, Obj threads) {
+           Obj bootstrap_seed, Obj paper, Obj json, Obj vertex_data, Obj html, Obj color_range, Obj exact,
+           Obj exact_property, Obj html_face_budget, Obj threads) {
             return py_profile(
                 V, F,
                 profile_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
-                                 normalize, trim, bootstrap, bootstrap_seed, json, vertex_data, html, color_range,
-                                 exact, exact_property, html_face_budget, threads));
+                                 normalize, trim, bootstrap, bootstrap_seed, paper, json, vertex_data, html,
+                                 color_range, exact, exact_property, html_face_budget, threads));
         },
         profile_doc.c_str(), py::arg("V"), py::arg("F"), py::kw_only(), py::arg("levels") = py::none(),
         py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
         py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
         py::arg("unbiased_variance") = py::bool_(pdefaults.corsini_unbiased), py::arg("normalize") = py::none(),
         py::arg("trim") = py::none(), py::arg("bootstrap") = py::none(), py::arg("bootstrap_seed") = py::none(),
-        py::arg("json") = py::none(), py::arg("vertex_data") = py::none(), py::arg("html") = py::none(),
-        py::arg("color_range") = py::none(), py::arg("exact") = py::bool_(pdefaults.exact),
-        py::arg("exact_property") = py::none(), py::arg("html_face_budget") = py::none(),
-        py::arg("threads") = py::none());
+        py::arg("paper") = py::bool_(false), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(),
+        py::arg("html") = py::none(), py::arg("color_range") = py::none(),
+        py::arg("exact") = py::bool_(pdefaults.exact), py::arg("exact_property") = py::none(),
+        py::arg("html_face_budget") = py::none(), py::arg("threads") = py::none());
     m.def(
         "profile_file",
         [](Obj path, Obj levels, Obj radii, Obj global_level, Obj curvature, Obj weighting, Obj measure,
-           Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap, Obj bootstrap_seed, Obj json, Obj vertex_data,
-           Obj html, Obj color_range, Obj exact, Obj exact_property, Obj html_face_budget, Obj threads) {
+           Obj unbiased_variance, Obj normalize, Obj trim, Obj bootstrap, Obj bootstrap_seed, Obj paper, Obj json,
+           Obj vertex_data, Obj html, Obj color_range, Obj exact, Obj exact_property, Obj html_face_budget,
+           Obj threads) {
             return py_profile_file(
                 path, profile_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
-                                       normalize, trim, bootstrap, bootstrap_seed, json, vertex_data, html, color_range,
-                                       exact, exact_property, html_face_budget, threads));
+                                       normalize, trim, bootstrap, bootstrap_seed, paper, json, vertex_data, html,
+                                       color_range, exact, exact_property, html_face_budget, threads));
         },
         profile_file_doc.c_str(), py::arg("path"), py::kw_only(), py::arg("levels") = py::none(),
         py::arg("radii") = py::none(), py::arg("global_level") = py::bool_(pdefaults.profile.global),
         py::arg("curvature") = py::none(), py::arg("weighting") = py::none(), py::arg("measure") = py::none(),
         py::arg("unbiased_variance") = py::bool_(pdefaults.corsini_unbiased), py::arg("normalize") = py::none(),
         py::arg("trim") = py::none(), py::arg("bootstrap") = py::none(), py::arg("bootstrap_seed") = py::none(),
-        py::arg("json") = py::none(), py::arg("vertex_data") = py::none(), py::arg("html") = py::none(),
-        py::arg("color_range") = py::none(), py::arg("exact") = py::bool_(pdefaults.exact),
-        py::arg("exact_property") = py::none(), py::arg("html_face_budget") = py::none(),
-        py::arg("threads") = py::none());
+        py::arg("paper") = py::bool_(false), py::arg("json") = py::none(), py::arg("vertex_data") = py::none(),
+        py::arg("html") = py::none(), py::arg("color_range") = py::none(),
+        py::arg("exact") = py::bool_(pdefaults.exact), py::arg("exact_property") = py::none(),
+        py::arg("html_face_budget") = py::none(), py::arg("threads") = py::none());
 }
 
 // corsini_profile(), mean_curvature() and roughness().

@@ -63,6 +63,7 @@ const std::vector<std::string>& option_fields()
         "profile.trim",
         "profile.bootstrap",
         "profile.bootstrap_seed",
+        "profile.paper",
         "measure",
         "local",
         "local_trim",

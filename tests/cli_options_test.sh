@@ -38,6 +38,11 @@ expect_range "limit of 200" profile "$h" --levels 1-300
 expect_range "--radii" profile "$h" --radii 0
 expect_range "--radii" profile "$h" --radii 0.1,-0.2
 expect_range "--radii" profile "$h" --radii nan
+# --paper fixes the estimator, the weighting, the normalisation and the trim: a flag that contradicts it is refused
+expect_range "--curvature jet contradicts" profile "$h" --paper --curvature jet
+expect_range "--trim 0.1 contradicts" "$h" "$h" --no-distance --paper --trim 0.1
+expect_range "--paper" "$h" "$h" --no-distance --paper --normalize area
+"$bin" profile "$h" --paper --levels 1 --json - | grep -q '"method": *"goldfeather"' && pass || fail "--paper is not the goldfeather fit"
 expect_range "--radii" profile "$h" --radii inf
 expect_range "--radii" profile "$h" --radii 1e9
 expect_range "--radii" profile "$h" --radii 0.1,,0.2

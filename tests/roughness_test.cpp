@@ -347,3 +347,60 @@ TEST(Bootstrap, ProfileLevelsCarryTheirIntervalAndTheOptionIsChecked)
     o.bootstrap = kMaxBootstrap + 1;
     EXPECT_THROW(roughness_profile(s.mesh, o), OptionError);
 }
+
+TEST(PaperMethod, IsTheGoldfeatherFitPaperScaleUntrimmedAndKeepsTheOtherFields)
+{
+    ProfileOptions base;
+    base.levels = {1, 4};
+    base.radii = {0.2};
+    base.bootstrap = 30;
+    base.trim = 0.1;
+    base.normalize = NormalizeMethod::Area;
+    const ProfileOptions p = paper_profile_options(base);
+    EXPECT_TRUE(p.paper);
+    EXPECT_EQ(p.curvature.method, CurvatureMethod::GoldfeatherCubic);
+    EXPECT_EQ(p.curvature.weighting, RowWeighting::None);
+    EXPECT_EQ(p.normalize, NormalizeMethod::Paper);
+    EXPECT_EQ(p.trim, 0.0);
+    EXPECT_EQ(p.levels, base.levels);
+    EXPECT_EQ(p.radii, base.radii);
+    EXPECT_EQ(p.bootstrap, base.bootstrap);
+    EXPECT_NO_THROW(validate(p));
+
+    // The same numbers, bit for bit, as the goldfeather fit asked for field by field.
+    const Shape s = noisy_sphere(3, 0.02, 1);
+    ProfileOptions by_hand;
+    by_hand.levels = {1, 4};
+    by_hand.curvature.method = CurvatureMethod::GoldfeatherCubic;
+    const RoughnessProfile a = roughness_profile(s.mesh, paper_profile_options(by_hand));
+    const RoughnessProfile b = roughness_profile(s.mesh, by_hand);
+    ASSERT_EQ(a.levels.size(), b.levels.size());
+    for (std::size_t i = 0; i < a.levels.size(); ++i) EXPECT_EQ(a.levels[i].sigma, b.levels[i].sigma);
+    EXPECT_EQ(a.global.sigma, b.global.sigma);
+}
+
+TEST(PaperMethod, AFieldThatContradictsItIsRefusedNamingPaperAndTheField)
+{
+    auto refused = [](const ProfileOptions& o, const std::string& field) {
+        try {
+            validate(o);
+        } catch (const OptionError& e) {
+            EXPECT_EQ(e.field(), "profile.paper");
+            EXPECT_NE(e.problem().find("{" + field + "}"), std::string::npos) << e.problem();
+            return;
+        }
+        ADD_FAILURE() << "not refused: " << field;
+    };
+    ProfileOptions o = paper_profile_options();
+    o.curvature.method = CurvatureMethod::Jet;
+    refused(o, "profile.curvature.method");
+    o = paper_profile_options();
+    o.curvature.weighting = RowWeighting::InverseSquare;
+    refused(o, "profile.curvature.weighting");
+    o = paper_profile_options();
+    o.normalize = NormalizeMethod::Area;
+    refused(o, "profile.normalize");
+    o = paper_profile_options();
+    o.trim = 0.05;
+    refused(o, "profile.trim");
+}

@@ -58,6 +58,7 @@ std::string cli_spelling(const std::string& field)
         {"outputs.html_face_budget", "--html-face-budget"},
         {"profile.bootstrap", "--bootstrap"},
         {"profile.bootstrap_seed", "--bootstrap-seed"},
+        {"profile.paper", "--paper"},
         {"outputs.vertex_data", "--vertex-data"},
         {"outputs.exact", "--exact"},
         {"outputs.exact_property", "--exact-property"},
@@ -145,6 +146,9 @@ void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii, b
             "metric levels: radii on the unit-scaled mesh, e.g. 0.05,0.1,0.2, or 'default' "
             "(0.0125 * 2^(k/2), k = 0..8: 0.0125 to 0.2)");
     sub->add_flag("--no-global", o.no_global, "leave out the global level");
+    sub->add_flag("--paper", o.paper,
+                  "the paper's exact method: the goldfeather fit without row weights, the paper's normalisation, "
+                  "untrimmed sigma (refused beside a --curvature, --weighting, --normalize or --trim that differs)");
     add(sub, "--curvature", o.curvature, "mean curvature estimator: " + choices<CurvatureMethod>(),
         to_string(defaults.curvature.method));
     add(sub, "--weighting", o.weighting,
@@ -180,7 +184,7 @@ void add_profile_options(CLI::App* sub, ProfileCliOptions& o, bool with_radii, b
 
 ProfileOptions to_profile_options(const ProfileCliOptions& o, ProfileOptions defaults)
 {
-    ProfileOptions p = std::move(defaults);
+    ProfileOptions p = o.paper ? paper_profile_options(std::move(defaults)) : std::move(defaults);
     if (o.levels.given()) p.levels = parse_levels(o.levels.text);
     if (o.radii.given()) p.radii = parse_radii(o.radii.text);
     p.global = !o.no_global;

@@ -36,6 +36,7 @@ struct ProfileCliOptions
     Given levels, radii, curvature, weighting, measure, normalize, trim, bootstrap, bootstrap_seed;
     bool no_global = false;
     bool unbiased_variance = false;
+    bool paper = false;
 };
 //! \param with_radii also offer --radii (not for smooth, whose records hold ring levels only)
 //! \param with_measure also offer --measure and --unbiased-variance (not for smooth)

@@ -81,6 +81,18 @@ def bootstrap_options():
     ]
 
 
+# --paper (issue 29): the paper's exact method, one flag away; a flag beside it that contradicts it is refused.
+def paper_option():
+    return Option("--paper", "paper", [
+        ok(["--paper", "--levels", "1,2"], dict(paper=True, levels=[1, 2])),
+        ok(["--paper", "--curvature", "goldfeather", "--levels", "1"],
+           dict(paper=True, curvature="goldfeather", levels=[1]), "the paper's own estimator beside it"),
+        value(["--paper", "--curvature", "jet"], dict(paper=True, curvature="jet")),
+        value(["--paper", "--trim", "0.1"], dict(paper=True, trim=0.1)),
+        type_(["--paper=maybe"], dict(paper="maybe")),
+    ])
+
+
 NOT_IN_BATCH_FILE = "a file per comparison: batch writes one JSON line per pair (--out) and maps with --maps-dir"
 
 # Options of `meshdiff compare` (and of `meshdiff batch`, which passes them to each pair).
@@ -134,6 +146,7 @@ COMPARE = [
         type_(["--trim", "x"], dict(trim="x")),
     ]),
     *bootstrap_options(),
+    paper_option(),
     Option("--local-trim", "local_trim", [
         ok(["--local-trim", "0"], dict(local_trim=0.0)),
         ok(["--local-trim", "0.2", "--levels", "1"], dict(local_trim=0.2, levels=[1])),
@@ -323,6 +336,7 @@ PROFILE = [
         value(["--measure", "corsini", "--radii", "0.1"], dict(measure="corsini", radii=[0.1])),
     ]),
     *bootstrap_options(),
+    paper_option(),
     Option("--unbiased-variance", "unbiased_variance", [
         ok(["--measure", "corsini", "--unbiased-variance"], dict(measure="corsini", unbiased_variance=True)),
         value(["--unbiased-variance"], dict(unbiased_variance=True)),
@@ -407,7 +421,7 @@ def test_every_option_is_in_the_table(cli):
     assert python_keywords(meshdiff.profile) == python_keywords(meshdiff.profile_file)
     passed = {o.flag for o in COMPARE if o.batch is True}
     assert cli_options(cli, "batch") == passed | set(BATCH_ONLY)
-    assert counts == {"compare": 40, "profile": 21}, counts  # the options covered, stated
+    assert counts == {"compare": 41, "profile": 22}, counts  # the options covered, stated
 
 
 CASES = [pytest.param("compare", o, c, id=f"compare {o.flag}: {c!r}") for o in COMPARE for c in o.cases] + [

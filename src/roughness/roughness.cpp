@@ -49,6 +49,31 @@ void validate(const ProfileOptions& options)
     if (options.bootstrap > kMaxBootstrap)
         throw OptionError("profile.bootstrap",
                           fmt::format("{} resamples is above the limit of {}", options.bootstrap, kMaxBootstrap));
+    if (options.paper) {
+        const ProfileOptions paper = paper_profile_options();
+        auto refuse = [](const char* field, const std::string& value) {
+            throw OptionError("profile.paper", fmt::format("is the paper's method (the goldfeather fit without row "
+                                                           "weights, the paper's normalisation, untrimmed sigma); "
+                                                           "{{{}}} {} contradicts it",
+                                                           field, value));
+        };
+        if (options.curvature.method != paper.curvature.method)
+            refuse("profile.curvature.method", to_string(options.curvature.method));
+        if (options.curvature.weighting != paper.curvature.weighting)
+            refuse("profile.curvature.weighting", to_string(options.curvature.weighting));
+        if (options.normalize != paper.normalize) refuse("profile.normalize", to_string(options.normalize));
+        if (options.trim != paper.trim) refuse("profile.trim", fmt::format("{:g}", options.trim));
+    }
+}
+
+ProfileOptions paper_profile_options(ProfileOptions base)
+{
+    base.paper = true;
+    base.curvature.method = CurvatureMethod::GoldfeatherCubic;
+    base.curvature.weighting = RowWeighting::None;
+    base.normalize = NormalizeMethod::Paper;
+    base.trim = 0.0;
+    return base;
 }
 
 LevelRoughness level_roughness(int level, const std::vector<double>& D, double outlier_fraction)

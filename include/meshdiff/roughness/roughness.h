@@ -78,6 +78,13 @@ struct ProfileOptions
     std::size_t bootstrap = 0;
     //! Seed of the resamples: the same seed, the same interval, at any thread count.
     std::uint64_t bootstrap_seed = 1;
+    //! The paper's exact method (Kushunapally et al. 2007): the
+    //! Goldfeather-Interrante cubic fit without row weights, the paper's
+    //! normalisation and sigma over all vertices. Set it with
+    //! paper_profile_options(); validate() refuses another estimator, a row
+    //! weighting, another normalisation or a trim beside it. Levels, radii,
+    //! the global level and the bootstrap stay free.
+    bool paper = false;
     //! Reports the stages (curvature, rings, metric levels) and stops the
     //! computation with Cancelled when it says so (progress.h); not owned.
     //! nullptr: the Progress of the calling thread's ProgressScope, if any.
@@ -140,6 +147,13 @@ struct RoughnessProfile
 //!        radius, no global), an unknown curvature method or weighting, or an
 //!        outlier_fraction outside (0, 1].
 void validate(const ProfileOptions& options);
+
+//! \p base with the paper's exact method (ProfileOptions::paper): paper set,
+//! the goldfeather fit, no row weighting, the paper's normalisation, no trim;
+//! every other field as in \p base. The front ends' `--paper` / `paper=True`
+//! start from it, so a flag given beside it that contradicts it is refused
+//! by validate().
+ProfileOptions paper_profile_options(ProfileOptions base = {});
 
 //! The roughness profile of \p mesh (any position and scale: it is
 //! normalised first).
