@@ -27,11 +27,25 @@ MeshFacts cloud_facts(const LoadedMesh& loaded)
     return f;
 }
 
-// Moves the per-vertex distances (and signed ones, if any) of c.distance to
-// the comparison's own fields.
+// The options of the surface distance that \p o asks for.
+DistanceOptions distance_options(const CompareOptions& o)
+{
+    DistanceOptions d;
+    d.sampling = o.sampling;
+    d.hausdorff = o.hausdorff;
+    d.summary = o.summary;
+    d.vertex_distances = o.vertex_distances;
+    d.keep_samples = o.keep_samples;
+    return d;
+}
+
+// Moves the per-vertex distances (and signed ones, if any) and the kept
+// samples of c.distance to the comparison's own fields.
 void take_vertex_distances(Comparison& c)
 {
     SurfaceDistance& d = *c.distance;
+    c.forward_samples = std::exchange(d.forward_samples, {});
+    c.backward_samples = std::exchange(d.backward_samples, {});
     c.processed_vertex_distance = std::exchange(d.b_vertex_distance, {});
     c.original_vertex_distance = std::exchange(d.a_vertex_distance, {});
     c.processed_vertex_signed_distance = std::exchange(d.b_vertex_signed_distance, {});
@@ -53,9 +67,7 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
     Comparison c;
     c.options = options;
     if (options.roughness) c.roughness_unavailable = which + " (no faces): roughness needs faces on both sides";
-    c.distance = cloud_surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff,
-                                        options.summary, options.keep_samples ? &c.forward_samples : nullptr,
-                                        options.keep_samples ? &c.backward_samples : nullptr);
+    c.distance = cloud_surface_distance(a.mesh, b.mesh, distance_options(options));
     take_vertex_distances(c);
     c.same_connectivity_unavailable = which + " (no faces)";
     c.original = cloud_a ? cloud_facts(a) : mesh_facts(a);
@@ -150,9 +162,7 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         sigma_half(c, a, b, options);
     }
     if (options.distance) {
-        c.distance = surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff,
-                                      options.summary, options.keep_samples ? &c.forward_samples : nullptr,
-                                      options.keep_samples ? &c.backward_samples : nullptr);
+        c.distance = surface_distance(a.mesh, b.mesh, distance_options(options));
         take_vertex_distances(c);
     } else if (options.vertex_distances) {
         c.processed_vertex_distance =

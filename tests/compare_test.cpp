@@ -167,7 +167,9 @@ TEST(CompareMeshes, EachPartEqualsItsFunctionRunSeparately)
         EXPECT_EQ(c.roughness->levels[k].relative_change, d.levels[k].relative_change);
     }
     EXPECT_EQ(c.roughness->global.distance, d.global.distance);
-    const SurfaceDistance s = surface_distance(sphere().mesh, irregular().mesh, o.sampling);
+    DistanceOptions distance;
+    distance.sampling = o.sampling;
+    const SurfaceDistance s = surface_distance(sphere().mesh, irregular().mesh, distance);
     expect_same_stats(c.distance->forward, s.forward);
     expect_same_stats(c.distance->backward, s.backward);
     EXPECT_EQ(c.distance->metro_diagonal, s.metro_diagonal);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 namespace meshdiff {
 
@@ -137,14 +138,18 @@ AreaWeightedStats point_weighted_stats(const std::vector<double>& distances, con
 
 }  // namespace
 
-SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options,
-                                       bool vertex_distances, const std::optional<HausdorffOptions>& certify,
-                                       const SummaryOptions& summary, SampledDirection* forward_samples,
-                                       SampledDirection* backward_samples)
+namespace {
+
+// cloud_surface_distance() when \p a or \p b is a cloud: both directions,
+// keeping the samples of the forward (backward) direction in
+// r.forward_samples (backward_samples) with \p keep_forward (\p keep_backward).
+SurfaceDistance both_with_clouds(const Mesh& a, const Mesh& b, const DistanceOptions& o, bool keep_forward,
+                                 bool keep_backward)
 {
+    const SamplingOptions& options = o.sampling;
+    const std::optional<HausdorffOptions>& certify = o.hausdorff;
+    const SummaryOptions& summary = o.summary;
     const bool cloud_a = a.faces.empty(), cloud_b = b.faces.empty();
-    if (!cloud_a && !cloud_b)
-        return surface_distance(a, b, options, vertex_distances, certify, summary, forward_samples, backward_samples);
     validate(options);
     validate(summary);
     if (certify) validate(*certify);
@@ -237,10 +242,10 @@ SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const Sampl
         if (keep) *keep = std::move(d);
     };
     SurfaceDistance r;
-    direction(a, b, r.forward, recall, forward_samples, vertex_distances ? &r.a_vertex_distance : nullptr,
-              r.forward_hausdorff);
-    direction(b, a, r.backward, precision, backward_samples, vertex_distances ? &r.b_vertex_distance : nullptr,
-              r.backward_hausdorff);
+    direction(a, b, r.forward, recall, keep_forward ? &r.forward_samples : nullptr,
+              o.vertex_distances ? &r.a_vertex_distance : nullptr, r.forward_hausdorff);
+    direction(b, a, r.backward, precision, keep_backward ? &r.backward_samples : nullptr,
+              o.vertex_distances ? &r.b_vertex_distance : nullptr, r.backward_hausdorff);
     r.hausdorff = std::max(r.forward.max, r.backward.max);
     r.diagonal = diagonal;
     r.metro_diagonal = metro_diagonal(a, b);
@@ -249,6 +254,28 @@ SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const Sampl
     r.forward_kind = distance_kind(cloud_a, cloud_b);
     r.backward_kind = distance_kind(cloud_b, cloud_a);
     return r;
+}
+
+}  // namespace
+
+SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options,
+                                       bool vertex_distances, const std::optional<HausdorffOptions>& certify,
+                                       const SummaryOptions& summary, SampledDirection* forward_samples,
+                                       SampledDirection* backward_samples)
+{
+    if (!a.faces.empty() && !b.faces.empty())
+        return surface_distance(a, b, options, vertex_distances, certify, summary, forward_samples, backward_samples);
+    const DistanceOptions o{options, certify, summary, vertex_distances, false};
+    SurfaceDistance r = both_with_clouds(a, b, o, forward_samples != nullptr, backward_samples != nullptr);
+    if (forward_samples) *forward_samples = std::exchange(r.forward_samples, {});
+    if (backward_samples) *backward_samples = std::exchange(r.backward_samples, {});
+    return r;
+}
+
+SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const DistanceOptions& options)
+{
+    if (!a.faces.empty() && !b.faces.empty()) return surface_distance(a, b, options);
+    return both_with_clouds(a, b, options, options.keep_samples, options.keep_samples);
 }
 
 }  // namespace meshdiff

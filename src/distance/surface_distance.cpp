@@ -307,16 +307,18 @@ HausdorffSeed seed_of(const Mesh& from, const DistanceStats& s)
 }
 
 // surface_distance() and surface_distance_samples(): both directions, keeping
-// the samples in \p forward and \p backward when they are given.
-// Without them, the samples are made and queried \p chunk at a time (chunked_direction()).
-SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
-                                SampledDirection* forward, SampledDirection* backward,
-                                const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
-                                std::size_t chunk = detail::kSampleChunk)
+// the samples of the forward (backward) direction in r.forward_samples
+// (backward_samples) with \p keep_forward (\p keep_backward). Without it, the
+// samples are made and queried \p chunk at a time (chunked_direction()).
+SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const DistanceOptions& o, bool keep_forward,
+                                bool keep_backward, std::size_t chunk = detail::kSampleChunk)
 {
     if (chunk == 0 || chunk % detail::kQueryBlock != 0)
         throw InvalidArgumentError(fmt::format("surface_distance: chunk of {} samples, not a positive multiple of {}",
                                                chunk, detail::kQueryBlock));
+    const SamplingOptions& options = o.sampling;
+    const std::optional<HausdorffOptions>& certify = o.hausdorff;
+    const SummaryOptions& summary = o.summary;
     validate(options);
     validate(summary);
     if (certify) validate(*certify);
@@ -391,10 +393,10 @@ SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOpti
         if (certify) certified = detail::certified_hausdorff(from, to, index, *certify, seed_of(from, stats), vq);
     };
     SurfaceDistance r;
-    direction(a, b, "the processed mesh", r.forward, recall, forward,
-              b_vertex_distances ? &r.a_vertex_distance : nullptr, &r.a_vertex_signed_distance, r.forward_hausdorff);
-    direction(b, a, "the original mesh", r.backward, precision, backward,
-              b_vertex_distances ? &r.b_vertex_distance : nullptr, &r.b_vertex_signed_distance, r.backward_hausdorff);
+    direction(a, b, "the processed mesh", r.forward, recall, keep_forward ? &r.forward_samples : nullptr,
+              o.vertex_distances ? &r.a_vertex_distance : nullptr, &r.a_vertex_signed_distance, r.forward_hausdorff);
+    direction(b, a, "the original mesh", r.backward, precision, keep_backward ? &r.backward_samples : nullptr,
+              o.vertex_distances ? &r.b_vertex_distance : nullptr, &r.b_vertex_signed_distance, r.backward_hausdorff);
     r.hausdorff = std::max(r.forward.max, r.backward.max);
     r.diagonal = diagonal;
     r.metro_diagonal = metro_diagonal(a, b);
@@ -413,22 +415,27 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
     return distance_stats(d.samples, d.distances);
 }
 
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const DistanceOptions& options)
+{
+    return both_directions(a, b, options, options.keep_samples, options.keep_samples);
+}
+
 SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
                                  const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
                                  SampledDirection* forward_samples, SampledDirection* backward_samples)
 {
-    return both_directions(a, b, options, b_vertex_distances, forward_samples, backward_samples, certify, summary);
+    const DistanceOptions o{options, certify, summary, b_vertex_distances, false};
+    SurfaceDistance r = both_directions(a, b, o, forward_samples != nullptr, backward_samples != nullptr);
+    if (forward_samples) *forward_samples = std::exchange(r.forward_samples, {});
+    if (backward_samples) *backward_samples = std::exchange(r.backward_samples, {});
+    return r;
 }
 
 namespace detail {
 
-SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
-                                 const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
-                                 SampledDirection* forward_samples, SampledDirection* backward_samples,
-                                 std::size_t chunk)
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const DistanceOptions& options, std::size_t chunk)
 {
-    return both_directions(a, b, options, b_vertex_distances, forward_samples, backward_samples, certify, summary,
-                           chunk);
+    return both_directions(a, b, options, options.keep_samples, options.keep_samples, chunk);
 }
 
 }  // namespace detail
@@ -436,8 +443,14 @@ SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOpt
 SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options,
                                                 const SummaryOptions& summary)
 {
+    DistanceOptions o;
+    o.sampling = options;
+    o.summary = summary;
+    o.keep_samples = true;
     SampledSurfaceDistance r;
-    r.distance = both_directions(a, b, options, false, &r.forward, &r.backward, std::nullopt, summary);
+    r.distance = surface_distance(a, b, o);
+    r.forward = std::exchange(r.distance.forward_samples, {});
+    r.backward = std::exchange(r.distance.backward_samples, {});
     return r;
 }
 
