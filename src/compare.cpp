@@ -39,17 +39,14 @@ DistanceOptions distance_options(const CompareOptions& o)
     return d;
 }
 
-// Moves the per-vertex distances (and signed ones, if any) and the kept
-// samples of c.distance to the comparison's own fields.
-void take_vertex_distances(Comparison& c)
+// The surface distance asked for in \p options; its per-vertex distances and
+// kept samples moved to \p c's own.
+void set_distance(Comparison& c, SurfaceDistance d)
 {
-    SurfaceDistance& d = *c.distance;
+    static_cast<VertexDistances&>(c) = std::exchange(static_cast<VertexDistances&>(d), {});
     c.forward_samples = std::exchange(d.forward_samples, {});
     c.backward_samples = std::exchange(d.backward_samples, {});
-    c.processed_vertex_distance = std::exchange(d.b_vertex_distance, {});
-    c.original_vertex_distance = std::exchange(d.a_vertex_distance, {});
-    c.processed_vertex_signed_distance = std::exchange(d.b_vertex_signed_distance, {});
-    c.original_vertex_signed_distance = std::exchange(d.a_vertex_signed_distance, {});
+    c.distance = std::move(d);
 }
 
 // compare_meshes() when \p a or \p b is a point cloud (options checked).
@@ -67,8 +64,7 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
     Comparison c;
     c.options = options;
     if (options.roughness) c.roughness_unavailable = which + " (no faces): roughness needs faces on both sides";
-    c.distance = cloud_surface_distance(a.mesh, b.mesh, distance_options(options));
-    take_vertex_distances(c);
+    set_distance(c, cloud_surface_distance(a.mesh, b.mesh, distance_options(options)));
     c.same_connectivity_unavailable = which + " (no faces)";
     c.original = cloud_a ? cloud_facts(a) : mesh_facts(a);
     c.processed = cloud_b ? cloud_facts(b) : mesh_facts(b);
@@ -162,8 +158,7 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         sigma_half(c, a, b, options);
     }
     if (options.distance) {
-        c.distance = surface_distance(a.mesh, b.mesh, distance_options(options));
-        take_vertex_distances(c);
+        set_distance(c, surface_distance(a.mesh, b.mesh, distance_options(options)));
     } else if (options.vertex_distances) {
         c.processed_vertex_distance =
             vertex_distances(b.mesh, a.mesh, ClosestPointIndex(a.mesh), c.processed_vertex_signed_distance);

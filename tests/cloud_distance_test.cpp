@@ -182,12 +182,12 @@ TEST(CloudSurfaceDistance, CloudToPlaneMatchesClosedForm)
     EXPECT_EQ(d.backward.n_point, 0u);
     EXPECT_GT(d.backward.n_face, 0u);  // the default budget counts the 5 points: 50 samples
     // Per-vertex (point) distances: the points' own distances, and the square's corners to the cloud.
-    ASSERT_EQ(d.a_vertex_distance.size(), 5u);
-    for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(d.a_vertex_distance[i], fwd.distances[i]);
-    ASSERT_EQ(d.b_vertex_distance.size(), 4u);
+    ASSERT_EQ(d.original_vertex_distance.size(), 5u);
+    for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(d.original_vertex_distance[i], fwd.distances[i]);
+    ASSERT_EQ(d.processed_vertex_distance.size(), 4u);
     const Mesh sq = unit_square();
     for (std::size_t v = 0; v < 4; ++v)
-        EXPECT_DOUBLE_EQ(d.b_vertex_distance[v], brute_nearest(sq.points[v], cloud.points));
+        EXPECT_DOUBLE_EQ(d.processed_vertex_distance[v], brute_nearest(sq.points[v], cloud.points));
 }
 
 TEST(CloudSurfaceDistance, RandomCloudToPlaneEveryPoint)

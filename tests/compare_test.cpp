@@ -187,8 +187,8 @@ TEST(CompareMeshes, VertexDistancesCoverEveryProcessedVertex)
     const Comparison c = compare_meshes(sphere(), irregular(), o);
     ASSERT_EQ(c.processed_vertex_distance.size(), irregular().mesh.n_vertices());
     const double largest = *std::max_element(c.processed_vertex_distance.begin(), c.processed_vertex_distance.end());
-    EXPECT_LE(largest, c.distance->backward.max);        // vertices are among the backward samples
-    EXPECT_TRUE(c.distance->b_vertex_distance.empty());  // moved out, not copied
+    EXPECT_LE(largest, c.distance->backward.max);                // vertices are among the backward samples
+    EXPECT_TRUE(c.distance->processed_vertex_distance.empty());  // moved out, not copied
 }
 
 TEST(CompareMeshes, IdenticalForOneAndTwoThreads)

@@ -327,7 +327,7 @@ TEST(SurfaceDistance, SamplesGiveTheSameStatisticsBitForBit)
         EXPECT_TRUE(same_bits(plain.hausdorff, kept.distance.hausdorff));
         EXPECT_TRUE(same_bits(plain.diagonal, kept.distance.diagonal));
         EXPECT_TRUE(same_bits(plain.metro_diagonal, kept.distance.metro_diagonal));
-        EXPECT_TRUE(kept.distance.b_vertex_distance.empty());
+        EXPECT_TRUE(kept.distance.processed_vertex_distance.empty());
         // The kept samples and distances are those the statistics came from.
         for (const auto* d : {&kept.forward, &kept.backward}) {
             ASSERT_EQ(d->distances.size(), d->samples.size());
@@ -734,16 +734,20 @@ TEST(SurfaceDistance, ChunkedSamplesGiveTheKeptSamplesStatisticsBitForBit)
                 const SurfaceDistance chunked = detail::surface_distance(*c.a, *c.b, options, chunk);
                 expect_every_bit(kept, chunked);
                 EXPECT_TRUE(chunked.forward_samples.samples.points.empty());
-                expect_same_vector(kept.a_vertex_distance, chunked.a_vertex_distance);
-                expect_same_vector(kept.b_vertex_signed_distance, chunked.b_vertex_signed_distance);
+                expect_same_vector(kept.original_vertex_distance, chunked.original_vertex_distance);
+                expect_same_vector(kept.processed_vertex_signed_distance, chunked.processed_vertex_signed_distance);
             }
             // The public call (default chunks) too.
             expect_every_bit(kept, surface_distance(*c.a, *c.b, distance_options(o, cert, so)));
             // And the deprecated positional overload (0.2), its kept samples
             // in the pointers given.
             SampledDirection fk;
-            expect_every_bit(kept, surface_distance(*c.a, *c.b, o, true, cert, so, &fk));
+            const SurfaceDistance old = surface_distance(*c.a, *c.b, o, true, cert, so, &fk);
+            expect_every_bit(kept, old);
             expect_same_vector(kept.forward_samples.distances, fk.distances);
+            expect_same_vector(kept.processed_vertex_distance, old.b_vertex_distance);  // the 0.2 names
+            expect_same_vector(kept.original_vertex_signed_distance, old.a_vertex_signed_distance);
+            EXPECT_TRUE(old.processed_vertex_distance.empty());
         }
     EXPECT_THROW(detail::surface_distance(coarse, fine, distance_options({}, std::nullopt, so), 1000),
                  InvalidArgumentError);

@@ -89,9 +89,9 @@ SurfaceSamples cloud_samples(const Mesh& cloud);
 //! surface_distance() where \p a, \p b or both may be point clouds (no faces);
 //! the same options and result fields, with the conventions of the file
 //! comment. For a cloud direction, DistanceStats::n_point counts its points.
-//! With options.vertex_distances, a_vertex_distance (b_vertex_distance) holds
-//! per vertex (point) of A (B) its distance to the other side, as the
-//! direction measures it. With options.hausdorff, a cloud-sampled direction
+//! With options.vertex_distances, original_vertex_distance
+//! (processed_vertex_distance) holds per vertex (point) of A (B) its distance
+//! to the other side, as the direction measures it. With options.hausdorff, a cloud-sampled direction
 //! gets its exact maximum as a certified interval [max, max] (location.face:
 //! the point's index; location.closest_face: the face of a mesh target, or the
 //! index of the nearest point of a cloud target); a mesh sampled against a

@@ -50,8 +50,26 @@ struct SampledDirection
     std::vector<double> signed_distances;
 };
 
-//! Result of surface_distance().
-struct SurfaceDistance
+//! The per-vertex distance maps of a comparison: every vertex (unreferenced
+//! ones included, in vertex order) of the original mesh A and of the processed
+//! mesh B with its exact distance to the other surface, and the signed
+//! distances (signed_distance.h: positive outside) where the other surface can
+//! be signed against (else empty). SurfaceDistance and Comparison (compare.h)
+//! both hold them, under these names.
+struct VertexDistances
+{
+    //! Per vertex of the processed mesh B, its distance to the original surface.
+    std::vector<double> processed_vertex_distance;
+    //! Per vertex of the original mesh A, its distance to the processed surface.
+    std::vector<double> original_vertex_distance;
+    std::vector<double> processed_vertex_signed_distance;  //!< signed processed_vertex_distance
+    std::vector<double> original_vertex_signed_distance;   //!< signed original_vertex_distance
+};
+
+//! Result of surface_distance(). With DistanceOptions::vertex_distances, the
+//! VertexDistances are filled, from the indexes the two directions build (of
+//! B forward, of A backward).
+struct SurfaceDistance : VertexDistances
 {
     DistanceStats forward;   //!< A -> B: samples on A
     DistanceStats backward;  //!< B -> A: samples on B
@@ -66,15 +84,13 @@ struct SurfaceDistance
     //! that lower >= forward.max (backward.max).
     std::optional<CertifiedHausdorff> forward_hausdorff;
     std::optional<CertifiedHausdorff> backward_hausdorff;
-    //! Only when asked for: the exact distance of every vertex of B (unreferenced
-    //! ones included) to the surface of A, in vertex order, from the index of A
-    //! that the backward direction built (a per-vertex distance map of B).
+    //! Deprecated, removed in 0.3: the 0.2 names of the VertexDistances
+    //! (b_vertex_distance: processed_vertex_distance, a_vertex_distance:
+    //! original_vertex_distance, and the signed pair), filled instead of them
+    //! by the deprecated positional overloads of surface_distance() and
+    //! cloud_surface_distance() only.
     std::vector<double> b_vertex_distance;
-    //! Asked for with b_vertex_distance: the same for every vertex of A to the
-    //! surface of B, from the forward direction's index of B.
     std::vector<double> a_vertex_distance;
-    //! With them, the signed distances (signed_distance.h: positive outside)
-    //! where the other mesh can be signed against; else empty.
     std::vector<double> b_vertex_signed_distance;
     std::vector<double> a_vertex_signed_distance;
     //! Chamfer and PSNR; std::nullopt (with summary_unavailable saying why)
@@ -111,8 +127,8 @@ struct DistanceOptions
     SummaryOptions summary{};
     //! Also the exact distance of every vertex of each mesh to the other
     //! surface, and the signed ones where the other can be signed against
-    //! (SurfaceDistance::a_vertex_distance, b_vertex_distance and the signed
-    //! pair), from the indexes the directions build.
+    //! (the VertexDistances of the result), from the indexes the directions
+    //! build.
     bool vertex_distances = false;
     //! Keep the samples of both directions and their distances
     //! (SurfaceDistance::forward_samples, backward_samples; about 50 bytes per
@@ -153,7 +169,9 @@ SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const DistanceOpt
 
 //! Deprecated, removed in 0.3: surface_distance(a, b, DistanceOptions), with
 //! \p options, \p certify, \p summary and \p b_vertex_distances as the
-//! fields sampling, hausdorff, summary and vertex_distances. With
+//! fields sampling, hausdorff, summary and vertex_distances. The per-vertex
+//! distances are returned under their 0.2 names (SurfaceDistance::
+//! a_vertex_distance, b_vertex_distance and the signed pair). With
 //! \p forward_samples (\p backward_samples), the samples of that direction
 //! and their distances are kept there (SurfaceDistance::forward_samples and
 //! backward_samples stay empty). The results are the same bit for bit.
@@ -168,7 +186,7 @@ SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOpt
 //! (for histograms, per-kind statistics or plots of one's own).
 struct SampledSurfaceDistance
 {
-    SurfaceDistance distance;   //!< as surface_distance() returns it (no b_vertex_distance)
+    SurfaceDistance distance;   //!< as surface_distance() returns it (no vertex distances)
     SampledDirection forward;   //!< samples on A, distances to B
     SampledDirection backward;  //!< samples on B, distances to A
 };
