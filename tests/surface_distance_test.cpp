@@ -752,3 +752,30 @@ TEST(SurfaceDistance, ChunkedSamplesGiveTheKeptSamplesStatisticsBitForBit)
     EXPECT_THROW(detail::surface_distance(coarse, fine, distance_options({}, std::nullopt, so), 1000),
                  InvalidArgumentError);
 }
+
+TEST(SurfaceDistance, CallerBuiltIndexesGiveTheSameResultsBitForBit)
+{
+    const Mesh coarse = icosphere(0).mesh;
+    const Mesh fine = icosphere(2, 1.05).mesh;
+    SummaryOptions so;
+    so.fscore_thresholds = {0.01, 0.05};
+    so.histogram_bins = 5;
+    HausdorffOptions certify;
+    certify.relative_tolerance = 1e-3;
+    for (const bool keep : {false, true}) {
+        DistanceOptions o = distance_options({}, certify, so);
+        o.vertex_distances = true;
+        o.keep_samples = keep;
+        const SurfaceDistance own = surface_distance(coarse, fine, o);
+        const ClosestPointIndex ia(coarse), ib(fine);
+        o.index_a = &ia;
+        o.index_b = &ib;
+        const SurfaceDistance given = surface_distance(coarse, fine, o);
+        expect_every_bit(own, given);
+        expect_same_vector(own.original_vertex_distance, given.original_vertex_distance);
+        expect_same_vector(own.processed_vertex_signed_distance, given.processed_vertex_signed_distance);
+        expect_same_vector(own.forward_samples.distances, given.forward_samples.distances);
+        o.index_a = &ib;  // an index of the other mesh
+        EXPECT_THROW(surface_distance(coarse, fine, o), InvalidArgumentError);
+    }
+}

@@ -193,7 +193,11 @@ SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const Sampl
                                        const SummaryOptions& summary, SampledDirection* forward_samples,
                                        SampledDirection* backward_samples)
 {
-    const DistanceOptions o{options, certify, summary, vertex_distances, false};
+    DistanceOptions o;
+    o.sampling = options;
+    o.hausdorff = certify;
+    o.summary = summary;
+    o.vertex_distances = vertex_distances;
     return detail::deprecated_result(
         detail::two_directions(a, b, o, forward_samples != nullptr, backward_samples != nullptr, true), forward_samples,
         backward_samples);

@@ -291,23 +291,6 @@ std::vector<double> apply_signs(const std::vector<double>& distances, const std:
     return s;
 }
 
-// The seed of a certified Hausdorff distance: the sampled maximum of \p s,
-// on a face of \p from (for a vertex sample, the lowest-index face using it).
-HausdorffSeed seed_of(const Mesh& from, const DistanceStats& s)
-{
-    HausdorffSeed seed{s.max_point, s.max_element, s.max};
-    if (s.max_kind == SampleKind::OnVertex) {
-        for (std::size_t f = 0; f < from.n_faces(); ++f) {
-            const Face& t = from.faces[f];
-            if (std::find(t.begin(), t.end(), int(s.max_element)) != t.end()) {
-                seed.face = std::uint32_t(f);
-                break;
-            }
-        }
-    }
-    return seed;
-}
-
 // What two_directions() asks of one direction: the samples of `from` (a
 // mesh's samples or a cloud's points) and their distances to `to`.
 struct DirectionTask
@@ -322,6 +305,7 @@ struct DirectionTask
     const std::vector<double>& thresholds;  // the F-score thresholds, absolute
     bool keep;                              // keep the samples
     std::size_t chunk;                      // samples made and queried at a time when not kept
+    const ClosestPointIndex* index;         // of `to`, built by the caller; null: build one
 };
 
 // What one direction gives back.
@@ -338,11 +322,25 @@ struct DirectionResult
 // when it can be signed against and the samples are a mesh's, or of a cloud.
 struct DirectionTarget
 {
-    std::optional<ClosestPointIndex> index;
+    std::optional<ClosestPointIndex> own;      // built here
+    const ClosestPointIndex* index = nullptr;  // own or the caller's
     std::optional<PointCloudIndex> cloud;
     std::optional<PseudoNormals> normals;
     std::string unsigned_reason;  // why there is no sign
 };
+
+// The index of the mesh t.to: the caller's (its face count checked), or built.
+void build_index(const DirectionTask& t, DirectionTarget& g)
+{
+    if (!t.index) {
+        g.index = &g.own.emplace(t.to);
+        return;
+    }
+    if (t.index->n_faces() != t.to.n_faces())
+        throw InvalidArgumentError(fmt::format("DistanceOptions: the index given for {} has {} faces, the mesh has {}",
+                                               t.to_name, t.index->n_faces(), t.to.n_faces()));
+    g.index = t.index;
+}
 
 void make_target(const DirectionTask& t, DirectionTarget& g)
 {
@@ -352,16 +350,17 @@ void make_target(const DirectionTask& t, DirectionTarget& g)
     } else if (t.from_cloud) {
         // A cloud's points against a mesh are left unsigned (the sign needs
         // the closest feature, not computed for them).
-        g.index.emplace(t.to);
+        build_index(t, g);
         g.unsigned_reason =
             "the samples are the points of a cloud: signed distances are computed for mesh samples only";
     } else {
         // The sign (signed_distance.h): from the closest faces of the same
         // queries. The pseudo-normals (serial) are made on another thread
         // while the index is built.
-        auto made_normals = std::async(omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred,
-                                       [&] { return pseudo_normals(t.to, t.to_name, &g.unsigned_reason); });
-        g.index.emplace(t.to);
+        auto made_normals =
+            std::async(omp_get_max_threads() > 1 && !t.index ? std::launch::async : std::launch::deferred,
+                       [&] { return pseudo_normals(t.to, t.to_name, &g.unsigned_reason); });
+        build_index(t, g);
         g.normals = made_normals.get();
     }
 }
@@ -420,8 +419,7 @@ DirectionResult one_direction(const DirectionTask& t)
                 r.stats.signed_distance = signed_distance_stats(d.signed_distances);
             }
         } else {
-            d = detail::cloud_direction(t.from, t.from_cloud, g.index ? &*g.index : nullptr,
-                                        g.cloud ? &*g.cloud : nullptr, t.sampling);
+            d = detail::cloud_direction(t.from, t.from_cloud, g.index, g.cloud ? &*g.cloud : nullptr, t.sampling);
             r.stats = distance_stats(d.samples, d.distances);
         }
         if (t.from_cloud) {
@@ -446,10 +444,11 @@ DirectionResult one_direction(const DirectionTask& t)
     }
     g.normals.reset();  // free the pseudo-normals before the certification
     if (o.hausdorff && meshes)
-        r.certified = detail::certified_hausdorff(t.from, t.to, *g.index, *o.hausdorff, seed_of(t.from, r.stats), vq);
+        r.certified =
+            detail::certified_hausdorff(t.from, t.to, *g.index, *o.hausdorff, detail::seed_of(t.from, r.stats), vq);
     else if (o.hausdorff && t.from_cloud)
-        r.certified = detail::exact_over_points(t.to, g.index ? &*g.index : nullptr, g.cloud ? &*g.cloud : nullptr,
-                                                r.stats, t.from.points.size());
+        r.certified =
+            detail::exact_over_points(t.to, g.index, g.cloud ? &*g.cloud : nullptr, r.stats, t.from.points.size());
     return r;
 }
 
@@ -495,15 +494,15 @@ SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const Dista
     for (double t : options.summary.fscore_thresholds) thresholds.push_back(t * diagonal);
 
     SurfaceDistance r;
-    DirectionResult f = one_direction(
-        {a, b, cloud_a, cloud_b, "the processed mesh", options, sampling, thresholds, keep_forward, chunk});
+    DirectionResult f = one_direction({a, b, cloud_a, cloud_b, "the processed mesh", options, sampling, thresholds,
+                                       keep_forward, chunk, cloud_b ? nullptr : options.index_b});
     r.forward = std::move(f.stats);
     r.forward_samples = std::move(f.samples);
     r.original_vertex_distance = std::move(f.vertex_distance);
     r.original_vertex_signed_distance = std::move(f.vertex_signed_distance);
     r.forward_hausdorff = std::move(f.certified);
-    DirectionResult k = one_direction(
-        {b, a, cloud_b, cloud_a, "the original mesh", options, sampling, thresholds, keep_backward, chunk});
+    DirectionResult k = one_direction({b, a, cloud_b, cloud_a, "the original mesh", options, sampling, thresholds,
+                                       keep_backward, chunk, cloud_a ? nullptr : options.index_a});
     r.backward = std::move(k.stats);
     r.backward_samples = std::move(k.samples);
     r.processed_vertex_distance = std::move(k.vertex_distance);
@@ -529,7 +528,11 @@ SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOpt
                                  const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
                                  SampledDirection* forward_samples, SampledDirection* backward_samples)
 {
-    const DistanceOptions o{options, certify, summary, b_vertex_distances, false};
+    DistanceOptions o;
+    o.sampling = options;
+    o.hausdorff = certify;
+    o.summary = summary;
+    o.vertex_distances = b_vertex_distances;
     return detail::deprecated_result(
         detail::two_directions(a, b, o, forward_samples != nullptr, backward_samples != nullptr, false),
         forward_samples, backward_samples);

@@ -137,12 +137,16 @@ struct DistanceOptions
     //! (8 bytes per sample, for the percentiles); the statistics are the same
     //! bit for bit.
     bool keep_samples = false;
-    // Room for caller-built indexes: each direction builds the index of its
-    // target (ClosestPointIndex of B forward, of A backward; a PointCloudIndex
-    // for a cloud) and drops it at the end of the direction. Fields such as
-    // `const ClosestPointIndex* index_a = nullptr` (and index_b) would let a
-    // caller that keeps its indexes (Python's DistanceIndex) hand them in;
-    // the direction then uses them instead of building its own.
+    //! Indexes of A and of B that the caller built (ClosestPointIndex(a),
+    //! ClosestPointIndex(b)) and keeps, e.g. to measure one mesh against
+    //! several others: the backward direction measures to A, the forward one
+    //! to B; nullptr (the default): the direction builds the index of its
+    //! mesh and drops it at its end. Each must index that very mesh (its face
+    //! count is checked) and outlive the call; the results are the same bit
+    //! for bit. Not used for a point cloud (cloud_distance.h), which gets its
+    //! own k-d tree.
+    const ClosestPointIndex* index_a = nullptr;
+    const ClosestPointIndex* index_b = nullptr;
 };
 
 //! The Chamfer distances and PSNR of \p d from its directions'
