@@ -118,11 +118,13 @@ void run_case(const std::string& label, const Mesh& a, const Mesh& b, int runs,
     fmt::print("{}: A {} vertices {} faces, B {} vertices {} faces, threads {}\n", label, a.n_vertices(), a.n_faces(),
                b.n_vertices(), b.n_faces(), omp_get_max_threads());
     std::vector<double> times, cpu;
+    meshdiff::DistanceOptions distance_options;
+    distance_options.sampling = options;
     meshdiff::SurfaceDistance r;
     for (int k = 0; k < runs; ++k) {
         const double c0 = cpu_seconds();
         const auto t0 = std::chrono::steady_clock::now();
-        r = meshdiff::surface_distance(a, b, options);
+        r = meshdiff::surface_distance(a, b, distance_options);
         const auto t1 = std::chrono::steady_clock::now();
         times.push_back(std::chrono::duration<double>(t1 - t0).count());
         cpu.push_back(cpu_seconds() - c0);

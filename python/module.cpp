@@ -209,22 +209,22 @@ py::dict py_surface_distance(const ArrayLike& V1, const ArrayLike& F1, const Arr
         surface_distance_hausdorff(hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance, hausdorff_budget);
     const LoadedMesh a = mesh_from(V1, F1, "V1", "F1");
     const LoadedMesh b = mesh_from(V2, F2, "V2", "F2");
-    SampledSurfaceDistance r;
+    DistanceOptions options;
+    options.sampling = o;
+    options.hausdorff = certify;
+    options.keep_samples = with_samples;
+    SurfaceDistance r;
     nlohmann::json j;
     {
         ThreadScope scope(threads);
         py::gil_scoped_release release;
-        if (with_samples && !certify)
-            r = surface_distance_samples(a.mesh, b.mesh, o);
-        else
-            r.distance = surface_distance(a.mesh, b.mesh, o, false, certify, {}, with_samples ? &r.forward : nullptr,
-                                          with_samples ? &r.backward : nullptr);
-        j = surface_distance_json(r.distance, o);
+        r = surface_distance(a.mesh, b.mesh, options);
+        j = surface_distance_json(r, o);
     }
     if (!with_samples) return to_python(j);
     py::dict out = to_python(j);
-    out["forward"] = direction_dict(j["forward"], r.forward);
-    out["backward"] = direction_dict(j["backward"], r.backward);
+    out["forward"] = direction_dict(j["forward"], r.forward_samples);
+    out["backward"] = direction_dict(j["backward"], r.backward_samples);
     return out;
 }
 

@@ -27,15 +27,26 @@ MeshFacts cloud_facts(const LoadedMesh& loaded)
     return f;
 }
 
-// Moves the per-vertex distances (and signed ones, if any) of c.distance to
-// the comparison's own fields.
-void take_vertex_distances(Comparison& c)
+// The options of the surface distance that \p o asks for.
+DistanceOptions distance_options(const CompareOptions& o)
 {
-    SurfaceDistance& d = *c.distance;
-    c.processed_vertex_distance = std::exchange(d.b_vertex_distance, {});
-    c.original_vertex_distance = std::exchange(d.a_vertex_distance, {});
-    c.processed_vertex_signed_distance = std::exchange(d.b_vertex_signed_distance, {});
-    c.original_vertex_signed_distance = std::exchange(d.a_vertex_signed_distance, {});
+    DistanceOptions d;
+    d.sampling = o.sampling;
+    d.hausdorff = o.hausdorff;
+    d.summary = o.summary;
+    d.vertex_distances = o.vertex_distances;
+    d.keep_samples = o.keep_samples;
+    return d;
+}
+
+// The surface distance asked for in \p options; its per-vertex distances and
+// kept samples moved to \p c's own.
+void set_distance(Comparison& c, SurfaceDistance d)
+{
+    static_cast<VertexDistances&>(c) = std::exchange(static_cast<VertexDistances&>(d), {});
+    c.forward_samples = std::exchange(d.forward_samples, {});
+    c.backward_samples = std::exchange(d.backward_samples, {});
+    c.distance = std::move(d);
 }
 
 // compare_meshes() when \p a or \p b is a point cloud (options checked).
@@ -53,10 +64,7 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
     Comparison c;
     c.options = options;
     if (options.roughness) c.roughness_unavailable = which + " (no faces): roughness needs faces on both sides";
-    c.distance = cloud_surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff,
-                                        options.summary, options.keep_samples ? &c.forward_samples : nullptr,
-                                        options.keep_samples ? &c.backward_samples : nullptr);
-    take_vertex_distances(c);
+    set_distance(c, cloud_surface_distance(a.mesh, b.mesh, distance_options(options)));
     c.same_connectivity_unavailable = which + " (no faces)";
     c.original = cloud_a ? cloud_facts(a) : mesh_facts(a);
     c.processed = cloud_b ? cloud_facts(b) : mesh_facts(b);
@@ -150,10 +158,7 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         sigma_half(c, a, b, options);
     }
     if (options.distance) {
-        c.distance = surface_distance(a.mesh, b.mesh, options.sampling, options.vertex_distances, options.hausdorff,
-                                      options.summary, options.keep_samples ? &c.forward_samples : nullptr,
-                                      options.keep_samples ? &c.backward_samples : nullptr);
-        take_vertex_distances(c);
+        set_distance(c, surface_distance(a.mesh, b.mesh, distance_options(options)));
     } else if (options.vertex_distances) {
         c.processed_vertex_distance =
             vertex_distances(b.mesh, a.mesh, ClosestPointIndex(a.mesh), c.processed_vertex_signed_distance);

@@ -140,9 +140,12 @@ TEST(CloudSurfaceDistance, CloudToPlaneMatchesClosedForm)
     // Above, below, in and beside the square: distances 0.5, 0.25, 0, 1, 0.5 (corner: sqrt(0.5^2 + 0^2 + 0)).
     cloud.points = {Vec3(0.25, 0.25, 0.5), Vec3(0.75, 0.5, -0.25), Vec3(0.5, 0.5, 0.0), Vec3(2.0, 0.5, 0.0),
                     Vec3(1.3, 1.4, 0.0)};
-    SampledDirection fwd, bwd;
-    const SurfaceDistance d =
-        cloud_surface_distance(cloud, unit_square(), {}, true, HausdorffOptions{}, {}, &fwd, &bwd);
+    DistanceOptions o;
+    o.vertex_distances = true;
+    o.hausdorff = HausdorffOptions{};
+    o.keep_samples = true;
+    const SurfaceDistance d = cloud_surface_distance(cloud, unit_square(), o);
+    const SampledDirection &fwd = d.forward_samples, &bwd = d.backward_samples;
     const double want[] = {0.5, 0.25, 0.0, 1.0, 0.5};
     ASSERT_EQ(fwd.distances.size(), 5u);
     double sum = 0.0, sum2 = 0.0;
@@ -179,12 +182,12 @@ TEST(CloudSurfaceDistance, CloudToPlaneMatchesClosedForm)
     EXPECT_EQ(d.backward.n_point, 0u);
     EXPECT_GT(d.backward.n_face, 0u);  // the default budget counts the 5 points: 50 samples
     // Per-vertex (point) distances: the points' own distances, and the square's corners to the cloud.
-    ASSERT_EQ(d.a_vertex_distance.size(), 5u);
-    for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(d.a_vertex_distance[i], fwd.distances[i]);
-    ASSERT_EQ(d.b_vertex_distance.size(), 4u);
+    ASSERT_EQ(d.original_vertex_distance.size(), 5u);
+    for (std::size_t i = 0; i < 5; ++i) EXPECT_EQ(d.original_vertex_distance[i], fwd.distances[i]);
+    ASSERT_EQ(d.processed_vertex_distance.size(), 4u);
     const Mesh sq = unit_square();
     for (std::size_t v = 0; v < 4; ++v)
-        EXPECT_DOUBLE_EQ(d.b_vertex_distance[v], brute_nearest(sq.points[v], cloud.points));
+        EXPECT_DOUBLE_EQ(d.processed_vertex_distance[v], brute_nearest(sq.points[v], cloud.points));
 }
 
 TEST(CloudSurfaceDistance, RandomCloudToPlaneEveryPoint)
@@ -192,8 +195,11 @@ TEST(CloudSurfaceDistance, RandomCloudToPlaneEveryPoint)
     const auto pts = random_points(2000, 7, 2.0);
     Mesh cloud;
     cloud.points = pts;
+    // The deprecated positional overload (0.2): only the forward samples kept.
     SampledDirection fwd;
     const SurfaceDistance d = cloud_surface_distance(cloud, unit_square(), {}, false, std::nullopt, {}, &fwd);
+    EXPECT_TRUE(d.forward_samples.distances.empty());
+    EXPECT_TRUE(d.backward_samples.distances.empty());
     double max = 0.0;
     for (std::size_t i = 0; i < pts.size(); ++i) {
         EXPECT_NEAR(fwd.distances[i], square_distance(pts[i]), 1e-14) << i;
@@ -210,8 +216,12 @@ TEST(CloudSurfaceDistance, CloudToCloudEqualsBruteForceBothWays)
     b.points = random_points(900, 12, 1.2);
     SummaryOptions summary;
     summary.fscore_thresholds = {0.02, 0.05};
-    SampledDirection fwd, bwd;
-    const SurfaceDistance d = cloud_surface_distance(a, b, {}, false, HausdorffOptions{}, summary, &fwd, &bwd);
+    DistanceOptions o;
+    o.hausdorff = HausdorffOptions{};
+    o.summary = summary;
+    o.keep_samples = true;
+    const SurfaceDistance d = cloud_surface_distance(a, b, o);
+    const SampledDirection &fwd = d.forward_samples, &bwd = d.backward_samples;
     double fmax = 0.0, bmax = 0.0, fsum = 0.0, bsum = 0.0;
     std::vector<std::size_t> fbelow(2, 0), bbelow(2, 0);
     const double diag = bounding_box(a).diagonal();
@@ -255,7 +265,9 @@ TEST(CloudSurfaceDistance, VerticesOfAMeshAsACloudAgainstTheMeshGiveZero)
     const LoadedMesh sphere = read_mesh(data("sphere_ico_2562.ply"));
     Mesh cloud;
     cloud.points = sphere.mesh.points;
-    const SurfaceDistance d = cloud_surface_distance(cloud, sphere.mesh, {}, false, HausdorffOptions{});
+    DistanceOptions o;
+    o.hausdorff = HausdorffOptions{};
+    const SurfaceDistance d = cloud_surface_distance(cloud, sphere.mesh, o);
     EXPECT_EQ(d.forward.max, 0.0);
     EXPECT_EQ(d.forward.n_point, cloud.points.size());
     ASSERT_TRUE(d.forward_hausdorff);
@@ -272,8 +284,8 @@ TEST(CloudSurfaceDistance, VerticesOfAMeshAsACloudAgainstTheMeshGiveZero)
 TEST(CloudSurfaceDistance, TwoMeshesAreTheSurfaceDistance)
 {
     const LoadedMesh sphere = read_mesh(data("sphere_ico_2562.ply"));
-    SamplingOptions o;
-    o.samples = 5000;
+    DistanceOptions o;
+    o.sampling.samples = 5000;
     const SurfaceDistance x = cloud_surface_distance(sphere.mesh, sphere.mesh, o);
     const SurfaceDistance y = surface_distance(sphere.mesh, sphere.mesh, o);
     EXPECT_EQ(x.forward.mean, y.forward.mean);

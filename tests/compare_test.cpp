@@ -167,7 +167,9 @@ TEST(CompareMeshes, EachPartEqualsItsFunctionRunSeparately)
         EXPECT_EQ(c.roughness->levels[k].relative_change, d.levels[k].relative_change);
     }
     EXPECT_EQ(c.roughness->global.distance, d.global.distance);
-    const SurfaceDistance s = surface_distance(sphere().mesh, irregular().mesh, o.sampling);
+    DistanceOptions distance;
+    distance.sampling = o.sampling;
+    const SurfaceDistance s = surface_distance(sphere().mesh, irregular().mesh, distance);
     expect_same_stats(c.distance->forward, s.forward);
     expect_same_stats(c.distance->backward, s.backward);
     EXPECT_EQ(c.distance->metro_diagonal, s.metro_diagonal);
@@ -185,8 +187,8 @@ TEST(CompareMeshes, VertexDistancesCoverEveryProcessedVertex)
     const Comparison c = compare_meshes(sphere(), irregular(), o);
     ASSERT_EQ(c.processed_vertex_distance.size(), irregular().mesh.n_vertices());
     const double largest = *std::max_element(c.processed_vertex_distance.begin(), c.processed_vertex_distance.end());
-    EXPECT_LE(largest, c.distance->backward.max);        // vertices are among the backward samples
-    EXPECT_TRUE(c.distance->b_vertex_distance.empty());  // moved out, not copied
+    EXPECT_LE(largest, c.distance->backward.max);                // vertices are among the backward samples
+    EXPECT_TRUE(c.distance->processed_vertex_distance.empty());  // moved out, not copied
 }
 
 TEST(CompareMeshes, IdenticalForOneAndTwoThreads)

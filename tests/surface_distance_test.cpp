@@ -26,6 +26,19 @@ Mesh transformed(Mesh m, double scale, const Eigen::Matrix3d& rotation, const Ve
     return m;
 }
 
+// The options of a surface distance with sampling \p sampling, certifying
+// with \p hausdorff and summarising with \p summary.
+DistanceOptions distance_options(const SamplingOptions& sampling = {},
+                                 const std::optional<HausdorffOptions>& hausdorff = std::nullopt,
+                                 const SummaryOptions& summary = {})
+{
+    DistanceOptions o;
+    o.sampling = sampling;
+    o.hausdorff = hausdorff;
+    o.summary = summary;
+    return o;
+}
+
 bool same_bits(double x, double y)
 {
     return std::memcmp(&x, &y, sizeof(double)) == 0;
@@ -105,7 +118,7 @@ TEST(SurfaceDistance, MeshAgainstItselfIsZeroAtVerticesAndRoundingElsewhere)
     const Mesh m = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
     SamplingOptions vertices_only;
     vertices_only.edges = vertices_only.faces = false;
-    const SurfaceDistance v = surface_distance(m, m, vertices_only);
+    const SurfaceDistance v = surface_distance(m, m, distance_options(vertices_only));
     EXPECT_EQ(v.forward.max, 0.0);
     EXPECT_EQ(v.backward.max, 0.0);
     EXPECT_EQ(v.hausdorff, 0.0);
@@ -154,7 +167,7 @@ TEST(SurfaceDistance, DefaultBudgetIsTenTimesTheLargerFaceCount)
 
     SamplingOptions o;
     o.samples = 12345;
-    const SurfaceDistance r2 = surface_distance(a, b, o);
+    const SurfaceDistance r2 = surface_distance(a, b, distance_options(o));
     EXPECT_LE(r2.forward.n_samples(), 12345u);
     EXPECT_GE(r2.forward.n_samples() + 30, 12345u);
     EXPECT_GE(r2.backward.n_samples() + 30, 12345u);
@@ -211,8 +224,8 @@ TEST(SurfaceDistance, RigidMotionChangesNothing)
     // Vertex samples move with the meshes: equal up to rounding.
     SamplingOptions vertices_only;
     vertices_only.edges = vertices_only.faces = false;
-    const SurfaceDistance v = surface_distance(a, b, vertices_only);
-    const SurfaceDistance mv = surface_distance(ma, mb, vertices_only);
+    const SurfaceDistance v = surface_distance(a, b, distance_options(vertices_only));
+    const SurfaceDistance mv = surface_distance(ma, mb, distance_options(vertices_only));
     EXPECT_NEAR(mv.forward.max, v.forward.max, 1e-9 * v.forward.max);
     EXPECT_NEAR(mv.forward.mean, v.forward.mean, 1e-9 * v.forward.mean);
     EXPECT_NEAR(mv.backward.rms, v.backward.rms, 1e-9 * v.backward.rms);
@@ -252,10 +265,10 @@ TEST(SurfaceDistance, MonteCarloIsReproducibleForASeed)
     SamplingOptions o;
     o.face_scheme = FaceSampling::MonteCarlo;
     o.seed = 9;
-    const SurfaceDistance x = surface_distance(a, b, o);
-    const SurfaceDistance y = surface_distance(a, b, o);
+    const SurfaceDistance x = surface_distance(a, b, distance_options(o));
+    const SurfaceDistance y = surface_distance(a, b, distance_options(o));
     o.seed = 10;
-    const SurfaceDistance z = surface_distance(a, b, o);
+    const SurfaceDistance z = surface_distance(a, b, distance_options(o));
     expect_identical(x.forward, y.forward);
     EXPECT_NE(x.forward.mean, z.forward.mean);
     EXPECT_NEAR(x.forward.mean, z.forward.mean, 0.05 * x.forward.mean);
@@ -307,14 +320,14 @@ TEST(SurfaceDistance, SamplesGiveTheSameStatisticsBitForBit)
         SamplingOptions o;
         o.face_scheme = scheme;
         o.seed = 5;
-        const SurfaceDistance plain = surface_distance(a, b, o);
+        const SurfaceDistance plain = surface_distance(a, b, distance_options(o));
         const SampledSurfaceDistance kept = surface_distance_samples(a, b, o);
         expect_identical(plain.forward, kept.distance.forward);
         expect_identical(plain.backward, kept.distance.backward);
         EXPECT_TRUE(same_bits(plain.hausdorff, kept.distance.hausdorff));
         EXPECT_TRUE(same_bits(plain.diagonal, kept.distance.diagonal));
         EXPECT_TRUE(same_bits(plain.metro_diagonal, kept.distance.metro_diagonal));
-        EXPECT_TRUE(kept.distance.b_vertex_distance.empty());
+        EXPECT_TRUE(kept.distance.processed_vertex_distance.empty());
         // The kept samples and distances are those the statistics came from.
         for (const auto* d : {&kept.forward, &kept.backward}) {
             ASSERT_EQ(d->distances.size(), d->samples.size());
@@ -365,7 +378,7 @@ TEST(SurfaceDistance, InvalidOptionsAndMeshesThrow)
     const Mesh m = plane_grid(3, 3).mesh;
     SamplingOptions o;
     o.samples = 0;
-    EXPECT_THROW(surface_distance(m, m, o), InvalidArgumentError);
+    EXPECT_THROW(surface_distance(m, m, distance_options(o)), InvalidArgumentError);
     EXPECT_THROW(surface_distance(m, Mesh{}), InvalidMeshError);
     EXPECT_THROW(relative_to(DistanceStats{}, 0.0), InvalidArgumentError);
     // An original without extent (all vertices at one place, or a diagonal
@@ -384,7 +397,7 @@ TEST(SurfaceDistance, InvalidOptionsAndMeshesThrow)
     flat.faces = {Face{0, 1, 2}};
     SamplingOptions faces_only;
     faces_only.vertices = faces_only.edges = false;
-    EXPECT_THROW(surface_distance(flat, m, faces_only), InvalidArgumentError);
+    EXPECT_THROW(surface_distance(flat, m, distance_options(faces_only)), InvalidArgumentError);
 }
 
 namespace {
@@ -415,7 +428,7 @@ TEST(SummaryMetrics, ParallelPlanesGiveTheOffsetExactly)
     for (Vec3& p : b.points) p.z() += d;
     SummaryOptions so;
     so.fscore_thresholds = {0.5 * d / std::sqrt(2.0), 2.0 * d / std::sqrt(2.0)};  // below and above the offset
-    const SurfaceDistance r = surface_distance(a, b, {}, false, std::nullopt, so);
+    const SurfaceDistance r = surface_distance(a, b, distance_options({}, std::nullopt, so));
     for (const DistanceStats* s : {&r.forward, &r.backward}) {
         ASSERT_TRUE(s->area_weighted);
         EXPECT_NEAR(s->area_weighted->mean, d, 1e-14);
@@ -457,7 +470,7 @@ TEST(SummaryMetrics, PlaneAgainstPyramidMatchesTheSurfaceIntegrals)
     const double t = 0.1;  // absolute F-score threshold
     SummaryOptions so;
     so.fscore_thresholds = {t / diag};
-    const SurfaceDistance r = surface_distance(a, b, o, false, std::nullopt, so);
+    const SurfaceDistance r = surface_distance(a, b, distance_options(o, std::nullopt, so));
     ASSERT_TRUE(r.forward.area_weighted && r.backward.area_weighted && r.summary);
     const AreaWeightedStats& f = *r.forward.area_weighted;
     const AreaWeightedStats& bw = *r.backward.area_weighted;
@@ -488,7 +501,7 @@ TEST(SummaryMetrics, MeshAgainstItselfHasFScoreOne)
     const Mesh a = read_mesh(kData + "/bunny_res3.ply").mesh;
     SummaryOptions so;
     so.fscore_thresholds = {1e-6, 0.001, 0.005};
-    const SurfaceDistance r = surface_distance(a, a, {}, false, std::nullopt, so);
+    const SurfaceDistance r = surface_distance(a, a, distance_options({}, std::nullopt, so));
     ASSERT_TRUE(r.summary);
     for (const FScore& f : r.fscore) {
         EXPECT_EQ(f.precision, 1.0);
@@ -532,18 +545,18 @@ TEST(SummaryMetrics, NoFaceSamplesGiveNoSummaryAndAReason)
     const Mesh a = plane_grid(5, 5).mesh;
     SamplingOptions o;
     o.faces = false;
-    const SurfaceDistance r = surface_distance(a, a, o);
+    const SurfaceDistance r = surface_distance(a, a, distance_options(o));
     EXPECT_FALSE(r.forward.area_weighted);
     EXPECT_FALSE(r.summary);
     EXPECT_NE(r.summary_unavailable.find("no face sample"), std::string::npos);
     SummaryOptions bad;
     bad.fscore_thresholds = {0.0};
-    EXPECT_THROW(surface_distance(a, a, {}, false, std::nullopt, bad), InvalidArgumentError);
+    EXPECT_THROW(surface_distance(a, a, distance_options({}, std::nullopt, bad)), InvalidArgumentError);
     bad.fscore_thresholds = {NAN};
-    EXPECT_THROW(surface_distance(a, a, {}, false, std::nullopt, bad), InvalidArgumentError);
+    EXPECT_THROW(surface_distance(a, a, distance_options({}, std::nullopt, bad)), InvalidArgumentError);
     bad.fscore_thresholds.clear();
     bad.histogram_bins = kMaxHistogramBins + 1;
-    EXPECT_THROW(surface_distance(a, a, {}, false, std::nullopt, bad), InvalidArgumentError);
+    EXPECT_THROW(surface_distance(a, a, distance_options({}, std::nullopt, bad)), InvalidArgumentError);
 }
 
 TEST(SummaryMetrics, DefaultStatisticsAreBitwiseUnchangedByTheSummary)
@@ -554,7 +567,7 @@ TEST(SummaryMetrics, DefaultStatisticsAreBitwiseUnchangedByTheSummary)
     so.fscore_thresholds = {0.001};
     so.histogram_bins = 16;
     const SurfaceDistance plain = surface_distance(a, b);
-    const SurfaceDistance full = surface_distance(a, b, {}, false, std::nullopt, so);
+    const SurfaceDistance full = surface_distance(a, b, distance_options({}, std::nullopt, so));
     expect_identical(plain.forward, full.forward);
     expect_identical(plain.backward, full.backward);
     EXPECT_TRUE(plain.forward.histogram.counts.empty());
@@ -600,7 +613,7 @@ TEST(SummaryMetrics, MeanSquaresConvergeToTheSurfaceIntegral)
     for (std::size_t n : {4000u, 40000u, 400000u}) {
         SamplingOptions o;
         o.samples = n;
-        const SurfaceDistance r = surface_distance(pyramid(0.0), pyramid(h), o);
+        const SurfaceDistance r = surface_distance(pyramid(0.0), pyramid(h), distance_options(o));
         const double error = std::abs(r.backward.area_weighted->mean_square - h * h / 6.0);
         EXPECT_LT(error, 0.5 * previous) << n << " samples";
         previous = error;
@@ -609,7 +622,7 @@ TEST(SummaryMetrics, MeanSquaresConvergeToTheSurfaceIntegral)
     SamplingOptions mc;
     mc.samples = 400000;
     mc.face_scheme = FaceSampling::MonteCarlo;
-    const SurfaceDistance r = surface_distance(pyramid(0.0), pyramid(h), mc);
+    const SurfaceDistance r = surface_distance(pyramid(0.0), pyramid(h), distance_options(mc));
     EXPECT_NEAR(r.backward.area_weighted->mean_square, h * h / 6.0, 1e-2 * h * h / 6.0);  // 5 standard errors
     EXPECT_NEAR(r.backward.area_weighted->mean, h / 3.0, 1e-2 * h / 3.0);
 }
@@ -711,20 +724,58 @@ TEST(SurfaceDistance, ChunkedSamplesGiveTheKeptSamplesStatisticsBitForBit)
             o.samples = c.samples;
             o.edges = c.edges;
             const auto cert = c.certified ? std::optional<HausdorffOptions>(certify) : std::nullopt;
-            SampledDirection fk, bk;
-            const SurfaceDistance kept =
-                detail::surface_distance(*c.a, *c.b, o, true, cert, so, &fk, &bk, detail::kQueryBlock);
-            ASSERT_GT(fk.samples.size(), 4 * detail::kQueryBlock);
+            DistanceOptions options = distance_options(o, cert, so);
+            options.vertex_distances = true;
+            options.keep_samples = true;
+            const SurfaceDistance kept = detail::surface_distance(*c.a, *c.b, options, detail::kQueryBlock);
+            ASSERT_GT(kept.forward_samples.samples.size(), 4 * detail::kQueryBlock);
+            options.keep_samples = false;
             for (const std::size_t chunk : {detail::kQueryBlock, 3 * detail::kQueryBlock, detail::kSampleChunk}) {
-                const SurfaceDistance chunked =
-                    detail::surface_distance(*c.a, *c.b, o, true, cert, so, nullptr, nullptr, chunk);
+                const SurfaceDistance chunked = detail::surface_distance(*c.a, *c.b, options, chunk);
                 expect_every_bit(kept, chunked);
-                expect_same_vector(kept.a_vertex_distance, chunked.a_vertex_distance);
-                expect_same_vector(kept.b_vertex_signed_distance, chunked.b_vertex_signed_distance);
+                EXPECT_TRUE(chunked.forward_samples.samples.points.empty());
+                expect_same_vector(kept.original_vertex_distance, chunked.original_vertex_distance);
+                expect_same_vector(kept.processed_vertex_signed_distance, chunked.processed_vertex_signed_distance);
             }
             // The public call (default chunks) too.
-            expect_every_bit(kept, surface_distance(*c.a, *c.b, o, false, cert, so));
+            expect_every_bit(kept, surface_distance(*c.a, *c.b, distance_options(o, cert, so)));
+            // And the deprecated positional overload (0.2), its kept samples
+            // in the pointers given.
+            SampledDirection fk;
+            const SurfaceDistance old = surface_distance(*c.a, *c.b, o, true, cert, so, &fk);
+            expect_every_bit(kept, old);
+            expect_same_vector(kept.forward_samples.distances, fk.distances);
+            expect_same_vector(kept.processed_vertex_distance, old.b_vertex_distance);  // the 0.2 names
+            expect_same_vector(kept.original_vertex_signed_distance, old.a_vertex_signed_distance);
+            EXPECT_TRUE(old.processed_vertex_distance.empty());
         }
-    EXPECT_THROW(detail::surface_distance(coarse, fine, {}, false, std::nullopt, so, nullptr, nullptr, 1000),
+    EXPECT_THROW(detail::surface_distance(coarse, fine, distance_options({}, std::nullopt, so), 1000),
                  InvalidArgumentError);
+}
+
+TEST(SurfaceDistance, CallerBuiltIndexesGiveTheSameResultsBitForBit)
+{
+    const Mesh coarse = icosphere(0).mesh;
+    const Mesh fine = icosphere(2, 1.05).mesh;
+    SummaryOptions so;
+    so.fscore_thresholds = {0.01, 0.05};
+    so.histogram_bins = 5;
+    HausdorffOptions certify;
+    certify.relative_tolerance = 1e-3;
+    for (const bool keep : {false, true}) {
+        DistanceOptions o = distance_options({}, certify, so);
+        o.vertex_distances = true;
+        o.keep_samples = keep;
+        const SurfaceDistance own = surface_distance(coarse, fine, o);
+        const ClosestPointIndex ia(coarse), ib(fine);
+        o.index_a = &ia;
+        o.index_b = &ib;
+        const SurfaceDistance given = surface_distance(coarse, fine, o);
+        expect_every_bit(own, given);
+        expect_same_vector(own.original_vertex_distance, given.original_vertex_distance);
+        expect_same_vector(own.processed_vertex_signed_distance, given.processed_vertex_signed_distance);
+        expect_same_vector(own.forward_samples.distances, given.forward_samples.distances);
+        o.index_a = &ib;  // an index of the other mesh
+        EXPECT_THROW(surface_distance(coarse, fine, o), InvalidArgumentError);
+    }
 }

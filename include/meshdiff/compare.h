@@ -72,7 +72,13 @@ struct CompareOptions
     Progress* progress = nullptr;
 };
 
-struct Comparison
+//! The result of compare_meshes(). With CompareOptions::vertex_distances, the
+//! VertexDistances (surface_distance.h): per vertex of the processed mesh its
+//! exact distance to the original surface (processed_vertex_distance), of
+//! the original to the processed one (original_vertex_distance), and the
+//! signed ones (positive outside the other surface) where the other mesh can
+//! be signed against; else empty.
+struct Comparison : VertexDistances
 {
     MeshFacts original;
     MeshFacts processed;
@@ -87,16 +93,9 @@ struct Comparison
     std::optional<CorsiniProfile> original_corsini;
     std::optional<CorsiniProfile> processed_corsini;
     std::optional<CorsiniDistance> corsini;
+    //! The surface distance; its VertexDistances and kept samples are moved
+    //! to the comparison's own.
     std::optional<SurfaceDistance> distance;
-    //! With CompareOptions::vertex_distances: per vertex of the processed mesh,
-    //! its exact distance to the original surface.
-    std::vector<double> processed_vertex_distance;
-    //! The same per vertex of the original mesh, to the processed surface.
-    std::vector<double> original_vertex_distance;
-    //! With them, the signed distances (signed_distance.h: positive outside
-    //! the other surface) where the other mesh can be signed against; else empty.
-    std::vector<double> processed_vertex_signed_distance;
-    std::vector<double> original_vertex_signed_distance;
     //! Displacement and normal deviation when both meshes have the same
     //! connectivity (same_connectivity.h); else std::nullopt and the reason.
     std::optional<SameConnectivity> same_connectivity;

@@ -4,7 +4,7 @@
 #include "meshdiff/geometry/closest_point.h"
 
 #include "core/compensated_sum.h"
-#include "distance/surface_distance_chunks.h"
+#include "distance/two_directions.h"
 
 #include <fmt/format.h>
 #include <nanoflann.hpp>
@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 namespace meshdiff {
 
@@ -40,17 +41,17 @@ struct PointsAdaptor
 using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointsAdaptor>, PointsAdaptor,
                                                    3, std::uint32_t>;
 
+}  // namespace
+
 // A cloud must have points, all finite (read_mesh_or_cloud() guarantees it
 // for files; arrays and code may not).
-void check_cloud(const Mesh& cloud, const std::string& what)
+void detail::check_cloud(const Mesh& cloud, const std::string& what)
 {
     if (cloud.points.empty()) throw InvalidMeshError(fmt::format("{}: the point cloud has no points", what));
     for (std::size_t i = 0; i < cloud.points.size(); ++i)
         if (!cloud.points[i].allFinite())
             throw InvalidMeshError(fmt::format("{}: point {} has a non-finite coordinate", what, i));
 }
-
-}  // namespace
 
 struct PointCloudIndex::Impl
 {
@@ -63,7 +64,7 @@ struct PointCloudIndex::Impl
 
 PointCloudIndex::PointCloudIndex(const std::vector<Vec3>& points)
 {
-    check_cloud(Mesh{points, {}}, "PointCloudIndex");
+    detail::check_cloud(Mesh{points, {}}, "PointCloudIndex");
     if (points.size() > std::size_t(UINT32_MAX))
         throw InvalidMeshError(fmt::format("PointCloudIndex: {} points, more than 2^32 - 1", points.size()));
     impl_ = std::make_unique<Impl>(points);
@@ -107,13 +108,11 @@ SurfaceSamples cloud_samples(const Mesh& cloud)
     return s;
 }
 
-namespace {
-
 // The "area-weighted" statistics of a cloud direction: every point weight 1
 // (see the file comment of cloud_distance.h), and the shares below the
 // absolute \p thresholds.
-AreaWeightedStats point_weighted_stats(const std::vector<double>& distances, const std::vector<double>& thresholds,
-                                       std::vector<double>& within)
+AreaWeightedStats detail::point_weighted_stats(const std::vector<double>& distances,
+                                               const std::vector<double>& thresholds, std::vector<double>& within)
 {
     detail::CompensatedSum sum, sum2;
     std::vector<std::size_t> below(thresholds.size(), 0);
@@ -135,120 +134,73 @@ AreaWeightedStats point_weighted_stats(const std::vector<double>& distances, con
     return s;
 }
 
-}  // namespace
+SampledDirection detail::cloud_direction(const Mesh& from, bool from_cloud, const ClosestPointIndex* index,
+                                         const PointCloudIndex* cloud, const SamplingOptions& options)
+{
+    SampledDirection d;
+    if (from_cloud) {
+        d.samples = cloud_samples(from);
+    } else {
+        d.samples = sample_surface(from, options);
+        if (d.samples.size() == 0)
+            throw InvalidArgumentError("SamplingOptions: the enabled sample kinds give no sample on this mesh");
+    }
+    d.distances = cloud ? cloud->distances(d.samples.points) : index->distances(d.samples.points);
+    return d;
+}
+
+CertifiedHausdorff detail::exact_over_points(const Mesh& to, const ClosestPointIndex* index,
+                                             const PointCloudIndex* cloud, const DistanceStats& s, std::size_t n_points)
+{
+    CertifiedHausdorff h;
+    h.lower = h.upper = s.max;
+    h.tolerance = 0.0;
+    h.certified = true;
+    h.location.point = s.max_point;
+    h.location.face = s.max_element;
+    if (cloud) {
+        const auto n = cloud->nearest(s.max_point);
+        h.location.closest_point = to.points[n.index];
+        h.location.closest_face = n.index;
+    } else {
+        const ClosestPoint cp = index->closest_point(s.max_point);
+        h.location.closest_point = cp.point;
+        h.location.closest_face = cp.face;
+    }
+    h.point_evaluations = n_points;
+    return h;
+}
+
+SurfaceDistance detail::deprecated_result(SurfaceDistance r, SampledDirection* forward_samples,
+                                          SampledDirection* backward_samples)
+{
+    r.a_vertex_distance = std::exchange(r.original_vertex_distance, {});
+    r.b_vertex_distance = std::exchange(r.processed_vertex_distance, {});
+    r.a_vertex_signed_distance = std::exchange(r.original_vertex_signed_distance, {});
+    r.b_vertex_signed_distance = std::exchange(r.processed_vertex_signed_distance, {});
+    if (forward_samples) *forward_samples = std::exchange(r.forward_samples, {});
+    if (backward_samples) *backward_samples = std::exchange(r.backward_samples, {});
+    return r;
+}
+
+SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const DistanceOptions& options)
+{
+    return detail::two_directions(a, b, options, options.keep_samples, options.keep_samples, true);
+}
 
 SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options,
                                        bool vertex_distances, const std::optional<HausdorffOptions>& certify,
                                        const SummaryOptions& summary, SampledDirection* forward_samples,
                                        SampledDirection* backward_samples)
 {
-    const bool cloud_a = a.faces.empty(), cloud_b = b.faces.empty();
-    if (!cloud_a && !cloud_b)
-        return surface_distance(a, b, options, vertex_distances, certify, summary, forward_samples, backward_samples);
-    validate(options);
-    validate(summary);
-    if (certify) validate(*certify);
-    if (cloud_a) {
-        check_cloud(a, "surface_distance: A");
-    } else {
-        validate(a, "surface_distance: mesh A");
-    }
-    if (cloud_b) {
-        check_cloud(b, "surface_distance: B");
-    } else {
-        validate(b, "surface_distance: mesh B");
-    }
-    SamplingOptions opt = options;
-    // The default budget counts each point of a cloud as a face (Metro: 10 x
-    // max(#faces A, #faces B)), so that a mesh is sampled at least as densely
-    // as the cloud it is measured against.
-    if (!opt.samples && !opt.density)
-        opt.samples = 10 * std::max(cloud_a ? a.n_vertices() : a.n_faces(), cloud_b ? b.n_vertices() : b.n_faces());
-
-    // A cloud of one point (or of equal points) has no diagonal: an input
-    // error like a mesh without extent.
-    const double diagonal = detail::reference_diagonal(a, a.faces.empty() ? "points" : "vertices");
-    std::vector<double> thresholds;  // absolute
-    for (double t : summary.fscore_thresholds) thresholds.push_back(t * diagonal);
-    std::vector<double> recall, precision;
-
-    auto direction = [&](const Mesh& from, const Mesh& to, DistanceStats& stats, std::vector<double>& within,
-                         SampledDirection* keep, std::vector<double>* vertex_distance,
-                         std::optional<CertifiedHausdorff>& certified) {
-        const bool from_cloud = from.faces.empty(), to_cloud = to.faces.empty();
-        SampledDirection d;
-        if (from_cloud) {
-            d.samples = cloud_samples(from);
-        } else {
-            d.samples = sample_surface(from, opt);
-            if (d.samples.size() == 0)
-                throw InvalidArgumentError("SamplingOptions: the enabled sample kinds give no sample on this mesh");
-        }
-        std::optional<ClosestPointIndex> mesh_index;
-        std::optional<PointCloudIndex> cloud_index;
-        if (to_cloud) {
-            cloud_index.emplace(to.points);
-            d.distances = cloud_index->distances(d.samples.points);
-        } else {
-            mesh_index.emplace(to);
-            d.distances = mesh_index->distances(d.samples.points);
-        }
-        stats = distance_stats(d.samples, d.distances);
-        // A cloud has no inside; a cloud's points against a mesh are left
-        // unsigned too (the sign needs the closest feature, not computed here).
-        stats.signed_unavailable =
-            to_cloud ? "the other input is a point cloud: it has no inside"
-                     : "the samples are the points of a cloud: signed distances are computed for mesh samples only";
-        if (from_cloud) {
-            stats.n_point = d.samples.size();
-            stats.area_weighted = point_weighted_stats(d.distances, thresholds, within);
-        } else {
-            stats.area_weighted = area_weighted_stats(from, d.samples, d.distances, thresholds, &within);
-        }
-        if (summary.histogram_bins > 0) stats.histogram = distance_histogram(d.distances, summary.histogram_bins);
-        if (vertex_distance) {
-            if (from_cloud) {
-                *vertex_distance = d.distances;  // the points, in order
-            } else if (to_cloud) {
-                *vertex_distance = cloud_index->distances(from.points);
-            } else {
-                *vertex_distance = meshdiff::vertex_distances(from, *mesh_index);
-            }
-        }
-        if (certify && from_cloud) {  // exact over the points
-            CertifiedHausdorff h;
-            h.lower = h.upper = stats.max;
-            h.tolerance = 0.0;
-            h.certified = true;
-            h.location.point = stats.max_point;
-            h.location.face = stats.max_element;
-            if (to_cloud) {
-                const auto n = cloud_index->nearest(stats.max_point);
-                h.location.closest_point = to.points[n.index];
-                h.location.closest_face = n.index;
-            } else {
-                const ClosestPoint cp = mesh_index->closest_point(stats.max_point);
-                h.location.closest_point = cp.point;
-                h.location.closest_face = cp.face;
-            }
-            h.point_evaluations = d.samples.size();
-            certified = h;
-        }
-        if (keep) *keep = std::move(d);
-    };
-    SurfaceDistance r;
-    direction(a, b, r.forward, recall, forward_samples, vertex_distances ? &r.a_vertex_distance : nullptr,
-              r.forward_hausdorff);
-    direction(b, a, r.backward, precision, backward_samples, vertex_distances ? &r.b_vertex_distance : nullptr,
-              r.backward_hausdorff);
-    r.hausdorff = std::max(r.forward.max, r.backward.max);
-    r.diagonal = diagonal;
-    r.metro_diagonal = metro_diagonal(a, b);
-    r.summary = summary_metrics(r, &r.summary_unavailable);
-    if (r.summary) r.fscore = fscores(summary.fscore_thresholds, diagonal, recall, precision);
-    r.forward_kind = distance_kind(cloud_a, cloud_b);
-    r.backward_kind = distance_kind(cloud_b, cloud_a);
-    return r;
+    DistanceOptions o;
+    o.sampling = options;
+    o.hausdorff = certify;
+    o.summary = summary;
+    o.vertex_distances = vertex_distances;
+    return detail::deprecated_result(
+        detail::two_directions(a, b, o, forward_samples != nullptr, backward_samples != nullptr, true), forward_samples,
+        backward_samples);
 }
 
 }  // namespace meshdiff

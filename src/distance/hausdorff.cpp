@@ -379,4 +379,21 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Hausd
     return certified_hausdorff(a, b, index, options);
 }
 
+// The seed of a certified Hausdorff distance: the sampled maximum of \p s,
+// on a face of \p from (for a vertex sample, the lowest-index face using it).
+HausdorffSeed detail::seed_of(const Mesh& from, const DistanceStats& s)
+{
+    HausdorffSeed seed{s.max_point, s.max_element, s.max};
+    if (s.max_kind == SampleKind::OnVertex) {
+        for (std::size_t f = 0; f < from.n_faces(); ++f) {
+            const Face& t = from.faces[f];
+            if (std::find(t.begin(), t.end(), int(s.max_element)) != t.end()) {
+                seed.face = std::uint32_t(f);
+                break;
+            }
+        }
+    }
+    return seed;
+}
+
 }  // namespace meshdiff

@@ -3,6 +3,7 @@
 //! already known (surface_distance() has them from its vertex samples).
 #pragma once
 
+#include "meshdiff/distance/distance_stats.h"
 #include "meshdiff/distance/hausdorff.h"
 
 #include <vector>
@@ -14,5 +15,10 @@ namespace meshdiff::detail {
 CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
                                        const HausdorffOptions& options, const std::optional<HausdorffSeed>& seed,
                                        const std::vector<ClosestPoint>& vertex_closest);
+
+//! The seed of a certified Hausdorff distance of \p from: the sampled
+//! maximum of \p s, on a face of \p from (for a vertex sample, the
+//! lowest-index face using it).
+HausdorffSeed seed_of(const Mesh& from, const DistanceStats& s);
 
 }  // namespace meshdiff::detail

@@ -1,6 +1,7 @@
 #include "meshdiff/distance/surface_distance.h"
 
 #include "meshdiff/core/progress.h"
+#include "meshdiff/distance/cloud_distance.h"
 #include "meshdiff/distance/signed_distance.h"
 #include "meshdiff/error.h"
 
@@ -9,6 +10,7 @@
 #include "distance/distance_accumulators.h"
 #include "distance/hausdorff_seeded.h"
 #include "distance/surface_distance_chunks.h"
+#include "distance/two_directions.h"
 #include "geometry/sample_plan.h"
 
 #include <fmt/format.h>
@@ -289,117 +291,164 @@ std::vector<double> apply_signs(const std::vector<double>& distances, const std:
     return s;
 }
 
-// The seed of a certified Hausdorff distance: the sampled maximum of \p s,
-// on a face of \p from (for a vertex sample, the lowest-index face using it).
-HausdorffSeed seed_of(const Mesh& from, const DistanceStats& s)
+// What two_directions() asks of one direction: the samples of `from` (a
+// mesh's samples or a cloud's points) and their distances to `to`.
+struct DirectionTask
 {
-    HausdorffSeed seed{s.max_point, s.max_element, s.max};
-    if (s.max_kind == SampleKind::OnVertex) {
-        for (std::size_t f = 0; f < from.n_faces(); ++f) {
-            const Face& t = from.faces[f];
-            if (std::find(t.begin(), t.end(), int(s.max_element)) != t.end()) {
-                seed.face = std::uint32_t(f);
-                break;
-            }
-        }
+    const Mesh& from;
+    const Mesh& to;
+    bool from_cloud;
+    bool to_cloud;
+    const char* to_name;  // names `to` in the reason for no sign
+    const DistanceOptions& options;
+    const SamplingOptions& sampling;        // with the default budget set
+    const std::vector<double>& thresholds;  // the F-score thresholds, absolute
+    bool keep;                              // keep the samples
+    std::size_t chunk;                      // samples made and queried at a time when not kept
+    const ClosestPointIndex* index;         // of `to`, built by the caller; null: build one
+};
+
+// What one direction gives back.
+struct DirectionResult
+{
+    DistanceStats stats;
+    std::vector<double> within;                                   // area (point) shares below the thresholds
+    SampledDirection samples;                                     // with DirectionTask::keep
+    std::vector<double> vertex_distance, vertex_signed_distance;  // with DistanceOptions::vertex_distances
+    std::optional<CertifiedHausdorff> certified;                  // with DistanceOptions::hausdorff
+};
+
+// The target of a direction: the index of a mesh, with its pseudo-normals
+// when it can be signed against and the samples are a mesh's, or of a cloud.
+struct DirectionTarget
+{
+    std::optional<ClosestPointIndex> own;      // built here
+    const ClosestPointIndex* index = nullptr;  // own or the caller's
+    std::optional<PointCloudIndex> cloud;
+    std::optional<PseudoNormals> normals;
+    std::string unsigned_reason;  // why there is no sign
+};
+
+// The index of the mesh t.to: the caller's (its face count checked), or built.
+void build_index(const DirectionTask& t, DirectionTarget& g)
+{
+    if (!t.index) {
+        g.index = &g.own.emplace(t.to);
+        return;
     }
-    return seed;
+    if (t.index->n_faces() != t.to.n_faces())
+        throw InvalidArgumentError(fmt::format("DistanceOptions: the index given for {} has {} faces, the mesh has {}",
+                                               t.to_name, t.index->n_faces(), t.to.n_faces()));
+    g.index = t.index;
 }
 
-// surface_distance() and surface_distance_samples(): both directions, keeping
-// the samples in \p forward and \p backward when they are given.
-// Without them, the samples are made and queried \p chunk at a time (chunked_direction()).
-SurfaceDistance both_directions(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
-                                SampledDirection* forward, SampledDirection* backward,
-                                const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
-                                std::size_t chunk = detail::kSampleChunk)
+void make_target(const DirectionTask& t, DirectionTarget& g)
 {
-    if (chunk == 0 || chunk % detail::kQueryBlock != 0)
-        throw InvalidArgumentError(fmt::format("surface_distance: chunk of {} samples, not a positive multiple of {}",
-                                               chunk, detail::kQueryBlock));
-    validate(options);
-    validate(summary);
-    if (certify) validate(*certify);
-    validate(a, "surface_distance: mesh A");
-    validate(b, "surface_distance: mesh B");
-    SamplingOptions opt = options;
-    if (!opt.samples && !opt.density) opt.samples = 10 * std::max(a.n_faces(), b.n_faces());
-
-    const double diagonal = detail::reference_diagonal(a, "vertices");
-    std::vector<double> thresholds;  // absolute
-    for (double t : summary.fscore_thresholds) thresholds.push_back(t * diagonal);
-    // The sums over the samples beside the statistics of one direction.
-    std::vector<double> recall, precision;  // area shares below the thresholds, forward and backward
-    auto summarize = [&](DistanceStats& s, const Mesh& from, const SampledDirection& d, std::vector<double>& within) {
-        s.area_weighted = area_weighted_stats(from, d.samples, d.distances, thresholds, &within);
-        if (summary.histogram_bins > 0) s.histogram = distance_histogram(d.distances, summary.histogram_bins);
-    };
-
-    // One direction: samples on `from`, exact distances to `to`.
-    auto direction = [&](const Mesh& from, const Mesh& to, const char* to_name, DistanceStats& stats,
-                         std::vector<double>& within, SampledDirection* keep, std::vector<double>* vertex_distance,
-                         std::vector<double>* vertex_signed, std::optional<CertifiedHausdorff>& certified) {
+    if (t.to_cloud) {
+        g.cloud.emplace(t.to.points);
+        g.unsigned_reason = "the other input is a point cloud: it has no inside";
+    } else if (t.from_cloud) {
+        // A cloud's points against a mesh are left unsigned (the sign needs
+        // the closest feature, not computed for them).
+        build_index(t, g);
+        g.unsigned_reason =
+            "the samples are the points of a cloud: signed distances are computed for mesh samples only";
+    } else {
         // The sign (signed_distance.h): from the closest faces of the same
         // queries. The pseudo-normals (serial) are made on another thread
         // while the index is built.
-        std::string unavailable;
-        auto made_normals = std::async(omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred,
-                                       [&] { return pseudo_normals(to, to_name, &unavailable); });
-        const ClosestPointIndex index(to);
-        std::optional<PseudoNormals> normals = made_normals.get();
-        const Target target{to, index, normals ? &*normals : nullptr};
-        std::vector<ClosestPoint> vq;  // from's vertices: samples and certification
-        if (certify) vq = index.closest_points(from.points);
-        if (keep) {
+        auto made_normals =
+            std::async(omp_get_max_threads() > 1 && !t.index ? std::launch::async : std::launch::deferred,
+                       [&] { return pseudo_normals(t.to, t.to_name, &g.unsigned_reason); });
+        build_index(t, g);
+        g.normals = made_normals.get();
+    }
+}
+
+// The distance of every vertex of a mesh t.from to the mesh t.to, and the
+// signed ones when it can be signed against; from \p vq (the closest points
+// of the vertices) when given.
+void mesh_vertex_distances(const DirectionTask& t, const DirectionTarget& g, const std::vector<ClosestPoint>* vq,
+                           DirectionResult& r)
+{
+    const std::size_t nv = t.from.points.size();
+    std::vector<std::int8_t> vsigns(g.normals ? nv : 0, 0);
+    if (vq) {
+        r.vertex_distance.resize(nv);
+        for (std::size_t v = 0; v < nv; ++v) {
+            r.vertex_distance[v] = (*vq)[v].distance;
+            if (g.normals && (*vq)[v].distance > 0.0)
+                vsigns[v] = std::int8_t(distance_sign(t.to, *g.normals, t.from.points[v], (*vq)[v].face));
+        }
+    } else if (g.normals) {
+        r.vertex_distance.resize(nv);
+        signed_query(t.to, *g.index, *g.normals, t.from.points.data(), nv, r.vertex_distance.data(), vsigns.data());
+    } else {
+        r.vertex_distance = vertex_distances(t.from, *g.index);
+    }
+    if (g.normals) r.vertex_signed_distance = apply_signs(r.vertex_distance, vsigns);
+}
+
+// One direction of two_directions(): the statistics of the distances of the
+// samples of t.from to t.to, with the per-vertex distances, the kept samples
+// and the certification asked for.
+DirectionResult one_direction(const DirectionTask& t)
+{
+    const DistanceOptions& o = t.options;
+    const std::size_t bins = o.summary.histogram_bins;
+    DirectionResult r;
+    DirectionTarget g;
+    make_target(t, g);
+    const bool meshes = !t.from_cloud && !t.to_cloud;
+    std::vector<ClosestPoint> vq;  // from's vertices: samples and certification (two meshes)
+    if (meshes && o.hausdorff) vq = g.index->closest_points(t.from.points);
+    const std::vector<ClosestPoint>* vertex_closest = meshes && o.hausdorff ? &vq : nullptr;
+    if (meshes && !t.keep) {
+        // The same statistics without keeping the samples (freed before the certification).
+        const Target target{t.to, *g.index, g.normals ? &*g.normals : nullptr};
+        r.stats = chunked_direction(t.from, target, t.sampling, vertex_closest, t.thresholds, bins, t.chunk, r.within);
+    } else {
+        SampledDirection d;
+        if (meshes) {
             std::vector<std::int8_t> signs;
-            SampledDirection d = sampled_direction(from, target, opt, certify ? &vq : nullptr, signs);
-            stats = distance_stats(d.samples, d.distances);
-            if (normals) {
+            const Target target{t.to, *g.index, g.normals ? &*g.normals : nullptr};
+            d = sampled_direction(t.from, target, t.sampling, vertex_closest, signs);
+            r.stats = distance_stats(d.samples, d.distances);
+            if (g.normals) {
                 d.signed_distances = apply_signs(d.distances, signs);
-                stats.signed_distance = signed_distance_stats(d.signed_distances);
+                r.stats.signed_distance = signed_distance_stats(d.signed_distances);
             }
-            summarize(stats, from, d, within);
-            *keep = std::move(d);
         } else {
-            // The same statistics without keeping the samples (freed before the certification).
-            stats = chunked_direction(from, target, opt, certify ? &vq : nullptr, thresholds, summary.histogram_bins,
-                                      chunk, within);
+            d = detail::cloud_direction(t.from, t.from_cloud, g.index, g.cloud ? &*g.cloud : nullptr, t.sampling);
+            r.stats = distance_stats(d.samples, d.distances);
         }
-        if (normals)
-            stats.signed_distance->flipped = normals->flipped;
+        if (t.from_cloud) {
+            r.stats.n_point = d.samples.size();
+            r.stats.area_weighted = detail::point_weighted_stats(d.distances, t.thresholds, r.within);
+        } else {
+            r.stats.area_weighted = area_weighted_stats(t.from, d.samples, d.distances, t.thresholds, &r.within);
+        }
+        if (bins > 0) r.stats.histogram = distance_histogram(d.distances, bins);
+        if (t.from_cloud && o.vertex_distances) r.vertex_distance = d.distances;  // the points, in order
+        if (t.keep) r.samples = std::move(d);
+    }
+    if (g.normals)
+        r.stats.signed_distance->flipped = g.normals->flipped;
+    else
+        r.stats.signed_unavailable = g.unsigned_reason;
+    if (o.vertex_distances && !t.from_cloud) {
+        if (t.to_cloud)
+            r.vertex_distance = g.cloud->distances(t.from.points);
         else
-            stats.signed_unavailable = unavailable;
-        if (vertex_distance) {
-            const std::size_t nv = from.points.size();
-            std::vector<std::int8_t> vsigns(normals ? nv : 0, 0);
-            if (certify) {
-                vertex_distance->resize(nv);
-                for (std::size_t v = 0; v < nv; ++v) {
-                    (*vertex_distance)[v] = vq[v].distance;
-                    if (normals && vq[v].distance > 0.0)
-                        vsigns[v] = std::int8_t(distance_sign(to, *normals, from.points[v], vq[v].face));
-                }
-            } else if (normals) {
-                vertex_distance->resize(nv);
-                signed_query(to, index, *normals, from.points.data(), nv, vertex_distance->data(), vsigns.data());
-            } else {
-                *vertex_distance = vertex_distances(from, index);
-            }
-            if (normals) *vertex_signed = apply_signs(*vertex_distance, vsigns);
-        }
-        normals.reset();  // free the pseudo-normals before the certification
-        if (certify) certified = detail::certified_hausdorff(from, to, index, *certify, seed_of(from, stats), vq);
-    };
-    SurfaceDistance r;
-    direction(a, b, "the processed mesh", r.forward, recall, forward,
-              b_vertex_distances ? &r.a_vertex_distance : nullptr, &r.a_vertex_signed_distance, r.forward_hausdorff);
-    direction(b, a, "the original mesh", r.backward, precision, backward,
-              b_vertex_distances ? &r.b_vertex_distance : nullptr, &r.b_vertex_signed_distance, r.backward_hausdorff);
-    r.hausdorff = std::max(r.forward.max, r.backward.max);
-    r.diagonal = diagonal;
-    r.metro_diagonal = metro_diagonal(a, b);
-    r.summary = summary_metrics(r, &r.summary_unavailable);
-    if (r.summary) r.fscore = fscores(summary.fscore_thresholds, diagonal, recall, precision);
+            mesh_vertex_distances(t, g, vertex_closest, r);
+    }
+    g.normals.reset();  // free the pseudo-normals before the certification
+    if (o.hausdorff && meshes)
+        r.certified =
+            detail::certified_hausdorff(t.from, t.to, *g.index, *o.hausdorff, detail::seed_of(t.from, r.stats), vq);
+    else if (o.hausdorff && t.from_cloud)
+        r.certified =
+            detail::exact_over_points(t.to, g.index, g.cloud ? &*g.cloud : nullptr, r.stats, t.from.points.size());
     return r;
 }
 
@@ -413,31 +462,99 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
     return distance_stats(d.samples, d.distances);
 }
 
+SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const DistanceOptions& options, bool keep_forward,
+                                       bool keep_backward, bool clouds, std::size_t chunk)
+{
+    if (chunk == 0 || chunk % kQueryBlock != 0)
+        throw InvalidArgumentError(
+            fmt::format("surface_distance: chunk of {} samples, not a positive multiple of {}", chunk, kQueryBlock));
+    validate(options.sampling);
+    validate(options.summary);
+    if (options.hausdorff) validate(*options.hausdorff);
+    const bool cloud_a = clouds && a.faces.empty(), cloud_b = clouds && b.faces.empty();
+    if (cloud_a)
+        check_cloud(a, "surface_distance: A");
+    else
+        validate(a, "surface_distance: mesh A");
+    if (cloud_b)
+        check_cloud(b, "surface_distance: B");
+    else
+        validate(b, "surface_distance: mesh B");
+    // An unset target is Metro's 10 x max(#faces A, #faces B), each point of
+    // a cloud counted as a face, so that a mesh is sampled at least as
+    // densely as the cloud it is measured against.
+    SamplingOptions sampling = options.sampling;
+    if (!sampling.samples && !sampling.density)
+        sampling.samples =
+            10 * std::max(cloud_a ? a.n_vertices() : a.n_faces(), cloud_b ? b.n_vertices() : b.n_faces());
+    // A cloud of one point (or of equal points) has no diagonal: an input
+    // error like a mesh without extent.
+    const double diagonal = reference_diagonal(a, cloud_a ? "points" : "vertices");
+    std::vector<double> thresholds;  // absolute
+    for (double t : options.summary.fscore_thresholds) thresholds.push_back(t * diagonal);
+
+    SurfaceDistance r;
+    DirectionResult f = one_direction({a, b, cloud_a, cloud_b, "the processed mesh", options, sampling, thresholds,
+                                       keep_forward, chunk, cloud_b ? nullptr : options.index_b});
+    r.forward = std::move(f.stats);
+    r.forward_samples = std::move(f.samples);
+    r.original_vertex_distance = std::move(f.vertex_distance);
+    r.original_vertex_signed_distance = std::move(f.vertex_signed_distance);
+    r.forward_hausdorff = std::move(f.certified);
+    DirectionResult k = one_direction({b, a, cloud_b, cloud_a, "the original mesh", options, sampling, thresholds,
+                                       keep_backward, chunk, cloud_a ? nullptr : options.index_a});
+    r.backward = std::move(k.stats);
+    r.backward_samples = std::move(k.samples);
+    r.processed_vertex_distance = std::move(k.vertex_distance);
+    r.processed_vertex_signed_distance = std::move(k.vertex_signed_distance);
+    r.backward_hausdorff = std::move(k.certified);
+
+    r.hausdorff = std::max(r.forward.max, r.backward.max);
+    r.diagonal = diagonal;
+    r.metro_diagonal = metro_diagonal(a, b);
+    r.summary = summary_metrics(r, &r.summary_unavailable);
+    if (r.summary) r.fscore = fscores(options.summary.fscore_thresholds, diagonal, f.within, k.within);
+    r.forward_kind = distance_kind(cloud_a, cloud_b);
+    r.backward_kind = distance_kind(cloud_b, cloud_a);
+    return r;
+}
+
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const DistanceOptions& options)
+{
+    return detail::two_directions(a, b, options, options.keep_samples, options.keep_samples, false);
+}
+
 SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
                                  const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
                                  SampledDirection* forward_samples, SampledDirection* backward_samples)
 {
-    return both_directions(a, b, options, b_vertex_distances, forward_samples, backward_samples, certify, summary);
+    DistanceOptions o;
+    o.sampling = options;
+    o.hausdorff = certify;
+    o.summary = summary;
+    o.vertex_distances = b_vertex_distances;
+    return detail::deprecated_result(
+        detail::two_directions(a, b, o, forward_samples != nullptr, backward_samples != nullptr, false),
+        forward_samples, backward_samples);
 }
 
-namespace detail {
-
-SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
-                                 const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
-                                 SampledDirection* forward_samples, SampledDirection* backward_samples,
-                                 std::size_t chunk)
+SurfaceDistance detail::surface_distance(const Mesh& a, const Mesh& b, const DistanceOptions& options,
+                                         std::size_t chunk)
 {
-    return both_directions(a, b, options, b_vertex_distances, forward_samples, backward_samples, certify, summary,
-                           chunk);
+    return two_directions(a, b, options, options.keep_samples, options.keep_samples, false, chunk);
 }
-
-}  // namespace detail
 
 SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options,
                                                 const SummaryOptions& summary)
 {
+    DistanceOptions o;
+    o.sampling = options;
+    o.summary = summary;
+    o.keep_samples = true;
     SampledSurfaceDistance r;
-    r.distance = both_directions(a, b, options, false, &r.forward, &r.backward, std::nullopt, summary);
+    r.distance = surface_distance(a, b, o);
+    r.forward = std::exchange(r.distance.forward_samples, {});
+    r.backward = std::exchange(r.distance.backward_samples, {});
     return r;
 }
 

@@ -20,13 +20,10 @@ double reference_diagonal(const Mesh& a, const char* what);
 //! (128 query blocks, about 8 MB of points, kinds, elements and signs).
 constexpr std::size_t kSampleChunk = 128 * kQueryBlock;
 
-//! surface_distance() (same arguments and results, bit for bit), the
+//! surface_distance() (same options and results, bit for bit), the
 //! directions whose samples are not kept made and queried \p chunk samples at
 //! a time; \p chunk > 0, a multiple of kQueryBlock so that the queries start
 //! from the same triangles as in one batch.
-SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options, bool b_vertex_distances,
-                                 const std::optional<HausdorffOptions>& certify, const SummaryOptions& summary,
-                                 SampledDirection* forward_samples, SampledDirection* backward_samples,
-                                 std::size_t chunk);
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const DistanceOptions& options, std::size_t chunk);
 
 }  // namespace meshdiff::detail

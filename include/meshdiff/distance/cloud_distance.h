@@ -87,20 +87,25 @@ private:
 SurfaceSamples cloud_samples(const Mesh& cloud);
 
 //! surface_distance() where \p a, \p b or both may be point clouds (no faces);
-//! the same arguments and result fields, with the conventions of the file
+//! the same options and result fields, with the conventions of the file
 //! comment. For a cloud direction, DistanceStats::n_point counts its points.
-//! With \p vertex_distances, a_vertex_distance (b_vertex_distance) holds per
-//! vertex (point) of A (B) its distance to the other side, as the direction
-//! measures it. With \p certify, a cloud-sampled direction gets its exact
-//! maximum as a certified interval [max, max] (location.face: the point's
-//! index; location.closest_face: the face of a mesh target, or the index of
-//! the nearest point of a cloud target); a mesh sampled against a cloud gets
-//! none (sampled only).
+//! With options.vertex_distances, original_vertex_distance
+//! (processed_vertex_distance) holds per vertex (point) of A (B) its distance
+//! to the other side, as the direction measures it. With options.hausdorff, a cloud-sampled direction
+//! gets its exact maximum as a certified interval [max, max] (location.face:
+//! the point's index; location.closest_face: the face of a mesh target, or the
+//! index of the nearest point of a cloud target); a mesh sampled against a
+//! cloud gets none (sampled only).
 //! \throw InvalidArgumentError for invalid options, or if the options give no
 //!        sample on a mesh side.
 //! \throw InvalidMeshError if a mesh is invalid, or a cloud is empty or has a
 //!        non-finite coordinate.
-SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options = {},
+SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const DistanceOptions& options = {});
+
+//! Deprecated, removed in 0.3: cloud_surface_distance(a, b, DistanceOptions),
+//! with the arguments of the deprecated surface_distance() overload
+//! (surface_distance.h). The results are the same bit for bit.
+SurfaceDistance cloud_surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options,
                                        bool vertex_distances = false,
                                        const std::optional<HausdorffOptions>& certify = std::nullopt,
                                        const SummaryOptions& summary = {}, SampledDirection* forward_samples = nullptr,

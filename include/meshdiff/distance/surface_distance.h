@@ -39,8 +39,37 @@
 
 namespace meshdiff {
 
-//! Result of surface_distance().
-struct SurfaceDistance
+//! One direction of a surface distance with everything kept: the samples of
+//! the source surface and the exact distance of each to the other surface.
+struct SampledDirection
+{
+    SurfaceSamples samples;         //!< the samples (points, kinds, source elements), in sample order
+    std::vector<double> distances;  //!< exact distance of each sample to the other surface, same order
+    //! Signed distance of each sample (positive outside the other surface),
+    //! same order; empty when the other surface cannot be signed against.
+    std::vector<double> signed_distances;
+};
+
+//! The per-vertex distance maps of a comparison: every vertex (unreferenced
+//! ones included, in vertex order) of the original mesh A and of the processed
+//! mesh B with its exact distance to the other surface, and the signed
+//! distances (signed_distance.h: positive outside) where the other surface can
+//! be signed against (else empty). SurfaceDistance and Comparison (compare.h)
+//! both hold them, under these names.
+struct VertexDistances
+{
+    //! Per vertex of the processed mesh B, its distance to the original surface.
+    std::vector<double> processed_vertex_distance;
+    //! Per vertex of the original mesh A, its distance to the processed surface.
+    std::vector<double> original_vertex_distance;
+    std::vector<double> processed_vertex_signed_distance;  //!< signed processed_vertex_distance
+    std::vector<double> original_vertex_signed_distance;   //!< signed original_vertex_distance
+};
+
+//! Result of surface_distance(). With DistanceOptions::vertex_distances, the
+//! VertexDistances are filled, from the indexes the two directions build (of
+//! B forward, of A backward).
+struct SurfaceDistance : VertexDistances
 {
     DistanceStats forward;   //!< A -> B: samples on A
     DistanceStats backward;  //!< B -> A: samples on B
@@ -55,15 +84,13 @@ struct SurfaceDistance
     //! that lower >= forward.max (backward.max).
     std::optional<CertifiedHausdorff> forward_hausdorff;
     std::optional<CertifiedHausdorff> backward_hausdorff;
-    //! Only when asked for: the exact distance of every vertex of B (unreferenced
-    //! ones included) to the surface of A, in vertex order, from the index of A
-    //! that the backward direction built (a per-vertex distance map of B).
+    //! Deprecated, removed in 0.3: the 0.2 names of the VertexDistances
+    //! (b_vertex_distance: processed_vertex_distance, a_vertex_distance:
+    //! original_vertex_distance, and the signed pair), filled instead of them
+    //! by the deprecated positional overloads of surface_distance() and
+    //! cloud_surface_distance() only.
     std::vector<double> b_vertex_distance;
-    //! Asked for with b_vertex_distance: the same for every vertex of A to the
-    //! surface of B, from the forward direction's index of B.
     std::vector<double> a_vertex_distance;
-    //! With them, the signed distances (signed_distance.h: positive outside)
-    //! where the other mesh can be signed against; else empty.
     std::vector<double> b_vertex_signed_distance;
     std::vector<double> a_vertex_signed_distance;
     //! Chamfer and PSNR; std::nullopt (with summary_unavailable saying why)
@@ -77,23 +104,55 @@ struct SurfaceDistance
     //! a point cloud, as cloud_surface_distance() sets them (cloud_distance.h).
     DistanceKind forward_kind = DistanceKind::SurfaceToSurface;
     DistanceKind backward_kind = DistanceKind::SurfaceToSurface;
+    //! With DistanceOptions::keep_samples: the samples of A (forward) and of B
+    //! (backward), each with its distance to the other surface; else empty.
+    SampledDirection forward_samples;
+    SampledDirection backward_samples;
+};
+
+//! The options of surface_distance() and cloud_surface_distance(): what to
+//! sample, certify, summarise and keep. The defaults are Metro's sampling,
+//! sampled maxima only, the summary without F-scores or histograms.
+struct DistanceOptions
+{
+    //! The sampling of both directions (sampling.h); an unset target means
+    //! 10 x max(#faces A, #faces B).
+    SamplingOptions sampling{};
+    //! Certify both one-sided Hausdorff distances (hausdorff.h) with these
+    //! options, the lower bounds seeded with the sampled maxima and reusing
+    //! the indexes of the sampling; std::nullopt keeps the sampled maxima only.
+    std::optional<HausdorffOptions> hausdorff;
+    //! F-score thresholds and histogram bins (the area-weighted statistics,
+    //! Chamfer and PSNR are always computed).
+    SummaryOptions summary{};
+    //! Also the exact distance of every vertex of each mesh to the other
+    //! surface, and the signed ones where the other can be signed against
+    //! (the VertexDistances of the result), from the indexes the directions
+    //! build.
+    bool vertex_distances = false;
+    //! Keep the samples of both directions and their distances
+    //! (SurfaceDistance::forward_samples, backward_samples; about 50 bytes per
+    //! sample and direction). Without it, each direction makes, queries and
+    //! sums its samples a chunk at a time and keeps only their distances
+    //! (8 bytes per sample, for the percentiles); the statistics are the same
+    //! bit for bit.
+    bool keep_samples = false;
+    //! Indexes of A and of B that the caller built (ClosestPointIndex(a),
+    //! ClosestPointIndex(b)) and keeps, e.g. to measure one mesh against
+    //! several others: the backward direction measures to A, the forward one
+    //! to B; nullptr (the default): the direction builds the index of its
+    //! mesh and drops it at its end. Each must index that very mesh (its face
+    //! count is checked) and outlive the call; the results are the same bit
+    //! for bit. Not used for a point cloud (cloud_distance.h), which gets its
+    //! own k-d tree.
+    const ClosestPointIndex* index_a = nullptr;
+    const ClosestPointIndex* index_b = nullptr;
 };
 
 //! The Chamfer distances and PSNR of \p d from its directions'
 //! area_weighted, its diagonal and sampled maxima; std::nullopt and the
 //! \p reason if a direction has no area-weighted statistics.
 std::optional<SummaryMetrics> summary_metrics(const SurfaceDistance& d, std::string* reason = nullptr);
-
-//! One direction of a surface distance with everything kept: the samples of
-//! the source surface and the exact distance of each to the other surface.
-struct SampledDirection
-{
-    SurfaceSamples samples;         //!< the samples (points, kinds, source elements), in sample order
-    std::vector<double> distances;  //!< exact distance of each sample to the other surface, same order
-    //! Signed distance of each sample (positive outside the other surface),
-    //! same order; empty when the other surface cannot be signed against.
-    std::vector<double> signed_distances;
-};
 
 //! One direction: samples \p from with \p options (an unset target means
 //! 10 x #faces of \p from) and returns the statistics of the exact distances
@@ -103,38 +162,42 @@ struct SampledDirection
 DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, const SamplingOptions& options = {});
 
 //! Both directions, the symmetric Hausdorff distance and the diagonals.
-//! \p a is the original, \p b the processed mesh; \p options apply to both
-//! directions (an unset target means 10 x max(#faces A, #faces B)). With
-//! \p b_vertex_distances, SurfaceDistance::b_vertex_distance and a_vertex_distance are filled too.
-//! With \p certify, both one-sided Hausdorff distances are also certified
-//! (hausdorff.h), reusing the indexes of the sampling.
+//! \p a is the original, \p b the processed mesh; \p options (DistanceOptions)
+//! say how to sample both directions, whether to certify the one-sided
+//! Hausdorff distances, what to summarise and what to keep. The area-weighted
+//! statistics, the summary metrics and, when asked for in options.summary,
+//! the F-scores and histograms are filled too (sums over the samples).
 //! \throw InvalidArgumentError for invalid options or if they give no sample.
 //! \throw InvalidMeshError if a mesh is invalid (meshdiff::validate()).
-//! The area-weighted statistics, the summary metrics and, when asked for in
-//! \p summary, the histograms are filled too (sums over the samples). With
-//! \p forward_samples (\p backward_samples), the samples of that direction and
-//! their distances are kept there (as surface_distance_samples() keeps them).
-//! A direction whose samples are not kept makes, queries and sums them a
-//! chunk at a time and keeps only their distances (8 bytes per sample, for
-//! the percentiles); the results are the same bit for bit.
-SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options = {},
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const DistanceOptions& options = {});
+
+//! Deprecated, removed in 0.3: surface_distance(a, b, DistanceOptions), with
+//! \p options, \p certify, \p summary and \p b_vertex_distances as the
+//! fields sampling, hausdorff, summary and vertex_distances. The per-vertex
+//! distances are returned under their 0.2 names (SurfaceDistance::
+//! a_vertex_distance, b_vertex_distance and the signed pair). With
+//! \p forward_samples (\p backward_samples), the samples of that direction
+//! and their distances are kept there (SurfaceDistance::forward_samples and
+//! backward_samples stay empty). The results are the same bit for bit.
+SurfaceDistance surface_distance(const Mesh& a, const Mesh& b, const SamplingOptions& options,
                                  bool b_vertex_distances = false,
                                  const std::optional<HausdorffOptions>& certify = std::nullopt,
                                  const SummaryOptions& summary = {}, SampledDirection* forward_samples = nullptr,
                                  SampledDirection* backward_samples = nullptr);
 
 //! Result of surface_distance_samples(): the statistics, bit for bit those of
-//! surface_distance() with the same arguments, and the samples behind them
+//! surface_distance() with the same options, and the samples behind them
 //! (for histograms, per-kind statistics or plots of one's own).
 struct SampledSurfaceDistance
 {
-    SurfaceDistance distance;   //!< as surface_distance() returns it (no b_vertex_distance)
+    SurfaceDistance distance;   //!< as surface_distance() returns it (no vertex distances)
     SampledDirection forward;   //!< samples on A, distances to B
     SampledDirection backward;  //!< samples on B, distances to A
 };
 
 //! surface_distance() keeping every sample and its distance (about 50 bytes
-//! per sample and direction). Same arguments, conventions and exceptions.
+//! per sample and direction): DistanceOptions::keep_samples with the samples
+//! moved out of the result. Same conventions and exceptions.
 SampledSurfaceDistance surface_distance_samples(const Mesh& a, const Mesh& b, const SamplingOptions& options = {},
                                                 const SummaryOptions& summary = {});
 
