@@ -133,10 +133,12 @@ def _maps(arrays: list, result: Dict[str, Any], options: Dict[str, Any]) -> Dict
     if rd is not None and options.get("measure") in (None, "sigma"):
         # The keywords as given (None: the library's default, as in compare()); the global
         # column when the comparison has one.
+        # paper=True is the goldfeather fit (the library refuses another curvature beside it).
         with_global = rd.get("global") is not None
+        curvature = "goldfeather" if options.get("paper") else options.get("curvature")
         for side, V, F in (("original", V1, F1), ("processed", V2, F2)):
             D, _ = _meshdiff.roughness(V, F, levels=options.get("levels"), global_level=with_global,
-                                       curvature=options.get("curvature"), weighting=options.get("weighting"),
+                                       curvature=curvature, weighting=options.get("weighting"),
                                        threads=options.get("threads"))
             maps[f"D_{side}"] = D
     return maps

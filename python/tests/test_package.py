@@ -35,6 +35,17 @@ def test_maps_are_the_per_vertex_arrays_behind_the_report(pair):
         assert np.array_equal(D, meshdiff.roughness(V, F, levels=[1, 4], global_level=True)[0], equal_nan=True)
 
 
+def test_maps_follow_the_paper_method(pair):
+    """paper=True computes the report with the goldfeather fit: its D maps are that fit's, and their RMS its sigma."""
+    (V1, F1), (V2, F2) = pair
+    r = meshdiff.compare(V1, F1, V2, F2, levels=[1, 4], paper=True, distance=False, maps=True)
+    D = r["maps"]["D_original"]
+    assert np.array_equal(D, meshdiff.roughness(V1, F1, levels=[1, 4], global_level=True, curvature="goldfeather")[0],
+                          equal_nan=True)
+    np.testing.assert_allclose(np.sqrt(np.nanmean(D ** 2, axis=0)),
+                               r["original"]["sigma"] + [r["original"]["sigma_global"]], rtol=1e-12)
+
+
 def test_no_maps_of_a_half_switched_off(pair):
     (V1, F1), (V2, F2) = pair
     m = meshdiff.compare(V1, F1, V2, F2, levels=[1], roughness=False, maps=True)["maps"]
