@@ -69,8 +69,10 @@ void expect_edge_map_is_brute_force(const Mesh& mesh)
     ASSERT_EQ(m.opposite.size(), 3 * mesh.n_faces());
     std::vector<std::uint32_t> edge_of(3 * mesh.n_faces(), EdgeMap::kNone);
     std::vector<std::uint32_t> opposite(3 * mesh.n_faces(), EdgeMap::kNone);
-    std::size_t e = 0;
+    std::size_t e = 0, boundary = 0, non_manifold = 0, misoriented = 0;
     for (const auto& [ab, hs] : groups) {
+        boundary += hs.size() == 1;
+        non_manifold += hs.size() > 2;
         EXPECT_EQ(std::vector<std::uint32_t>(m.begin(e), m.end(e)), hs) << ab.first << " " << ab.second;
         EXPECT_EQ(m.count(e), hs.size());
         for (const std::uint32_t h : hs) edge_of[h] = std::uint32_t(e);
@@ -81,8 +83,17 @@ void expect_edge_map_is_brute_force(const Mesh& mesh)
             opposite[hs[1]] = hs[0];
         }
         EXPECT_EQ(m.misoriented(e), hs.size() == 2 && !pair) << e;
+        misoriented += hs.size() == 2 && !pair;
         ++e;
     }
+    EXPECT_EQ(m.boundary_edges, boundary);
+    EXPECT_EQ(m.non_manifold_edges, non_manifold);
+    EXPECT_EQ(m.misoriented_edges, misoriented);
+    const TopologyReport r = topology_report(mesh);
+    EXPECT_EQ(r.edges, m.size());
+    EXPECT_EQ(r.boundary_edges, boundary);
+    EXPECT_EQ(r.non_manifold_edges, non_manifold);
+    EXPECT_EQ(r.orientation_conflicts, misoriented);
     EXPECT_EQ(m.edge_of, edge_of);
     EXPECT_EQ(m.opposite, opposite);
 }

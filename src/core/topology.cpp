@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 namespace meshdiff {
@@ -18,14 +19,27 @@ using detail::UnionFind;
 
 namespace {
 
-// The unique edges, their offsets and their half-edges, sorted by (edge, face,
-// corner): an EdgeMap without edge_of and opposite.
-EdgeMap sorted_edges(const Mesh& mesh)
+// Sorts a small range by insertion, a large one (around a hub) by std::sort.
+void sort_bucket(std::uint64_t* b, std::uint64_t* e)
 {
-    const std::size_t n = mesh.n_vertices();
-    if (3 * std::uint64_t(mesh.n_faces()) >= EdgeMap::kNone)
-        throw InvalidMeshError(fmt::format("a mesh of {} faces has too many half-edges for an EdgeMap (at most {})",
-                                           mesh.n_faces(), EdgeMap::kNone - 1));
+    if (e - b > 32) return std::sort(b, e);
+    for (std::uint64_t* i = b + 1; i < e; ++i) {
+        const std::uint64_t x = *i;
+        std::uint64_t* j = i;
+        for (; j > b && *(j - 1) > x; --j) *j = *(j - 1);
+        *j = x;
+    }
+}
+
+// The EdgeMap of mesh; with \p per_half_edge false, without edge_of and
+// opposite (unique_edges(), boundary_vertex_mask() and topology_report() need
+// neither).
+EdgeMap build_edge_map(const Mesh& mesh, bool per_half_edge)
+{
+    const std::size_t n = mesh.n_vertices(), nf = mesh.n_faces();
+    if (3 * std::uint64_t(nf) >= EdgeMap::kNone)
+        throw InvalidMeshError(fmt::format("a mesh of {} faces has too many half-edges for an EdgeMap (at most {})", nf,
+                                           EdgeMap::kNone - 1));
     // Counting sort by the lower end, then small sorts per bucket.
     std::vector<std::uint32_t> start(n + 1, 0);
     for (const Face& t : mesh.faces)
@@ -34,29 +48,50 @@ EdgeMap sorted_edges(const Mesh& mesh)
             if (a != b) ++start[std::min(a, b) + 1];
         }
     for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
-    // (upper end << 32) | 3 f + k: in a bucket, the order of (edge, face, corner).
-    std::vector<std::uint64_t> he(start[n]);
+    // Per half-edge (upper end << 33) | (3 f + k) << 1 | (it starts at the
+    // lower end): in a bucket, the order of (edge, face, corner). A vertex
+    // index is below 2^31 (Face), 3 f + k below 2^32.
+    const std::unique_ptr<std::uint64_t[]> he(new std::uint64_t[start[n]]);
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+    for (std::size_t f = 0; f < nf; ++f) {
         const Face& t = mesh.faces[f];
         for (std::uint32_t k = 0; k < 3; ++k) {
             const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
-            if (a != b) he[fill[std::min(a, b)]++] = (std::uint64_t(std::max(a, b)) << 32) | (3 * std::uint32_t(f) + k);
+            if (a == b) continue;
+            const std::uint64_t h = 3 * std::uint32_t(f) + k;
+            he[fill[std::min(a, b)]++] = (std::uint64_t(std::max(a, b)) << 33) | (h << 1) | (a < b ? 1 : 0);
         }
     }
     EdgeMap m;
-    m.half_edge.resize(he.size());
-    m.edges.reserve(he.size() / 2 + 1);
-    m.offset.reserve(he.size() / 2 + 2);
+    m.half_edge.resize(start[n]);
+    m.edges.reserve(start[n] / 2 + 1);
+    m.offset.reserve(start[n] / 2 + 2);
+    if (per_half_edge) {
+        m.edge_of.assign(3 * nf, EdgeMap::kNone);
+        m.opposite.assign(3 * nf, EdgeMap::kNone);
+    }
     for (std::size_t v = 0; v < n; ++v) {
-        std::sort(he.begin() + start[v], he.begin() + start[v + 1]);
-        for (std::uint32_t i = start[v]; i < start[v + 1]; ++i) {
-            const auto b = std::uint32_t(he[i] >> 32), h = std::uint32_t(he[i]);
-            if (i == start[v] || b != std::uint32_t(he[i - 1] >> 32)) {
-                m.offset.push_back(i);
-                m.edges.push_back({std::uint32_t(v), b, h / 3});
+        const std::uint32_t end = start[v + 1];
+        sort_bucket(he.get() + start[v], he.get() + end);
+        for (std::uint32_t i = start[v], j = i; i < end; i = j) {  // one edge: [i, j)
+            const std::uint64_t b = he[i] >> 33;
+            const auto e = std::uint32_t(m.edges.size());
+            for (; j < end && he[j] >> 33 == b; ++j) {
+                const auto h = std::uint32_t(he[j] >> 1);
+                m.half_edge[j] = h;
+                if (per_half_edge) m.edge_of[h] = e;
             }
-            m.half_edge[i] = h;
+            m.offset.push_back(i);
+            m.edges.push_back({std::uint32_t(v), std::uint32_t(b), m.half_edge[i] / 3});
+            m.boundary_edges += j - i == 1;
+            m.non_manifold_edges += j - i > 2;
+            if (j - i != 2) continue;
+            if (!((he[i] ^ he[i + 1]) & 1)) {  // two in the same direction
+                ++m.misoriented_edges;
+            } else if (per_half_edge) {
+                m.opposite[m.half_edge[i]] = m.half_edge[i + 1];
+                m.opposite[m.half_edge[i + 1]] = m.half_edge[i];
+            }
         }
     }
     m.offset.push_back(start[n]);
@@ -67,19 +102,7 @@ EdgeMap sorted_edges(const Mesh& mesh)
 
 EdgeMap edge_map(const Mesh& mesh)
 {
-    EdgeMap m = sorted_edges(mesh);
-    m.edge_of.assign(3 * mesh.n_faces(), EdgeMap::kNone);
-    m.opposite.assign(3 * mesh.n_faces(), EdgeMap::kNone);
-    for (std::size_t e = 0; e < m.size(); ++e) {
-        for (auto h = m.begin(e); h != m.end(e); ++h) m.edge_of[*h] = std::uint32_t(e);
-        if (m.count(e) != 2) continue;
-        const std::uint32_t h = m.begin(e)[0], g = m.begin(e)[1];
-        if (mesh.faces[h / 3][h % 3] != mesh.faces[g / 3][g % 3]) {  // they start at different ends
-            m.opposite[h] = g;
-            m.opposite[g] = h;
-        }
-    }
-    return m;
+    return build_edge_map(mesh, true);
 }
 
 namespace {
@@ -158,14 +181,14 @@ std::vector<char> degenerate_face_mask(const Mesh& mesh)
 
 std::vector<Edge> unique_edges(const Mesh& mesh)
 {
-    EdgeMap m = sorted_edges(mesh);
+    EdgeMap m = build_edge_map(mesh, false);
     return std::move(m.edges);
 }
 
 std::vector<char> boundary_vertex_mask(const Mesh& mesh)
 {
     std::vector<char> mask(mesh.n_vertices(), 0);
-    const EdgeMap m = sorted_edges(mesh);
+    const EdgeMap m = build_edge_map(mesh, false);
     for (std::size_t e = 0; e < m.size(); ++e)
         if (m.count(e) != 2) mask[m.edges[e].a] = mask[m.edges[e].b] = 1;
     return mask;
@@ -173,18 +196,14 @@ std::vector<char> boundary_vertex_mask(const Mesh& mesh)
 
 namespace {
 
-// One pass over the edges: counts them, the boundary and non-manifold ones
-// and the orientation conflicts, and unites the ends of each edge in comp.
+// The edge counts, and the ends of each edge united in comp.
 void edge_pass(const EdgeMap& m, UnionFind& comp, TopologyReport& r)
 {
     r.edges = m.size();
-    for (std::size_t e = 0; e < m.size(); ++e) {
-        comp.unite(m.edges[e].a, m.edges[e].b);
-        const std::size_t count = m.count(e);
-        if (count == 1) ++r.boundary_edges;
-        if (count > 2) ++r.non_manifold_edges;
-        if (m.misoriented(e)) ++r.orientation_conflicts;
-    }
+    r.boundary_edges = m.boundary_edges;
+    r.non_manifold_edges = m.non_manifold_edges;
+    r.orientation_conflicts = m.misoriented_edges;
+    for (const Edge& e : m.edges) comp.unite(e.a, e.b);
 }
 
 // Isolated vertices (in no face) and the components of the others.
@@ -303,7 +322,7 @@ TopologyReport topology_report(const Mesh& mesh)
 
     // A Progress (progress.h) can stop the report between its serial steps.
     const Progress* progress = current_progress();
-    const EdgeMap edges = edge_map(mesh);
+    const EdgeMap edges = build_edge_map(mesh, false);  // no per-half-edge tables
     check_cancelled(progress);
     UnionFind comp(n);
     edge_pass(edges, comp, r);

@@ -76,12 +76,15 @@ struct EdgeMap
     //! Per half-edge 3 f + k: the other half-edge of its edge where the edge has
     //! exactly two and they run in opposite directions; kNone otherwise.
     std::vector<std::uint32_t> opposite;
+    //! The edges with one half-edge, with more than two, and with two in the
+    //! same direction (an orientation conflict), as topology_report() counts them.
+    std::size_t boundary_edges = 0, non_manifold_edges = 0, misoriented_edges = 0;
 
     std::size_t size() const { return edges.size(); }
     std::size_t count(std::size_t e) const { return offset[e + 1] - offset[e]; }
     const std::uint32_t* begin(std::size_t e) const { return half_edge.data() + offset[e]; }
     const std::uint32_t* end(std::size_t e) const { return half_edge.data() + offset[e + 1]; }
-    //! Two half-edges in the same direction: an orientation conflict.
+    //! Two half-edges in the same direction.
     bool misoriented(std::size_t e) const { return count(e) == 2 && opposite[half_edge[offset[e]]] == kNone; }
 };
 
