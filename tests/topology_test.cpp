@@ -50,6 +50,54 @@ void expect_same_edges(const std::vector<Edge>& got, const std::vector<Edge>& wa
     }
 }
 
+// Brute force against EdgeMap: every half-edge 3 f + k with distinct ends,
+// grouped by its sorted pair of ends (in ascending order of h); opposite
+// where a group has two half-edges starting at different vertices.
+void expect_edge_map_is_brute_force(const Mesh& mesh)
+{
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> groups;
+    for (std::uint32_t h = 0; h < 3 * mesh.n_faces(); ++h) {
+        auto a = std::uint32_t(mesh.faces[h / 3][h % 3]), b = std::uint32_t(mesh.faces[h / 3][(h + 1) % 3]);
+        if (a > b) std::swap(a, b);
+        if (a != b) groups[{a, b}].push_back(h);
+    }
+    const EdgeMap m = edge_map(mesh);
+    expect_same_edges(m.edges, brute_force_edges(mesh));
+    ASSERT_EQ(m.size(), groups.size());
+    ASSERT_EQ(m.offset.size(), m.size() + 1);
+    ASSERT_EQ(m.edge_of.size(), 3 * mesh.n_faces());
+    ASSERT_EQ(m.opposite.size(), 3 * mesh.n_faces());
+    std::vector<std::uint32_t> edge_of(3 * mesh.n_faces(), EdgeMap::kNone);
+    std::vector<std::uint32_t> opposite(3 * mesh.n_faces(), EdgeMap::kNone);
+    std::size_t e = 0, boundary = 0, non_manifold = 0, misoriented = 0;
+    for (const auto& [ab, hs] : groups) {
+        boundary += hs.size() == 1;
+        non_manifold += hs.size() > 2;
+        EXPECT_EQ(std::vector<std::uint32_t>(m.begin(e), m.end(e)), hs) << ab.first << " " << ab.second;
+        EXPECT_EQ(m.count(e), hs.size());
+        for (const std::uint32_t h : hs) edge_of[h] = std::uint32_t(e);
+        const auto start = [&](std::uint32_t h) { return mesh.faces[h / 3][h % 3]; };
+        const bool pair = hs.size() == 2 && start(hs[0]) != start(hs[1]);
+        if (pair) {
+            opposite[hs[0]] = hs[1];
+            opposite[hs[1]] = hs[0];
+        }
+        EXPECT_EQ(m.misoriented(e), hs.size() == 2 && !pair) << e;
+        misoriented += hs.size() == 2 && !pair;
+        ++e;
+    }
+    EXPECT_EQ(m.boundary_edges, boundary);
+    EXPECT_EQ(m.non_manifold_edges, non_manifold);
+    EXPECT_EQ(m.misoriented_edges, misoriented);
+    const TopologyReport r = topology_report(mesh);
+    EXPECT_EQ(r.edges, m.size());
+    EXPECT_EQ(r.boundary_edges, boundary);
+    EXPECT_EQ(r.non_manifold_edges, non_manifold);
+    EXPECT_EQ(r.orientation_conflicts, misoriented);
+    EXPECT_EQ(m.edge_of, edge_of);
+    EXPECT_EQ(m.opposite, opposite);
+}
+
 // Brute force: the vertices whose incident faces (linked when they share a
 // vertex other than the centre) form more than one fan, every pair tested.
 std::size_t brute_force_non_manifold_vertices(const Mesh& mesh)
@@ -269,4 +317,91 @@ TEST(Topology, DuplicateFacesMatchABruteForceCount)
         for (std::size_t i = 1; i < sorted.size(); ++i) expected += sorted[i] == sorted[i - 1];
         EXPECT_EQ(topology_report(m).duplicate_faces, expected) << round;
     }
+}
+
+TEST(EdgeMap, ClosedTetrahedronPairsEveryHalfEdge)
+{
+    Mesh m;
+    m.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+    m.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+    expect_edge_map_is_brute_force(m);
+    const EdgeMap e = edge_map(m);
+    ASSERT_EQ(e.size(), 6u);
+    for (std::size_t k = 0; k < e.size(); ++k) {
+        EXPECT_EQ(e.count(k), 2u);
+        EXPECT_FALSE(e.misoriented(k));
+    }
+    for (std::uint32_t h = 0; h < 12; ++h) {
+        ASSERT_NE(e.opposite[h], EdgeMap::kNone);
+        EXPECT_EQ(e.opposite[e.opposite[h]], h);
+        EXPECT_EQ(e.edge_of[e.opposite[h]], e.edge_of[h]);
+    }
+    // Half-edge 0 of face 0 runs 0 -> 2; face 2 runs 2 -> 0 from its corner 2.
+    EXPECT_EQ(e.opposite[0], 8u);
+}
+
+TEST(EdgeMap, BoundaryNonManifoldAndMisorientedEdges)
+{
+    Mesh m;
+    m.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0, 0, 1)};
+    // Three faces on the edge (0, 1); faces 2 and 3 both run 1 -> 4.
+    m.faces = {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}, {2, 1, 4}};
+    expect_edge_map_is_brute_force(m);
+    const EdgeMap e = edge_map(m);
+    ASSERT_EQ(e.edges[0].a, 0u);
+    ASSERT_EQ(e.edges[0].b, 1u);
+    EXPECT_EQ(std::vector<std::uint32_t>(e.begin(0), e.end(0)), (std::vector<std::uint32_t>{0, 3, 6}));
+    EXPECT_EQ(e.opposite[0], EdgeMap::kNone);
+    const auto it = std::find_if(e.edges.begin(), e.edges.end(), [](const Edge& x) { return x.a == 1 && x.b == 4; });
+    ASSERT_NE(it, e.edges.end());
+    EXPECT_TRUE(e.misoriented(std::size_t(it - e.edges.begin())));
+    const TopologyReport r = topology_report(m);
+    EXPECT_EQ(r.edges, e.size());
+    EXPECT_EQ(r.non_manifold_edges, 1u);
+    EXPECT_EQ(r.orientation_conflicts, 1u);
+    EXPECT_EQ(r.boundary_edges, 5u);  // (0, 2), (0, 3), (1, 3), (0, 4), (2, 4)
+}
+
+TEST(EdgeMap, CollapsedCornerAndRepeatedFace)
+{
+    Mesh m;
+    m.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+    // Face 0 repeats corner 3: 3 -> 1 and 1 -> 3 are opposite, 3 -> 3 is on
+    // no edge. Face 4 repeats face 1 (misoriented pairs), face 5 reverses it.
+    m.faces = {{3, 1, 3}, {0, 1, 2}, {0, 2, 3}, {2, 1, 0}, {0, 1, 2}, {2, 1, 0}};
+    expect_edge_map_is_brute_force(m);
+    const EdgeMap e = edge_map(m);
+    EXPECT_EQ(e.edge_of[2], EdgeMap::kNone);
+    EXPECT_EQ(e.opposite[0], 1u);
+    EXPECT_EQ(e.opposite[1], 0u);
+    EXPECT_EQ(e.edge_of[0], e.edge_of[1]);
+    // (0, 1): faces 1, 3, 4, 5 -> four half-edges, non-manifold.
+    EXPECT_EQ(e.count(e.edge_of[3]), 4u);
+    Mesh all_same;
+    all_same.points = m.points;
+    all_same.faces = {{1, 1, 1}};
+    const EdgeMap none = edge_map(all_same);
+    EXPECT_EQ(none.size(), 0u);
+    EXPECT_EQ(none.offset, std::vector<std::uint32_t>{0});
+    EXPECT_EQ(none.edge_of, std::vector<std::uint32_t>(3, EdgeMap::kNone));
+    EXPECT_EQ(edge_map(Mesh{}).size(), 0u);
+}
+
+// Random faces over few vertices: every kind of edge at once (boundary,
+// non-manifold, misoriented, repeated faces, repeated corners), and a real
+// mesh with duplicate faces.
+TEST(EdgeMap, EqualsTheBruteForce)
+{
+    std::mt19937 rng(11);
+    for (int round = 0; round < 20; ++round) {
+        Mesh m;
+        const int nv = 3 + round;
+        for (int i = 0; i < nv; ++i) m.points.emplace_back(i, (i * 7) % 5, (i * 3) % 4);
+        std::uniform_int_distribution<int> vertex(0, nv - 1);
+        for (int f = 0; f < 5 * nv; ++f) m.faces.push_back({vertex(rng), vertex(rng), vertex(rng)});
+        SCOPED_TRACE(round);
+        expect_edge_map_is_brute_force(m);
+    }
+    expect_edge_map_is_brute_force(read_mesh(data("bunny_res4_ascii.ply")).mesh);
+    expect_edge_map_is_brute_force(torus(12, 8).mesh);
 }

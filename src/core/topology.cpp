@@ -1,40 +1,46 @@
 #include "meshdiff/core/topology.h"
 
 #include "meshdiff/core/progress.h"
+#include "meshdiff/error.h"
 
 #include "core/union_find.h"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 namespace meshdiff {
 
-namespace {
-
-// Undirected edge key with the smaller index in the high word.
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b)
-{
-    if (a > b) std::swap(a, b);
-    return (std::uint64_t(a) << 32) | b;
-}
-
 using detail::UnionFind;
 
-// One record per (face, edge): the undirected key, whether the face walks the
-// edge from the smaller to the larger index, and the face.
-struct HalfEdge
-{
-    std::uint64_t key;
-    std::uint32_t face;
-    bool forward;
-};
+namespace {
 
-std::vector<HalfEdge> sorted_half_edges(const Mesh& mesh)
+// Sorts a small range by insertion, a large one (around a hub) by std::sort.
+void sort_bucket(std::uint64_t* b, std::uint64_t* e)
 {
-    // Counting sort by the smaller vertex, then small sorts per bucket.
-    const std::size_t n = mesh.n_vertices();
+    if (e - b > 32) return std::sort(b, e);
+    for (std::uint64_t* i = b + 1; i < e; ++i) {
+        const std::uint64_t x = *i;
+        std::uint64_t* j = i;
+        for (; j > b && *(j - 1) > x; --j) *j = *(j - 1);
+        *j = x;
+    }
+}
+
+// The EdgeMap of mesh; with \p per_half_edge false, without edge_of and
+// opposite (unique_edges(), boundary_vertex_mask() and topology_report() need
+// neither).
+EdgeMap build_edge_map(const Mesh& mesh, bool per_half_edge)
+{
+    const std::size_t n = mesh.n_vertices(), nf = mesh.n_faces();
+    if (3 * std::uint64_t(nf) >= EdgeMap::kNone)
+        throw InvalidMeshError(fmt::format("a mesh of {} faces has too many half-edges for an EdgeMap (at most {})", nf,
+                                           EdgeMap::kNone - 1));
+    // Counting sort by the lower end, then small sorts per bucket.
     std::vector<std::uint32_t> start(n + 1, 0);
     for (const Face& t : mesh.faces)
         for (int k = 0; k < 3; ++k) {
@@ -42,22 +48,62 @@ std::vector<HalfEdge> sorted_half_edges(const Mesh& mesh)
             if (a != b) ++start[std::min(a, b) + 1];
         }
     for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
-    std::vector<HalfEdge> he(start[n]);
+    // Per half-edge (upper end << 33) | (3 f + k) << 1 | (it starts at the
+    // lower end): in a bucket, the order of (edge, face, corner). A vertex
+    // index is below 2^31 (Face), 3 f + k below 2^32.
+    const std::unique_ptr<std::uint64_t[]> he(new std::uint64_t[start[n]]);
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+    for (std::size_t f = 0; f < nf; ++f) {
         const Face& t = mesh.faces[f];
-        for (int k = 0; k < 3; ++k) {
+        for (std::uint32_t k = 0; k < 3; ++k) {
             const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
             if (a == b) continue;
-            he[fill[std::min(a, b)]++] = {edge_key(a, b), std::uint32_t(f), a < b};
+            const std::uint64_t h = 3 * std::uint32_t(f) + k;
+            he[fill[std::min(a, b)]++] = (std::uint64_t(std::max(a, b)) << 33) | (h << 1) | (a < b ? 1 : 0);
         }
     }
-    auto less = [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.face < y.face; };
-    for (std::size_t i = 0; i < n; ++i) std::sort(he.begin() + start[i], he.begin() + start[i + 1], less);
-    return he;
+    EdgeMap m;
+    m.half_edge.resize(start[n]);
+    m.edges.reserve(start[n] / 2 + 1);
+    m.offset.reserve(start[n] / 2 + 2);
+    if (per_half_edge) {
+        m.edge_of.assign(3 * nf, EdgeMap::kNone);
+        m.opposite.assign(3 * nf, EdgeMap::kNone);
+    }
+    for (std::size_t v = 0; v < n; ++v) {
+        const std::uint32_t end = start[v + 1];
+        sort_bucket(he.get() + start[v], he.get() + end);
+        for (std::uint32_t i = start[v], j = i; i < end; i = j) {  // one edge: [i, j)
+            const std::uint64_t b = he[i] >> 33;
+            const auto e = std::uint32_t(m.edges.size());
+            for (; j < end && he[j] >> 33 == b; ++j) {
+                const auto h = std::uint32_t(he[j] >> 1);
+                m.half_edge[j] = h;
+                if (per_half_edge) m.edge_of[h] = e;
+            }
+            m.offset.push_back(i);
+            m.edges.push_back({std::uint32_t(v), std::uint32_t(b), m.half_edge[i] / 3});
+            m.boundary_edges += j - i == 1;
+            m.non_manifold_edges += j - i > 2;
+            if (j - i != 2) continue;
+            if (!((he[i] ^ he[i + 1]) & 1)) {  // two in the same direction
+                ++m.misoriented_edges;
+            } else if (per_half_edge) {
+                m.opposite[m.half_edge[i]] = m.half_edge[i + 1];
+                m.opposite[m.half_edge[i + 1]] = m.half_edge[i];
+            }
+        }
+    }
+    m.offset.push_back(start[n]);
+    return m;
 }
 
 }  // namespace
+
+EdgeMap edge_map(const Mesh& mesh)
+{
+    return build_edge_map(mesh, true);
+}
 
 namespace {
 
@@ -135,61 +181,29 @@ std::vector<char> degenerate_face_mask(const Mesh& mesh)
 
 std::vector<Edge> unique_edges(const Mesh& mesh)
 {
-    // Half-edges are sorted by (key, face): the first of each key has the lowest face.
-    const auto he = sorted_half_edges(mesh);
-    std::vector<Edge> edges;
-    edges.reserve(he.size() / 2 + 1);
-    for (std::size_t i = 0; i < he.size(); ++i)
-        if (i == 0 || he[i].key != he[i - 1].key)
-            edges.push_back({std::uint32_t(he[i].key >> 32), std::uint32_t(he[i].key & 0xffffffffu), he[i].face});
-    return edges;
+    EdgeMap m = build_edge_map(mesh, false);
+    return std::move(m.edges);
 }
 
 std::vector<char> boundary_vertex_mask(const Mesh& mesh)
 {
     std::vector<char> mask(mesh.n_vertices(), 0);
-    const auto he = sorted_half_edges(mesh);
-    for (std::size_t i = 0; i < he.size();) {
-        std::size_t j = i;
-        while (j < he.size() && he[j].key == he[i].key) ++j;
-        if (j - i != 2) {
-            mask[he[i].key >> 32] = 1;
-            mask[he[i].key & 0xffffffffu] = 1;
-        }
-        i = j;
-    }
+    const EdgeMap m = build_edge_map(mesh, false);
+    for (std::size_t e = 0; e < m.size(); ++e)
+        if (m.count(e) != 2) mask[m.edges[e].a] = mask[m.edges[e].b] = 1;
     return mask;
 }
 
 namespace {
 
-// One pass over the sorted half-edges, a key at a time: counts the edges, the
-// boundary and non-manifold ones and the orientation conflicts, unites the
-// ends of each edge in comp and returns the boundary edge keys.
-std::vector<std::uint64_t> half_edge_pass(const std::vector<HalfEdge>& he, UnionFind& comp, TopologyReport& r)
+// The edge counts, and the ends of each edge united in comp.
+void edge_pass(const EdgeMap& m, UnionFind& comp, TopologyReport& r)
 {
-    std::vector<std::uint64_t> boundary;
-    for (std::size_t i = 0; i < he.size();) {
-        std::size_t j = i;
-        std::size_t nfwd = 0;
-        while (j < he.size() && he[j].key == he[i].key) {
-            nfwd += he[j].forward ? 1 : 0;
-            ++j;
-        }
-        const std::size_t count = j - i;
-        ++r.edges;
-        const auto a = std::uint32_t(he[i].key >> 32);
-        const auto b = std::uint32_t(he[i].key & 0xffffffffu);
-        comp.unite(a, b);
-        if (count == 1) {
-            ++r.boundary_edges;
-            boundary.push_back(he[i].key);
-        }
-        if (count > 2) ++r.non_manifold_edges;
-        if (count == 2 && nfwd != 1) ++r.orientation_conflicts;
-        i = j;
-    }
-    return boundary;
+    r.edges = m.size();
+    r.boundary_edges = m.boundary_edges;
+    r.non_manifold_edges = m.non_manifold_edges;
+    r.orientation_conflicts = m.misoriented_edges;
+    for (const Edge& e : m.edges) comp.unite(e.a, e.b);
 }
 
 // Isolated vertices (in no face) and the components of the others.
@@ -211,12 +225,13 @@ void count_components(const Mesh& mesh, UnionFind& comp, TopologyReport& r)
 }
 
 // Boundary loops: connected components of the boundary-edge graph.
-void count_boundary_loops(std::size_t n, const std::vector<std::uint64_t>& boundary, TopologyReport& r)
+void count_boundary_loops(std::size_t n, const EdgeMap& m, TopologyReport& r)
 {
     UnionFind bl(n);
     std::vector<char> on_boundary(n, 0);
-    for (auto k : boundary) {
-        auto a = std::uint32_t(k >> 32), b = std::uint32_t(k & 0xffffffffu);
+    for (std::size_t e = 0; e < m.size(); ++e) {
+        if (m.count(e) != 1) continue;
+        const auto a = m.edges[e].a, b = m.edges[e].b;
         on_boundary[a] = on_boundary[b] = 1;
         bl.unite(a, b);
     }
@@ -307,13 +322,13 @@ TopologyReport topology_report(const Mesh& mesh)
 
     // A Progress (progress.h) can stop the report between its serial steps.
     const Progress* progress = current_progress();
-    const auto he = sorted_half_edges(mesh);
+    const EdgeMap edges = build_edge_map(mesh, false);  // no per-half-edge tables
     check_cancelled(progress);
     UnionFind comp(n);
-    const std::vector<std::uint64_t> boundary = half_edge_pass(he, comp, r);
+    edge_pass(edges, comp, r);
     count_components(mesh, comp, r);
     check_cancelled(progress);
-    count_boundary_loops(n, boundary, r);
+    count_boundary_loops(n, edges, r);
     check_cancelled(progress);
     count_duplicate_faces(mesh, r);
     check_cancelled(progress);

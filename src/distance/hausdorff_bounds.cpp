@@ -1,12 +1,13 @@
 #include "distance/hausdorff_bounds.h"
 
+#include "meshdiff/core/topology.h"
+
 #include "geometry/point_triangle_x4.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <tuple>
 #include <vector>
 
 namespace meshdiff::detail {
@@ -229,46 +230,17 @@ double piece_bound(const Piece& q, std::uint32_t t, int depth, double goal, cons
 
 }  // namespace
 
-// For each face of \p m, a face across each of its three edges (kNone on a
-// boundary edge or a collapsed one; around a non-manifold edge the faces are
-// linked in a cycle, so every one is reachable): the graph of the descents.
+// Each half-edge of an edge with two or more points at the face of the next
+// one, the last at the first's (EdgeMap order: by face, then corner).
 Neighbours edge_neighbours(const Mesh& m)
 {
-    struct HalfEdge
-    {
-        std::int32_t lo, hi;
-        std::uint32_t face;
-        std::uint32_t k;
-    };
-    // Sorted by (lo, hi, face, k), a key unique per half-edge: a counting
-    // sort by lo, then small sorts per vertex.
-    const std::size_t nv = m.n_vertices();
-    std::vector<std::uint32_t> start(nv + 1, 0);
-    for (std::size_t f = 0; f < m.n_faces(); ++f)
-        for (std::uint32_t k = 0; k < 3; ++k) {
-            const std::int32_t v0 = m.faces[f][k], v1 = m.faces[f][(k + 1) % 3];
-            if (v0 != v1) ++start[std::size_t(std::min(v0, v1)) + 1];
-        }
-    for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-    std::vector<HalfEdge> e(start[nv]);
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t f = 0; f < m.n_faces(); ++f)
-        for (std::uint32_t k = 0; k < 3; ++k) {
-            const std::int32_t v0 = m.faces[f][k], v1 = m.faces[f][(k + 1) % 3];
-            if (v0 != v1)
-                e[fill[std::size_t(std::min(v0, v1))]++] = {std::min(v0, v1), std::max(v0, v1), std::uint32_t(f), k};
-        }
-    for (std::size_t v = 0; v < nv; ++v)
-        std::sort(e.begin() + start[v], e.begin() + start[v + 1], [](const HalfEdge& x, const HalfEdge& y) {
-            return std::tie(x.hi, x.face, x.k) < std::tie(y.hi, y.face, y.k);
-        });
-    std::vector<std::array<std::uint32_t, 3>> nbr(m.n_faces(), {kNone, kNone, kNone});
-    for (std::size_t i = 0; i < e.size();) {
-        std::size_t j = i + 1;
-        while (j < e.size() && e[j].lo == e[i].lo && e[j].hi == e[i].hi) ++j;
-        if (j - i >= 2)
-            for (std::size_t q = i; q < j; ++q) nbr[e[q].face][e[q].k] = e[q + 1 < j ? q + 1 : i].face;
-        i = j;
+    const EdgeMap edges = edge_map(m);
+    Neighbours nbr(m.n_faces(), {kNone, kNone, kNone});
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+        const std::size_t count = edges.count(e);
+        if (count < 2) continue;
+        const std::uint32_t* h = edges.begin(e);
+        for (std::size_t q = 0; q < count; ++q) nbr[h[q] / 3][h[q] % 3] = h[q + 1 < count ? q + 1 : 0] / 3;
     }
     return nbr;
 }

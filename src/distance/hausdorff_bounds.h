@@ -72,7 +72,8 @@ using Neighbours = std::vector<std::array<std::uint32_t, 3>>;
 
 //! For each face of \p m, a face across each of its three edges (kNone on a
 //! boundary edge or a collapsed one; around a non-manifold edge the faces are
-//! linked in a cycle, so every one is reachable): the graph of the descents.
+//! linked in a cycle, in EdgeMap order, so every one is reachable): the graph
+//! of the descents.
 Neighbours edge_neighbours(const Mesh& m);
 
 //! Local descent over B's faces: face \p t of B is at distance \p d from

@@ -102,15 +102,14 @@ ClosestFeature closest_feature(const Vec3& p, const Vec3& a, const Vec3& b, cons
 namespace {
 
 // The facts that decide whether a mesh can be signed against, counted as
-// topology_report() counts them (the non-manifold vertices only when the edges
-// are fine), and the opposite half-edge of each half-edge of a closed,
-// edge-manifold, consistently oriented mesh. One pass over the half-edges and
-// the faces around their first vertex (no sort).
+// topology_report() counts them, from the same EdgeMap (the non-manifold
+// vertices only when the edges are fine), and the opposite half-edge of each
+// half-edge of a closed, edge-manifold, consistently oriented mesh.
 struct SignFacts
 {
     std::size_t boundary_edges = 0, non_manifold_edges = 0, orientation_conflicts = 0, degenerate_faces = 0,
                 non_manifold_vertices = 0;
-    std::vector<std::uint32_t> opposite;  // per half-edge 3 f + k: the opposite half-edge 3 g + j
+    std::vector<std::uint32_t> opposite;  // per half-edge 3 f + k: the opposite half-edge 3 g + j (EdgeMap)
     bool ok() const
     {
         return !boundary_edges && !non_manifold_edges && !orientation_conflicts && !degenerate_faces &&
@@ -124,50 +123,11 @@ SignFacts sign_facts(const Mesh& mesh)
     const std::size_t nf = mesh.n_faces();
     const std::vector<char> degenerate = degenerate_face_mask(mesh);
     r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
-    const Adjacency vf = vertex_faces(mesh);
-    constexpr std::uint32_t kNone = ~0u;
-    r.opposite.assign(3 * nf, kNone);
-    for (std::size_t f = 0; f < nf; ++f) {
-        const Face& t = mesh.faces[f];
-        for (std::size_t k = 0; k < 3; ++k) {
-            const auto u = std::uint32_t(t[k]), v = std::uint32_t(t[(k + 1) % 3]);
-            if (u == v) continue;  // a repeated corner: no edge (topology.h)
-            const std::size_t self = 3 * f + k;
-            std::size_t same = 0, opp = 0, first = self, opposite = kNone;
-            // The other half-edges of {u, v}, from the faces around the end of
-            // lower degree (a hub of degree D then costs O(D), not O(D^2)).
-            auto found = [&](std::size_t h, bool same_direction) {
-                if (h == self) return;
-                if (same_direction) {
-                    ++same;
-                } else {
-                    ++opp;
-                    opposite = h;
-                }
-                first = std::min(first, h);
-            };
-            const bool at_u = vf.degree(u) <= vf.degree(v);
-            const std::uint32_t w = at_u ? u : v;
-            const std::uint32_t x = at_u ? v : u;
-            for (auto g = vf.begin(w); g != vf.end(w); ++g) {
-                const Face& s = mesh.faces[*g];
-                for (std::size_t j = 0; j < 3; ++j) {
-                    if (std::uint32_t(s[j]) != w) continue;
-                    const std::size_t out = 3 * std::size_t(*g) + j;           // w -> s[j + 1]
-                    const std::size_t in = 3 * std::size_t(*g) + (j + 2) % 3;  // s[j + 2] -> w
-                    // At u: u -> v is the same direction, v -> u the opposite; at v the reverse.
-                    if (std::uint32_t(s[(j + 1) % 3]) == x) found(out, at_u);
-                    if (std::uint32_t(s[(j + 2) % 3]) == x) found(in, !at_u);
-                }
-            }
-            if (opp == 1 && same == 0) r.opposite[self] = std::uint32_t(opposite);
-            if (first != self) continue;  // the edge is counted at its first half-edge
-            const std::size_t count = 1 + same + opp;
-            if (count == 1) ++r.boundary_edges;
-            if (count > 2) ++r.non_manifold_edges;
-            if (count == 2 && same == 1) ++r.orientation_conflicts;
-        }
-    }
+    EdgeMap edges = edge_map(mesh);
+    r.boundary_edges = edges.boundary_edges;
+    r.non_manifold_edges = edges.non_manifold_edges;
+    r.orientation_conflicts = edges.misoriented_edges;
+    r.opposite = std::move(edges.opposite);
     if (r.boundary_edges || r.non_manifold_edges || r.orientation_conflicts || r.degenerate_faces) return r;
     // Fans: around each vertex, the corners linked through the opposite
     // half-edges form cycles; more than one cycle is a non-manifold vertex.

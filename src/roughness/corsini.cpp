@@ -17,13 +17,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-struct HalfEdge
-{
-    std::uint64_t key;  // (min << 32) | max
-    std::uint32_t face;
-    bool operator<(const HalfEdge& o) const { return key != o.key ? key < o.key : face < o.face; }
-};
-
 // The dihedral angle of each unique edge (sorted by (a, b)), NaN where none,
 // with the edge ends.
 struct DihedralEdges
@@ -38,31 +31,25 @@ DihedralEdges dihedral_edges(const Mesh& mesh)
     std::vector<Vec3> normal(mesh.n_faces(), Vec3::Zero());
     for (std::size_t f = 0; f < mesh.n_faces(); ++f)
         if (!degenerate[f]) normal[f] = face_cross(mesh, f).normalized();
-    std::vector<HalfEdge> he;
-    he.reserve(3 * mesh.n_faces());
-    for (std::size_t f = 0; f < mesh.n_faces(); ++f)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t p = mesh.faces[f][k], q = mesh.faces[f][(k + 1) % 3];
-            if (p == q) continue;
-            const std::uint64_t lo = std::min(p, q), hi = std::max(p, q);
-            he.push_back({(lo << 32) | hi, std::uint32_t(f)});
-        }
-    std::sort(he.begin(), he.end());
+    const EdgeMap edges = edge_map(mesh);
     DihedralEdges e;
-    for (std::size_t i = 0; i < he.size();) {
-        std::size_t j = i;
-        while (j < he.size() && he[j].key == he[i].key) ++j;
+    e.a.reserve(edges.size());
+    e.b.reserve(edges.size());
+    e.theta.reserve(edges.size());
+    for (std::size_t k = 0; k < edges.size(); ++k) {
         double theta = kNaN;
         // A repeated face (the same face twice on one edge) is not a pair.
-        if (j - i == 2 && he[i].face != he[i + 1].face && !degenerate[he[i].face] && !degenerate[he[i + 1].face]) {
-            const Vec3& n1 = normal[he[i].face];
-            const Vec3& n2 = normal[he[i + 1].face];
-            theta = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+        if (edges.count(k) == 2) {
+            const std::uint32_t f = edges.begin(k)[0] / 3, g = edges.begin(k)[1] / 3;
+            if (f != g && !degenerate[f] && !degenerate[g]) {
+                const Vec3& n1 = normal[f];
+                const Vec3& n2 = normal[g];
+                theta = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
+            }
         }
-        e.a.push_back(std::uint32_t(he[i].key >> 32));
-        e.b.push_back(std::uint32_t(he[i].key & 0xffffffffu));
+        e.a.push_back(edges.edges[k].a);
+        e.b.push_back(edges.edges[k].b);
         e.theta.push_back(theta);
-        i = j;
     }
     return e;
 }

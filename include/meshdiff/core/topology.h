@@ -1,7 +1,8 @@
 //! \file topology.h
 //! \brief The topology of a triangle mesh: vertex adjacency, vertex-face
-//! incidence, unique edges, boundary and degenerate masks, and the topology
-//! report of METHOD.md section 1. All of meshdiff takes these from here.
+//! incidence, unique edges and their half-edges (EdgeMap), boundary and
+//! degenerate masks, and the topology report of METHOD.md section 1. All of
+//! meshdiff takes these from here.
 //!
 //! "Degenerate" has one meaning in meshdiff: a face is degenerate when it has a
 //! repeated corner or its area is zero relative to the mesh, |cross| <=
@@ -50,8 +51,47 @@ struct Edge
 
 //! The unique undirected edges of the faces, sorted by (a, b), each with the
 //! lowest face that has it. Edges of a face with a repeated corner are kept
-//! unless their two ends coincide.
+//! unless their two ends coincide. (edge_map(mesh).edges, without the rest.)
 std::vector<Edge> unique_edges(const Mesh& mesh);
+
+//! The half-edges of a mesh grouped by undirected edge: the one edge table of
+//! meshdiff (topology report, edge sampling, dihedral angles, the descents of
+//! the certified Hausdorff distance, the pseudo-normals of signed distances).
+//! Half-edge h = 3 f + k runs from corner k of face f to corner k + 1 (mod 3);
+//! a collapsed corner (both ends the same vertex) is on no edge. Edge e has
+//! count(e) half-edges: 1 is a boundary edge, more than 2 a non-manifold one; a
+//! face that has an edge twice (a repeated face, or a repeated corner) counts
+//! twice.
+struct EdgeMap
+{
+    //! No edge (of a collapsed corner), no opposite half-edge.
+    static constexpr std::uint32_t kNone = 0xffffffffu;
+
+    std::vector<Edge> edges;            //!< as unique_edges(): sorted by (a, b), each with its lowest face
+    std::vector<std::uint32_t> offset;  //!< size edges.size() + 1, into half_edge
+    //! The half-edges of edge e, half_edge[offset[e] .. offset[e+1]-1], in
+    //! ascending order (so by face, then corner).
+    std::vector<std::uint32_t> half_edge;
+    std::vector<std::uint32_t> edge_of;  //!< per half-edge 3 f + k: its edge, kNone for a collapsed corner
+    //! Per half-edge 3 f + k: the other half-edge of its edge where the edge has
+    //! exactly two and they run in opposite directions; kNone otherwise.
+    std::vector<std::uint32_t> opposite;
+    //! The edges with one half-edge, with more than two, and with two in the
+    //! same direction (an orientation conflict), as topology_report() counts them.
+    std::size_t boundary_edges = 0, non_manifold_edges = 0, misoriented_edges = 0;
+
+    std::size_t size() const { return edges.size(); }
+    std::size_t count(std::size_t e) const { return offset[e + 1] - offset[e]; }
+    const std::uint32_t* begin(std::size_t e) const { return half_edge.data() + offset[e]; }
+    const std::uint32_t* end(std::size_t e) const { return half_edge.data() + offset[e + 1]; }
+    //! Two half-edges in the same direction.
+    bool misoriented(std::size_t e) const { return count(e) == 2 && opposite[half_edge[offset[e]]] == kNone; }
+};
+
+//! The EdgeMap of \p mesh: a counting sort of the half-edges on the lower end
+//! of their edge, then a sort per vertex (a hub of degree D costs D log D).
+//! Throws InvalidMeshError when 3 x faces does not fit below EdgeMap::kNone.
+EdgeMap edge_map(const Mesh& mesh);
 
 //! Mean length over the edges of \p adj (vertex_adjacency() of \p mesh), each
 //! edge counted once; 0 without edges.
