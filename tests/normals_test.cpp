@@ -37,8 +37,6 @@ void add_fan(Mesh& mesh, const Vec3& u, const Vec3& v, const std::vector<double>
         mesh.faces.push_back({0, first + k, first + (k + 1) % n});
 }
 
-const double kPi = 3.14159265358979323846;
-
 }  // namespace
 
 TEST(VertexNormals, OutwardOnTheSphereAndZeroWhereFacesCancel)

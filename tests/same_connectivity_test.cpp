@@ -1,5 +1,6 @@
 #include "meshdiff/distance/same_connectivity.h"
 
+#include "meshdiff/core/tolerances.h"
 #include "meshdiff/io/io.h"
 #include "meshdiff/studies/shapes.h"
 
@@ -14,7 +15,6 @@ using namespace meshdiff;
 namespace {
 
 const std::string kData = MESHDIFF_TEST_DATA_DIR;
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 

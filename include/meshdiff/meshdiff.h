@@ -11,6 +11,7 @@
 
 #include "meshdiff/core/mesh.h"
 #include "meshdiff/core/progress.h"
+#include "meshdiff/core/tolerances.h"
 #include "meshdiff/core/topology.h"
 
 #include "meshdiff/io/facts.h"

@@ -1,5 +1,6 @@
 #include "meshdiff/distance/hausdorff.h"
 
+#include "meshdiff/core/tolerances.h"
 #include "meshdiff/error.h"
 #include "meshdiff/geometry/point_triangle.h"
 
@@ -25,9 +26,6 @@ using detail::descend_point;
 using detail::face_distance;
 using detail::kMaxDepth;
 using detail::kNone;
-
-// Floor of the tolerance, relative to the largest coordinate magnitude.
-constexpr double kRoundingFloor = 1e-13;
 
 // A candidate for the lower bound: a point of A and its closest point of B.
 struct Candidate
@@ -89,7 +87,7 @@ struct Certification
           b(mesh_b),
           b_index(index_b),
           options(opts),
-          floor(kRoundingFloor * std::max(largest_coordinate(a), largest_coordinate(b))),
+          floor(kHausdorffRoundingFloor * std::max(largest_coordinate(a), largest_coordinate(b))),
           budget(options.max_evaluations ? options.max_evaluations
                                          : 2'000'000 + 20 * (std::size_t(a.n_faces()) + b.n_faces())),
           target(b, b_index)

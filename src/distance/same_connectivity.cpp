@@ -1,5 +1,6 @@
 #include "meshdiff/distance/same_connectivity.h"
 
+#include "meshdiff/core/tolerances.h"
 #include "meshdiff/core/topology.h"
 
 #include "core/compensated_sum.h"
@@ -14,8 +15,6 @@ namespace meshdiff {
 namespace {
 
 using Sum = detail::CompensatedSum;  // sequential, in index order
-
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 

@@ -1,5 +1,6 @@
 #include "meshdiff/distance/signed_distance.h"
 
+#include "meshdiff/core/tolerances.h"
 #include "meshdiff/core/topology.h"
 #include "meshdiff/error.h"
 
@@ -16,8 +17,6 @@
 namespace meshdiff {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 ClosestFeature feature(const Vec3& point, FeatureKind kind, int index)
 {

@@ -1,5 +1,6 @@
 #include "meshdiff/geometry/normalize.h"
 
+#include "meshdiff/core/tolerances.h"
 #include "meshdiff/error.h"
 
 #include <cmath>
@@ -48,7 +49,7 @@ Normalization area_normalization(const Mesh& mesh)
     Normalization n;
     n.method = NormalizeMethod::Area;
     n.center = Vec3(double(sx / total), double(sy / total), double(sz / total));
-    n.scale = std::sqrt(double(total) / (4.0 * M_PI));
+    n.scale = std::sqrt(double(total) / (4.0 * kPi));
     if (!(n.scale > 0.0) || !std::isfinite(n.scale))
         throw InvalidMeshError("normalisation (area): the mesh has no extent");
     return n;

@@ -1,12 +1,10 @@
 #include "meshdiff/geometry/normals.h"
 
+#include "meshdiff/core/tolerances.h"
+
 #include <cmath>
 
 namespace meshdiff {
-
-namespace {
-constexpr double kMinNormalRatio = 1e-6;
-}  // namespace
 
 std::vector<Vec3> vertex_normals(const Mesh& mesh)
 {

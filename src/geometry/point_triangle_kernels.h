@@ -17,7 +17,7 @@ inline bool is_thin_triangle(const Vec3& a, const Vec3& b, const Vec3& c)
 {
     const Vec3 ab = b - a;
     const Vec3 ac = c - a;
-    constexpr double kThinTriangleSine2 = 1e-16;  // kThinTriangleSine^2
+    constexpr double kThinTriangleSine2 = 1e-16;  // kThinTriangleSine^2 (tolerances.h), as a literal
     return !(ab.cross(ac).squaredNorm() > kThinTriangleSine2 * ab.squaredNorm() * ac.squaredNorm());
 }
 

@@ -1,5 +1,6 @@
 #include "meshdiff/roughness/curvature.h"
 
+#include "meshdiff/core/tolerances.h"
 #include "meshdiff/error.h"
 #include "meshdiff/geometry/cotangent.h"
 #include "meshdiff/geometry/normals.h"
@@ -170,8 +171,6 @@ struct FitBuffers
 // the squared distance (in units of h) below which a neighbour coincides with
 // the vertex.
 constexpr int kJetColumns = 9;
-constexpr double kJetRankThreshold = 1e-10;
-constexpr double kJetCoincident = 1e-20;
 
 // The jet fit's matrices (kJetColumns columns, at most \p Rows rows).
 template <int Rows>
@@ -294,7 +293,7 @@ FitResult fit_with(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& nor
     const double h = mean_distance(mesh, p, nbrs);
     if (!(h > 0.0)) return FitResult::Failed;
     const double inv_h = 1.0 / h;
-    const double cos_max = std::cos(opt.max_normal_angle_deg * M_PI / 180.0);
+    const double cos_max = std::cos(opt.max_normal_angle_deg * kPi / 180.0);
     // Neighbour q in the scaled tangent frame, and its row weight.
     auto local = [&](std::uint32_t q) {
         const Vec3 d = (mesh.points[q] - p) * inv_h;

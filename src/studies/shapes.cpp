@@ -1,5 +1,6 @@
 #include "meshdiff/studies/shapes.h"
 
+#include "meshdiff/core/tolerances.h"
 #include "meshdiff/error.h"
 #include "studies/random.h"
 
@@ -14,8 +15,6 @@
 namespace meshdiff {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Uniform in [-1, 1) from one raw output (studies/random.h, shared with noise.cpp).
 using detail::uniform_pm1;

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/tolerances.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -21,10 +22,7 @@
 
 namespace meshdiff {
 
-//! A face is degenerate (zero area) when |cross| <= kDegenerateArea x diag^2,
-//! diag the bounding-box diagonal of its mesh: at 1e-14 this is area at the
-//! level of rounding of the coordinates, so no real face of a mesh is lost.
-constexpr double kDegenerateArea = 1e-14;
+// kDegenerateArea, the one rule of a degenerate face, is in tolerances.h.
 
 //! Compressed sparse row adjacency: the neighbours of vertex i are
 //! `index[offset[i]] .. index[offset[i+1]-1]`, sorted ascending, without i.

@@ -21,6 +21,7 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/tolerances.h"
 #include "meshdiff/core/topology.h"
 
 #include <Eigen/Core>
@@ -32,8 +33,8 @@
 
 namespace meshdiff {
 
-//! The sine below which a corner's cotangent counts as 0 (see the file comment).
-constexpr double kFlatCornerSine = 1e-12;
+// kFlatCornerSine, the sine below which a corner's cotangent counts as 0 (see
+// the file comment), is in core/tolerances.h.
 
 //! cot of the angle between \p a and \p b; 0 for a flat corner.
 inline double cot(const Vec3& a, const Vec3& b)

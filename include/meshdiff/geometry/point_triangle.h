@@ -17,14 +17,14 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/tolerances.h"
 
 #include <cstdint>
 
 namespace meshdiff {
 
-//! Sine of the angle at corner 0 below which a triangle is queried as the union
-//! of its edges (see the file comment).
-constexpr double kThinTriangleSine = 1e-8;
+// kThinTriangleSine, the sine below which a triangle is queried as the union
+// of its edges (see the file comment), is in core/tolerances.h.
 
 //! The closest point of a mesh (or triangle) to a query point.
 struct ClosestPoint
