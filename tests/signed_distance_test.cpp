@@ -471,3 +471,29 @@ TEST(SignedDistance, HubVerticesOfAClosedDoubleCone)
     EXPECT_NE(sign_unavailable_reason(pinched, "M").find("has 1 non-manifold vertex"), std::string::npos)
         << sign_unavailable_reason(pinched, "M");
 }
+
+// Regression (issue 27's shared edge table): a face with a repeated corner, passed as arrays (the readers drop
+// it), made the sign check count a non-manifold edge twice when the corner's vertex had the lower degree; the
+// reason now gives topology_report()'s counts.
+TEST(SignAvailability, CollapsedCornerFacesCountTheirEdgesAsTheTopologyReportDoes)
+{
+    const Mesh sphere = icosphere(1).mesh;
+    const Face f = sphere.faces[0];  // each extra face lies on an edge of face 0: that edge gets 4 half-edges
+    for (const Face extra : {Face{f[0], f[0], f[1]}, Face{f[1], f[0], f[0]}, Face{f[2], f[2], f[0]}}) {
+        Mesh m = sphere;
+        m.faces.push_back(extra);
+        const TopologyReport t = topology_report(m);
+        EXPECT_GT(t.non_manifold_edges, 0u);
+        const std::string reason = sign_unavailable_reason(m, "M");
+        ASSERT_FALSE(reason.empty());
+        if (t.non_manifold_edges) {
+            EXPECT_NE(reason.find(fmt::format("{} non-manifold edge", t.non_manifold_edges)), std::string::npos)
+                << reason;
+        } else {
+            EXPECT_EQ(reason.find("non-manifold edge"), std::string::npos) << reason;
+        }
+        if (t.boundary_edges) {
+            EXPECT_NE(reason.find(fmt::format("{} boundary edge", t.boundary_edges)), std::string::npos) << reason;
+        }
+    }
+}
