@@ -14,7 +14,12 @@ folder's README.md, before the change they guard):
   - per-vertex outputs (H at every vertex; D_1, D_5 and D_20 at every
     STRIDE-th vertex) are within REL_VERTEX of the stored largest absolute
     value of that output over all vertices, and NaN (undefined) exactly where
-    the stored value is NaN.
+    the stored value is NaN. For D_L that scale is the larger of max |D_L| and
+    max |H|: D_L = H - (mean of H over the ring) carries the rounding of H,
+    and where the surface is a sphere (true D_L = 0) max |D_L| is 2,000 times
+    below max |H|, so a change of H in its last bits (a few 1e-16) would
+    exceed 1e-12 of max |D_L| (issue 30 states the bound against max |D_L|;
+    this deviation is reported there).
 It prints the worst change seen of each kind.
 
 Usage:
@@ -196,7 +201,7 @@ def check(meshdiff, data_dir, work):
             errors.append(f"{mesh} {fit}: {n} vertices became {len(columns['H'])}")
             continue
         for name in meta["columns"]:
-            scale = meta["max_abs"][name]
+            scale = meta["max_abs"][name] if name == "H" else max(meta["max_abs"][name], meta["max_abs"]["H"])
             for k, (a, b) in enumerate(zip(old[name], new[name])):
                 vertex = k if name == "H" else k * meta["stride"]
                 if math.isnan(a) or math.isnan(b):
@@ -207,7 +212,7 @@ def check(meshdiff, data_dir, work):
                 worst_vertex.see(change, f"{mesh} {fit} {name} at vertex {vertex}: {a!r} -> {b!r}")
                 if change > REL_VERTEX:
                     errors.append(f"{mesh} {fit} {name} at vertex {vertex}: {a!r} became {b!r} "
-                                  f"(change {change:.3g} of the largest |{name}| {scale:.6g} > {REL_VERTEX:g})")
+                                  f"(change {change:.3g} of the scale {scale:.6g} > {REL_VERTEX:g})")
     print(f"worst relative change of an aggregate: {worst_aggregate.value:.3g} ({worst_aggregate.where})")
     print(f"worst change of a per-vertex output, relative to its largest |value|: {worst_vertex.value:.3g} "
           f"({worst_vertex.where})")

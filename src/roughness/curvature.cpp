@@ -6,6 +6,7 @@
 #include "meshdiff/geometry/normals.h"
 
 #include "core/stage_progress.h"
+#include "roughness/normal_equations.h"
 
 #include <fmt/format.h>
 #include <Eigen/QR>
@@ -22,6 +23,9 @@ namespace meshdiff {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Relative rank threshold of the Goldfeather-Interrante fits' QRs.
+constexpr double kCubicRankThreshold = 1e-10;
 
 enum class FitResult
 {
@@ -328,8 +332,18 @@ FitResult fit_with(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& nor
             }
         }
         if (r >= 7) {
+            // Well conditioned (nearly every fit): normal equations; else, or
+            // if H is not finite, the QR decides as before.
+            std::array<double, 7> Xn;
+            if (detail::solve_by_normal_equations<7>(s.M.topRows(r), s.rhs.head(r), kCubicRankThreshold, Xn)) {
+                const double Hs = -(Xn[0] + Xn[2]) / 2.0;
+                if (std::isfinite(Hs)) {
+                    H = Hs * inv_h;
+                    return FitResult::Cubic;
+                }
+            }
             auto& qr = s.qr7;
-            qr.setThreshold(1e-10);
+            qr.setThreshold(kCubicRankThreshold);
             qr.compute(s.M.topRows(r));
             if (qr.rank() == 7) {
                 const Eigen::Matrix<double, 7, 1> X = qr.solve(s.rhs.head(r));
@@ -352,7 +366,7 @@ FitResult fit_with(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& nor
     }
     if (r < 3) return FitResult::Failed;
     auto& qr = s.qr3;
-    qr.setThreshold(1e-10);
+    qr.setThreshold(kCubicRankThreshold);
     qr.compute(s.Q);
     if (qr.rank() < 3) return FitResult::Failed;
     const Eigen::Vector3d X = qr.solve(s.qrhs);
@@ -417,6 +431,25 @@ FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::ve
         s.M.row(rows) *= wt;
         s.rhs(rows++) = wt * d.dot(N);
     }
+    // H and the steep flag from the jet's first 5 coefficients; false if H is not finite.
+    auto mean_curvature_of = [&](double fx, double fy, double fxx_2, double fxy, double fyy_2) {
+        const double fxx = 2.0 * fxx_2, fyy = 2.0 * fyy_2;
+        const double g = 1.0 + fx * fx + fy * fy;
+        const double Hs =
+            -((1.0 + fy * fy) * fxx - 2.0 * fx * fy * fxy + (1.0 + fx * fx) * fyy) / (2.0 * g * std::sqrt(g));
+        if (!std::isfinite(Hs)) return false;
+        H = Hs * inv_h;
+        steep = fx * fx + fy * fy > kJetSteepSlope * kJetSteepSlope;
+        return true;
+    };
+    // Well conditioned (nearly every fit): the cubic jet by normal equations;
+    // else, or if H is not finite, the QR decides as before.
+    if (rows >= kJetColumns) {
+        std::array<double, kJetColumns> J;
+        if (detail::solve_by_normal_equations<kJetColumns>(s.M.topRows(rows), s.rhs.head(rows), kJetRankThreshold, J) &&
+            mean_curvature_of(J[0], J[1], J[2], J[3], J[4]))
+            return FitResult::Cubic;
+    }
     // The cubic jet, then the degree-2 jet on its first 5 columns.
     for (const Eigen::Index cols : {Eigen::Index(kJetColumns), Eigen::Index(5)}) {
         if (rows < cols) continue;
@@ -425,13 +458,7 @@ FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::ve
         qr.compute(s.M.topLeftCorner(rows, cols));
         if (qr.rank() < cols) continue;
         const Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kJetColumns, 1> J = qr.solve(s.rhs.head(rows));
-        const double fx = J(0), fy = J(1), fxx = 2.0 * J(2), fxy = J(3), fyy = 2.0 * J(4);
-        const double g = 1.0 + fx * fx + fy * fy;
-        const double Hs =
-            -((1.0 + fy * fy) * fxx - 2.0 * fx * fy * fxy + (1.0 + fx * fx) * fyy) / (2.0 * g * std::sqrt(g));
-        if (!std::isfinite(Hs)) continue;
-        H = Hs * inv_h;
-        steep = fx * fx + fy * fy > kJetSteepSlope * kJetSteepSlope;
+        if (!mean_curvature_of(J(0), J(1), J(2), J(3), J(4))) continue;
         return cols == kJetColumns ? FitResult::Cubic : FitResult::Quadric;
     }
     return FitResult::Failed;

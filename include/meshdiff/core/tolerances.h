@@ -26,6 +26,14 @@
 //!   relative rank threshold of its column-pivoting QR, and the squared distance
 //!   (in units of the local edge length h) below which a neighbour coincides
 //!   with the vertex and is left out.
+//! - kNormalEquationsMaxCondition and kNormalEquationsRankMargin guard the
+//!   curvature fits' fast solve (roughness/normal_equations.h): equilibrated
+//!   normal equations square the condition number kappa, so they are used only
+//!   where kappa is certainly below 1e4 (kappa^2 u <= 1e-8, which one
+//!   refinement step brings to the QR's own rounding) and where the fit's QR
+//!   would certainly find full rank, by a factor 1e3 beyond its rank threshold
+//!   (kJetRankThreshold); every other fit is solved by the QR as before, so
+//!   every rank decision is the QR's.
 #pragma once
 
 namespace meshdiff {
@@ -54,6 +62,16 @@ constexpr double kMinNormalRatio = 1e-6;
 
 //! Relative rank threshold of the jet fit's QR (curvature.h).
 constexpr double kJetRankThreshold = 1e-10;
+
+//! Largest condition number (bounded above) of a curvature fit's column-scaled
+//! matrix that is solved by normal equations rather than by the QR
+//! (roughness/normal_equations.h).
+constexpr double kNormalEquationsMaxCondition = 1e4;
+
+//! A curvature fit is solved by normal equations only when its QR would find
+//! full rank with pivots at least 1 / kNormalEquationsRankMargin times its
+//! rank threshold (roughness/normal_equations.h).
+constexpr double kNormalEquationsRankMargin = 1e-3;
 
 //! Squared distance, in units of h, below which a neighbour coincides with the
 //! vertex in the jet fit (curvature.h).

@@ -1,0 +1,134 @@
+//! \file roughness/normal_equations.h
+//! \brief The small least-squares solve of the curvature fits (curvature.cpp)
+//! by equilibrated normal equations, for well-conditioned systems only
+//! (issue 30, lever 1).
+//!
+//! min |M x - b| for M of C columns (7 or 9) and a few dozen rows: the columns
+//! scaled to unit norm (S = diag(1 / |M_j|)), the C x C Gram matrix
+//! (M S)^T (M S) = L L^T by Cholesky, x = S (L L^T)^-1 S M^T b, then one step of
+//! iterative refinement with the residual b - M x computed from M itself.
+//!
+//! It declines (returns false; the caller then solves by its column-pivoting
+//! QR, exactly as before) unless two bounds hold, both from
+//! sigma_min(M S) >= 1 / |L^-1|_F (L^-1 is computed):
+//! - accuracy: the condition number of M S, at most sqrt(C) |L^-1|_F, is below
+//!   kNormalEquationsMaxCondition (core/tolerances.h). The normal equations
+//!   square it: the first solution's relative error is of the order of
+//!   kappa^2 u <= 1e-8 (u = 1.1e-16), and the refinement step multiplies that
+//!   error by about kappa^2 u again, down to the level of the QR's own
+//!   rounding (kappa u);
+//! - rank: the caller's QR would find full rank, with a margin. The QR counts
+//!   a pivot |R_ii| as nonzero when it exceeds rank_threshold times its largest
+//!   pivot; every |R_ii| >= sigma_min(M) >= min_j |M_j| / |L^-1|_F, and the
+//!   largest pivot is at most max_j |M_j|. So when
+//!   |L^-1|_F max_j |M_j| / min_j |M_j| <= kNormalEquationsRankMargin / rank_threshold
+//!   the QR's rank is C by a factor 1 / kNormalEquationsRankMargin beyond its
+//!   own rounding, and the fit's rank decisions (the degree-2 and quadric
+//!   fallbacks) are the QR's, unchanged: a system near rank deficiency always
+//!   goes to the QR.
+//! Plain loops in a fixed order (no reduction whose order depends on the
+//! alignment of a buffer): the result depends on M and b alone, never on the
+//! thread or the buffer that holds them.
+#pragma once
+
+#include "meshdiff/core/tolerances.h"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace meshdiff::detail {
+
+//! Solves min |M x - b| (M: rows x C, rows >= C) into x, or returns false when
+//! the system is not certainly well conditioned (see the file comment).
+template <int C, class MatrixType, class VectorType>
+bool solve_by_normal_equations(const Eigen::MatrixBase<MatrixType>& M, const Eigen::MatrixBase<VectorType>& b,
+                               double rank_threshold, std::array<double, C>& x)
+{
+    const Eigen::Index rows = M.rows();
+    if (M.cols() != C || rows < C) return false;
+    // Lower triangle of M^T M and M^T b.
+    std::array<std::array<double, C>, C> G{};
+    std::array<double, C> c{};
+    for (Eigen::Index i = 0; i < rows; ++i) {
+        std::array<double, C> m;
+        for (int j = 0; j < C; ++j) m[j] = M(i, j);
+        const double bi = b(i);
+        for (int j = 0; j < C; ++j) {
+            c[j] += m[j] * bi;
+            for (int k = 0; k <= j; ++k) G[j][k] += m[j] * m[k];
+        }
+    }
+    // Equilibration: column norms d_j, scale s_j = 1 / d_j.
+    std::array<double, C> s;
+    double d_min = 0.0, d_max = 0.0;
+    for (int j = 0; j < C; ++j) {
+        if (!(G[j][j] > 0.0) || !std::isfinite(G[j][j])) return false;
+        const double d = std::sqrt(G[j][j]);
+        s[j] = 1.0 / d;
+        d_min = j == 0 ? d : std::min(d_min, d);
+        d_max = std::max(d_max, d);
+    }
+    // Cholesky of the scaled Gram matrix (unit diagonal), L in place.
+    std::array<std::array<double, C>, C> L{};
+    for (int j = 0; j < C; ++j) {
+        double djj = 1.0;
+        for (int k = 0; k < j; ++k) djj -= L[j][k] * L[j][k];
+        if (!(djj > 0.0)) return false;
+        L[j][j] = std::sqrt(djj);
+        const double inv = 1.0 / L[j][j];
+        for (int i = j + 1; i < C; ++i) {
+            double v = G[i][j] * s[i] * s[j];
+            for (int k = 0; k < j; ++k) v -= L[i][k] * L[j][k];
+            L[i][j] = v * inv;
+        }
+    }
+    // |L^-1|_F^2, column by column of the lower-triangular inverse.
+    double inv_norm2 = 0.0;
+    for (int j = 0; j < C; ++j) {
+        std::array<double, C> col{};
+        col[j] = 1.0 / L[j][j];
+        inv_norm2 += col[j] * col[j];
+        for (int i = j + 1; i < C; ++i) {
+            double v = 0.0;
+            for (int k = j; k < i; ++k) v -= L[i][k] * col[k];
+            col[i] = v / L[i][i];
+            inv_norm2 += col[i] * col[i];
+        }
+    }
+    if (!(double(C) * inv_norm2 <= kNormalEquationsMaxCondition * kNormalEquationsMaxCondition)) return false;
+    const double rank_bound = kNormalEquationsRankMargin / rank_threshold * d_min / d_max;
+    if (!(inv_norm2 <= rank_bound * rank_bound)) return false;
+
+    // x = S (L L^T)^-1 S r for a right-hand side r = M^T b (or M^T residual).
+    auto solve = [&](const std::array<double, C>& r, std::array<double, C>& out) {
+        std::array<double, C> y;
+        for (int i = 0; i < C; ++i) {
+            double v = r[i] * s[i];
+            for (int k = 0; k < i; ++k) v -= L[i][k] * y[k];
+            y[i] = v / L[i][i];
+        }
+        for (int i = C - 1; i >= 0; --i) {
+            double v = y[i];
+            for (int k = i + 1; k < C; ++k) v -= L[k][i] * y[k];
+            y[i] = v / L[i][i];
+        }
+        for (int i = 0; i < C; ++i) out[i] = y[i] * s[i];
+    };
+    solve(c, x);
+    // One refinement step: the residual from M, then M^T residual.
+    std::array<double, C> rc{};
+    for (Eigen::Index i = 0; i < rows; ++i) {
+        double r = b(i);
+        for (int j = 0; j < C; ++j) r -= M(i, j) * x[j];
+        for (int j = 0; j < C; ++j) rc[j] += M(i, j) * r;
+    }
+    std::array<double, C> dx;
+    solve(rc, dx);
+    for (int j = 0; j < C; ++j) x[j] += dx[j];
+    return true;
+}
+
+}  // namespace meshdiff::detail
