@@ -1,0 +1,107 @@
+// The curvature fits' normal-equations solve (src/roughness/normal_equations.h): it agrees with the QR on
+// well-conditioned systems and declines every system the QR would find rank-deficient or that is badly
+// conditioned, so the fits' rank decisions stay the QR's (issue 30, lever 1).
+#include "roughness/normal_equations.h"
+
+#include <gtest/gtest.h>
+#include <Eigen/QR>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace {
+
+using Matrix9 = Eigen::Matrix<double, Eigen::Dynamic, 9>;
+
+// Deterministic values in [-1, 1) from an integer hash.
+double hashed(std::uint64_t i)
+{
+    i = (i ^ (i >> 31)) * 0x7fb5d329728ea185ULL;
+    i = (i ^ (i >> 27)) * 0x81dadef4bc2dd44dULL;
+    i ^= i >> 33;
+    return double(i >> 11) / double(1ULL << 52) - 1.0;
+}
+
+// The jet's monomials of scattered points, rows weighted 1/|d|^4, and a right-hand side.
+void jet_system(int rows, std::uint64_t seed, Matrix9& M, Eigen::VectorXd& b)
+{
+    M.resize(rows, 9);
+    b.resize(rows);
+    for (int i = 0; i < rows; ++i) {
+        const double x = hashed(seed + 3 * std::uint64_t(i)), y = hashed(seed + 3 * std::uint64_t(i) + 1);
+        const double d2 = x * x + y * y + 0.5, wt = 1.0 / (d2 * d2);
+        M.row(i) << x, y, x * x, x * y, y * y, x * x * x, x * x * y, x * y * y, y * y * y;
+        M.row(i) *= wt;
+        b(i) = wt * (0.3 * x * x - 0.2 * x * y + 0.1 * y * y + 0.05 * hashed(seed + 3 * std::uint64_t(i) + 2));
+    }
+}
+
+TEST(NormalEquations, AgreesWithTheQrOnWellConditionedFits)
+{
+    for (std::uint64_t seed = 1; seed <= 200; ++seed) {
+        Matrix9 M;
+        Eigen::VectorXd b;
+        jet_system(20 + int(seed % 20), seed * 1000, M, b);
+        std::array<double, 9> x;
+        ASSERT_TRUE(meshdiff::detail::solve_by_normal_equations<9>(M, b, 1e-10, x)) << seed;
+        Eigen::ColPivHouseholderQR<Matrix9> qr(M);
+        const Eigen::VectorXd q = qr.solve(b);
+        for (int j = 0; j < 9; ++j) EXPECT_NEAR(x[std::size_t(j)], q(j), 1e-11 * q.cwiseAbs().maxCoeff()) << seed;
+    }
+}
+
+TEST(NormalEquations, DeclinesRankDeficientAndBadlyConditionedSystems)
+{
+    Matrix9 M;
+    Eigen::VectorXd b;
+    jet_system(20, 7, M, b);
+    std::array<double, 9> x;
+    // All points on a line y = 0.5 x: the columns are dependent.
+    Matrix9 line = M;
+    for (int i = 0; i < 20; ++i) {
+        const double t = hashed(100 + std::uint64_t(i)), u = 0.5 * t;
+        line.row(i) << t, u, t * t, t * u, u * u, t * t * t, t * t * u, t * u * u, u * u * u;
+    }
+    EXPECT_FALSE(meshdiff::detail::solve_by_normal_equations<9>(line, b, 1e-10, x));
+    // A column nearly a copy of another (condition number far above 1e4, the QR still of full rank).
+    Matrix9 near = M;
+    for (int i = 0; i < 20; ++i) near(i, 8) = near(i, 7) * (1.0 + 1e-7 * hashed(200 + std::uint64_t(i)));
+    EXPECT_FALSE(meshdiff::detail::solve_by_normal_equations<9>(near, b, 1e-10, x));
+    // Fewer rows than columns, a zero column.
+    EXPECT_FALSE(meshdiff::detail::solve_by_normal_equations<9>(M.topRows(8), b.head(8), 1e-10, x));
+    Matrix9 zero = M;
+    zero.col(4).setZero();
+    EXPECT_FALSE(meshdiff::detail::solve_by_normal_equations<9>(zero, b, 1e-10, x));
+    // Whenever it solves, the QR finds full rank (random near-degenerate systems).
+    for (std::uint64_t seed = 1; seed <= 300; ++seed) {
+        Matrix9 A = M;
+        const double eps = std::pow(10.0, -double(seed % 12));
+        for (int i = 0; i < 20; ++i) A(i, 8) = A(i, 7) + eps * hashed(seed * 50 + std::uint64_t(i));
+        Eigen::ColPivHouseholderQR<Matrix9> qr(A);
+        qr.setThreshold(1e-10);
+        if (meshdiff::detail::solve_by_normal_equations<9>(A, b, 1e-10, x)) {
+            EXPECT_EQ(qr.rank(), 9) << seed;
+        }
+    }
+}
+
+TEST(NormalEquations, SameBitsFromAnyBuffer)
+{
+    // The same system in a fixed-capacity buffer and in a differently strided heap block.
+    Matrix9 M;
+    Eigen::VectorXd b;
+    jet_system(17, 42, M, b);
+    Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::ColMajor, 256, 9> fixed = M;
+    Eigen::MatrixXd big(33, 9);
+    big.setZero();
+    big.block(1, 0, 17, 9) = M;
+    std::array<double, 9> x1, x2, x3;
+    ASSERT_TRUE(meshdiff::detail::solve_by_normal_equations<9>(M, b, 1e-10, x1));
+    ASSERT_TRUE(meshdiff::detail::solve_by_normal_equations<9>(fixed, b, 1e-10, x2));
+    ASSERT_TRUE(meshdiff::detail::solve_by_normal_equations<9>(big.block(1, 0, 17, 9), b, 1e-10, x3));
+    EXPECT_EQ(x1, x2);
+    EXPECT_EQ(x1, x3);
+}
+
+}  // namespace
