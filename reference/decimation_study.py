@@ -115,10 +115,21 @@ def main():
             cells.append(f"{good}/{len(ss)}")
         lines.append(f"| {measure} | " + " | ".join(cells) + " |")
     table = "\n".join(lines)
+    # The series on which a local measure does not grow, with its values from the finest to the coarsest ratio.
+    failing = []
+    for measure in [n for n in names if n.startswith("local_")]:
+        for (name, dec, norm), s in series.items():
+            values = [m.get(measure) for m in s]
+            if not monotone(values):
+                failing.append(f"- {measure}, {name}/{dec}" + (f" ({norm})" if len(args.normalize.split(",")) > 1
+                                                                else "") + ": "
+                               + " -> ".join("-" if v is None else f"{v:.4g}" for v in values))
+    failures = ("\n\nSeries on which a local measure does not grow (values at ratios " + ", ".join(f"{r:g}" for r in ratios)
+                + "):\n\n" + ("\n".join(failing) if failing else "none")) if any(n.startswith("local_") for n in names) else ""
     with open(os.path.join(args.out, f"decimation_study{args.tag}.md"), "w") as f:
         f.write(f"Series whose measure grows strictly from {100 * ratios[0]:g} % to {100 * ratios[-1]:g} % kept (ratios "
-                + ", ".join(f"{r:g}" for r in ratios) + "):\n\n" + table + "\n")
-    print(table)
+                + ", ".join(f"{r:g}" for r in ratios) + "):\n\n" + table + failures + "\n")
+    print(table + failures)
 
 
 if __name__ == "__main__":

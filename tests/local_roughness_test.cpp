@@ -7,6 +7,8 @@
 #include "meshdiff/geometry/normalize.h"
 #include "meshdiff/geometry/point_triangle.h"
 #include "meshdiff/report/json.h"
+#include "meshdiff/roughness/metric_levels.h"
+#include "meshdiff/roughness/neighborhood.h"
 #include "meshdiff/roughness/roughness_distance.h"
 #include "meshdiff/studies/shapes.h"
 
@@ -40,6 +42,45 @@ Mesh transformed(const Mesh& m, double scale, const Vec3& shift)
     return out;
 }
 
+// H' of \p pb at the brute-force closest point of \p b to \p p, interpolated
+// over the triangle holding it.
+double H_at_closest_point(const Mesh& b, const RoughnessProfile& pb, const Vec3& p)
+{
+    const ClosestPoint cp = closest_point_brute_force(b, p);
+    const Face& f = b.faces[cp.face];
+    const Vec3 w =
+        barycentric(cp.point, b.points[std::size_t(f[0])], b.points[std::size_t(f[1])], b.points[std::size_t(f[2])]);
+    double at = 0.0;
+    for (int c = 0; c < 3; ++c) at += w[c] * pb.H[std::size_t(f[std::size_t(c)])];
+    return at;
+}
+
+// The first form of the measure (before the operator was shared), written
+// out: D_L(i) - D'_L(cp(i)) with D' on the other mesh's own rings, untrimmed.
+double first_form(const Mesh& a, const RoughnessProfile& pa, const Mesh& b, const RoughnessProfile& pb, std::size_t k)
+{
+    double total = 0.0;
+    for (std::size_t i = 0; i < a.n_vertices(); ++i) {
+        const ClosestPoint cp = closest_point_brute_force(b, a.points[i]);
+        const Face& f = b.faces[cp.face];
+        const Vec3 w = barycentric(cp.point, b.points[std::size_t(f[0])], b.points[std::size_t(f[1])],
+                                   b.points[std::size_t(f[2])]);
+        double at = 0.0;
+        for (int c = 0; c < 3; ++c) at += w[c] * pb.D[k][std::size_t(f[std::size_t(c)])];
+        total += (pa.D[k][i] - at) * (pa.D[k][i] - at);
+    }
+    return std::sqrt(total / double(a.n_vertices()));
+}
+
+// A sphere with smooth radial bumps, sampled by icosphere(subdivisions): the
+// coarser samplings of the same surface play a decimation series.
+Mesh bumpy_sphere(int subdivisions)
+{
+    Mesh m = icosphere(subdivisions).mesh;
+    for (auto& p : m.points) p *= 1.0 + 0.05 * std::sin(6.0 * p.x()) * std::sin(6.0 * p.y()) * std::sin(6.0 * p.z());
+    return m;
+}
+
 }  // namespace
 
 TEST(LocalRoughness, ZeroForAMeshAgainstItself)
@@ -63,33 +104,97 @@ TEST(LocalRoughness, ZeroForAMeshAgainstItself)
     for (double x : d.vertex[0]) EXPECT_EQ(x, 0.0);
 }
 
-// Every vertex of the original against a brute-force closest point on the
-// processed surface and the interpolation written out.
-TEST(LocalRoughness, EqualsABruteForcePoolOnSmallMeshes)
+// The formula written out on small meshes: F(i) = H(i) - H'(cp(i)) with a
+// brute-force closest point, the original's rings by breadth-first search,
+// its balls by ball_patch(), its global level by a plain mean, and the
+// area-weighted RMS.
+TEST(LocalRoughness, EqualsABruteForceFormulaOnSmallMeshes)
 {
     const Mesh a = noisy_sphere(2, 0.03, 1).mesh;
     const Mesh b = noisy_sphere(1, 0.01, 2).mesh;  // coarser: a "decimation"
-    const RoughnessProfile pa = roughness_profile(a, with_data());
-    const RoughnessProfile pb = roughness_profile(b, with_data());
+    ProfileOptions o = with_data();
+    o.radii = {0.5};
+    const RoughnessProfile pa = roughness_profile(a, o);
+    const RoughnessProfile pb = roughness_profile(b, o);
     const LocalRoughnessDistance d = local_roughness_distance(a, pa, b, pb, ClosestPointIndex(b), 0.0, true);
-    ASSERT_EQ(d.levels.size(), 3u);
-    for (std::size_t k = 0; k < 3; ++k) {
+    const std::size_t n = a.n_vertices();
+    std::vector<double> F(n);
+    for (std::size_t i = 0; i < n; ++i) F[i] = pa.H[i] - H_at_closest_point(b, pb, a.points[i]);
+    const Mesh unit = apply_normalization(a, pa.normalization);
+    const Adjacency adj = vertex_adjacency(unit);
+    const std::vector<double> area = vertex_areas(unit);
+    double area_sum = 0.0;
+    for (double x : area) area_sum += x;
+    // The area-weighted RMS of F(i) - mean(i), mean(i) over the j with in(i, j).
+    auto expected = [&](auto in, const std::vector<double>* map) {
         double total = 0.0;
-        for (std::size_t i = 0; i < a.n_vertices(); ++i) {
-            const ClosestPoint cp = closest_point_brute_force(b, a.points[i]);
-            const Face& f = b.faces[cp.face];
-            const Vec3 w = barycentric(cp.point, b.points[std::size_t(f[0])], b.points[std::size_t(f[1])],
-                                       b.points[std::size_t(f[2])]);
-            EXPECT_NEAR(w.sum(), 1.0, 1e-12);
-            double at = 0.0;
-            for (int c = 0; c < 3; ++c) at += w[c] * pb.D[k][std::size_t(f[std::size_t(c)])];
-            const double diff = pa.D[k][i] - at;
-            EXPECT_NEAR(d.vertex[k][i], diff, 1e-9 * (1.0 + std::abs(diff))) << i;
-            total += diff * diff;
+        for (std::size_t i = 0; i < n; ++i) {
+            double sum = 0.0, count = 0.0;
+            for (std::size_t j = 0; j < n; ++j)
+                if (j != i) {
+                    const double w = in(i, j);
+                    sum += w * F[j];
+                    count += w;
+                }
+            const double D = F[i] - sum / count;
+            if (map) {
+                EXPECT_NEAR((*map)[i], D, 1e-9 * (1.0 + std::abs(D))) << i;
+            }
+            total += area[i] * D * D;
         }
-        EXPECT_NEAR(d.rms[k], std::sqrt(total / double(a.n_vertices())), 1e-9 * d.rms[k]);
+        return std::sqrt(total / area_sum);
+    };
+    ASSERT_EQ(d.levels, (std::vector<int>{1, 2, 5}));
+    for (std::size_t k = 0; k < 3; ++k) {
+        std::vector<std::vector<int>> ring(n);
+        for (std::size_t i = 0; i < n; ++i) ring[i] = ring_distances(adj, i, d.levels[k]);
+        const double e =
+            expected([&](std::size_t i, std::size_t j) { return ring[i][j] >= 1 ? 1.0 : 0.0; }, &d.vertex[k]);
+        EXPECT_NEAR(d.rms[k], e, 1e-9 * e) << d.levels[k];
         EXPECT_GT(d.rms[k], 0.0);
+        EXPECT_EQ(d.used[k], n);
     }
+    ASSERT_TRUE(d.has_global);
+    const double g = expected([](std::size_t, std::size_t) { return 1.0; }, nullptr);
+    EXPECT_NEAR(d.global, g, 1e-9 * g);
+    std::vector<std::vector<double>> ball(n, std::vector<double>(n, 0.0));
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::uint32_t j : ball_patch(unit, adj, i, 0.5)) ball[i][j] = area[j];
+    ASSERT_EQ(d.radii, (std::vector<double>{0.5}));
+    const double r = expected([&](std::size_t i, std::size_t j) { return ball[i][j]; }, nullptr);
+    EXPECT_NEAR(d.rms_radii[0], r, 1e-9 * r);
+    // Linear in F: the original's D_L minus the processed H' read through the
+    // original's rings.
+    std::vector<double> G(n);
+    for (std::size_t i = 0; i < n; ++i) G[i] = pa.H[i] - F[i];
+    const DiskMeans gm = disk_means(unit, adj, G, {1});
+    for (std::size_t i = 0; i < n; ++i)
+        EXPECT_NEAR(d.vertex[0][i], pa.D[0][i] - (G[i] - gm.mean[0][i]), 1e-9 * (1.0 + std::abs(pa.D[0][i])));
+}
+
+// Today's first form lets two changes cancel: against ever coarser samplings
+// of one bumpy sphere it falls at level 1 (the coarse mesh's own D', on rings
+// that span ever larger patches, is uncorrelated with the original's and
+// shrinks), while the detail of the change on the original's rings grows.
+TEST(LocalRoughness, GrowsWhereTheFirstFormSaturates)
+{
+    const Mesh a = bumpy_sphere(4);
+    const RoughnessProfile pa = roughness_profile(a, with_data({1, 2}));
+    std::vector<double> first, now;
+    for (int s : {3, 2, 1}) {
+        const Mesh b = bumpy_sphere(s);
+        const RoughnessProfile pb = roughness_profile(b, with_data({1, 2}));
+        first.push_back(first_form(a, pa, b, pb, 0));
+        now.push_back(local_roughness_distance(a, pa, b, pb, ClosestPointIndex(b)).rms[0]);
+    }
+    EXPECT_GT(first[1], first[2]);  // the first form falls from 162 to 42 vertices
+    EXPECT_GT(now[1], now[0]);
+    EXPECT_GT(now[2], now[1]);
+    // And the bound: all detail lost, the original's own area-weighted sigma_1.
+    const Mesh unit = apply_normalization(a, pa.normalization);
+    const std::vector<double> area = vertex_areas(unit);
+    const double sigma = trimmed_rms(pa.D[0], 0.0, &area);
+    EXPECT_LT(now[2], 1.2 * sigma);
 }
 
 TEST(LocalRoughness, BarycentricCoordinates)
@@ -302,8 +407,9 @@ TEST(LocalRoughness, TrimLeavesOutTheLargestDifferences)
     const LocalRoughnessDistance all = local_roughness_distance(a, pa, b, pb, index, 0.0, true);
     const LocalRoughnessDistance t = local_roughness_distance(a, pa, b, pb, index, 0.05);
     EXPECT_EQ(t.trim, 0.05);
+    const std::vector<double> area = vertex_areas(apply_normalization(a, pa.normalization));
     for (std::size_t k = 0; k < 3; ++k) {
-        EXPECT_EQ(t.rms[k], trimmed_rms(all.vertex[k], 0.05));
+        EXPECT_EQ(t.rms[k], trimmed_rms(all.vertex[k], 0.05, &area));
         EXPECT_LT(t.rms[k], all.rms[k]);
     }
     EXPECT_THROW(local_roughness_distance(a, pa, b, pb, index, 0.3), OptionError);

@@ -6,7 +6,9 @@
 
 #include "meshdiff/distance/signed_distance.h"
 #include "meshdiff/error.h"
+#include "meshdiff/geometry/normalize.h"
 #include "meshdiff/geometry/point_triangle.h"
+#include "meshdiff/geometry/vertex_areas.h"
 
 #include <unistd.h>
 
@@ -127,8 +129,10 @@ TEST(DistanceMap, OriginalSideIsTheBruteForceDistanceOfEveryOriginalVertex)
 TEST(DistanceMap, TheOriginalsMapCarriesTheLocalRoughnessDifferencePerLevel)
 {
     // issue 29: the local roughness difference as a per-vertex map on the
-    // original (PREFIX_original.ply of --distance-maps): local_L = D_L(i) -
-    // D'_L(cp(i)), whose RMS (untrimmed here) is roughness_distance.local.
+    // original (PREFIX_original.ply of --distance-maps): local_L = F(i) - mean
+    // of F over N_L(i), F = H - H'(cp) (local_roughness.h), whose RMS
+    // weighted by the original's vertex areas (untrimmed here) is
+    // roughness_distance.local.
     CompareOptions o;
     o.profile.levels = {1, 3};
     o.sampling.samples = 5000;
@@ -142,15 +146,18 @@ TEST(DistanceMap, TheOriginalsMapCarriesTheLocalRoughnessDifferencePerLevel)
         const VertexScalar& s = m.scalars[3 + k];
         EXPECT_EQ(s.name, k == 0 ? "local_1" : "local_3");
         ASSERT_EQ(s.values.size(), sphere().mesh.n_vertices());
-        double sum = 0.0;
+        const std::vector<double> area =
+            vertex_areas(apply_normalization(sphere().mesh, c.original_profile->normalization));
+        double sum = 0.0, weight = 0.0;
         std::size_t n = 0;
-        for (double x : s.values)
-            if (!std::isnan(x)) {
-                sum += x * x;
+        for (std::size_t i = 0; i < s.values.size(); ++i)
+            if (!std::isnan(s.values[i])) {
+                sum += area[i] * s.values[i] * s.values[i];
+                weight += area[i];
                 ++n;
             }
         EXPECT_EQ(n, c.local_roughness->used[k]);
-        EXPECT_NEAR(std::sqrt(sum / double(n)), c.local_roughness->rms[k], 1e-12 * c.local_roughness->rms[k]);
+        EXPECT_NEAR(std::sqrt(sum / weight), c.local_roughness->rms[k], 1e-12 * c.local_roughness->rms[k]);
     }
     EXPECT_NE(m.comments.back().find("local_L (L = 1, 3)"), std::string::npos) << m.comments.back();
     // The processed mesh's map has no such property (the measure is over the original's vertices).

@@ -1,6 +1,9 @@
 #include "meshdiff/roughness/local_roughness.h"
 
 #include "meshdiff/error.h"
+#include "meshdiff/geometry/normalize.h"
+#include "meshdiff/roughness/metric_levels.h"
+#include "meshdiff/roughness/neighborhood.h"
 
 #include <fmt/format.h>
 
@@ -55,26 +58,41 @@ struct Pooled
     std::size_t used = 0;
 };
 
-// The RMS over the vertices j of D(j) - D'(cp(j)), without the share \p trim
-// of largest magnitude (trimmed_rms()); the per-vertex differences into \p out
+// D(i) = F(i) - mean(i) (NaN where either is), pooled as the area-weighted
+// RMS without the share \p trim of largest |D| (trimmed_rms()); D into \p out
 // when it is not null.
-Pooled pool(const Mesh& other, const std::vector<Anchor>& at, const std::vector<double>& D,
-            const std::vector<double>& D_other, double trim, std::vector<double>* out)
+Pooled pool(const std::vector<double>& F, const std::vector<double>& mean, const std::vector<double>& area, double trim,
+            std::vector<double>* out)
 {
-    std::vector<double> diff(D.size(), kNaN);
+    std::vector<double> D(F.size(), kNaN);
     std::size_t used = 0;
-    for (std::size_t j = 0; j < D.size(); ++j) {
-        if (std::isnan(D[j])) continue;
-        const double d_other = interpolate(D_other, other.faces[at[j].face], at[j].w);
-        if (std::isnan(d_other)) continue;
-        diff[j] = D[j] - d_other;
-        ++used;
+    for (std::size_t i = 0; i < F.size(); ++i) {
+        D[i] = F[i] - mean[i];  // NaN propagates
+        if (!std::isnan(D[i])) ++used;
     }
     Pooled p;
     p.used = used;
-    if (used) p.rms = trimmed_rms(diff, trim);
-    if (out) *out = std::move(diff);
+    if (used) p.rms = trimmed_rms(D, trim, &area);
+    if (out) *out = std::move(D);
     return p;
+}
+
+// The mean of F over all other vertices with a defined F (NaN at a vertex
+// without F, or with fewer than two), as the global level of a profile.
+std::vector<double> global_means(const std::vector<double>& F)
+{
+    long double sum = 0.0L;
+    std::size_t m = 0;
+    for (double f : F)
+        if (!std::isnan(f)) {
+            sum += f;
+            ++m;
+        }
+    std::vector<double> mean(F.size(), kNaN);
+    if (m >= 2)
+        for (std::size_t i = 0; i < F.size(); ++i)
+            if (!std::isnan(F[i])) mean[i] = double((sum - F[i]) / (long double)(m - 1));
+    return mean;
 }
 
 }  // namespace
@@ -102,10 +120,8 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
                                                 const RoughnessProfile& pb, const ClosestPointIndex& index, double trim,
                                                 bool keep_vertex_data)
 {
-    if (pa.D.size() != pa.levels.size() || pb.D.size() != pb.levels.size() || pa.D_radii.size() != pa.radii.size() ||
-        pb.D_radii.size() != pb.radii.size() || (pa.has_global && pa.D_global.size() != mesh.n_vertices()) ||
-        (pb.has_global && pb.D_global.size() != other.n_vertices()))
-        throw InvalidArgumentError("local roughness: a profile has no per-vertex D (keep_vertex_data)");
+    if (pa.H.size() != mesh.n_vertices() || pb.H.size() != other.n_vertices())
+        throw InvalidArgumentError("local roughness: a profile has no per-vertex H (keep_vertex_data)");
     if (pa.vertices != mesh.n_vertices() || pb.vertices != other.n_vertices())
         throw InvalidArgumentError(
             fmt::format("local roughness: profiles of {} and {} vertices for meshes of {} and {}", pa.vertices,
@@ -115,29 +131,51 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
     LocalRoughnessDistance r;
     r.vertices = mesh.n_vertices();
     r.trim = trim;
+    const std::size_t n = mesh.n_vertices();
+    // F(i) = H(i) - H'(cp(i)): the change of H, carried to the vertices of mesh.
     const std::vector<Anchor> at = anchors(other, mesh, index);
-    for (std::size_t ia = 0; ia < pa.levels.size(); ++ia)
-        for (std::size_t ib = 0; ib < pb.levels.size(); ++ib) {
-            if (pa.levels[ia].level != pb.levels[ib].level) continue;
+    std::vector<double> F(n, kNaN);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (std::isnan(pa.H[i])) continue;
+        const double h = interpolate(pb.H, other.faces[at[i].face], at[i].w);
+        if (!std::isnan(h)) F[i] = pa.H[i] - h;
+    }
+    // The operator of mesh's own profile: its rings, its global level, its
+    // balls on its normalised mesh; its vertex areas weight the RMS.
+    const Mesh unit = apply_normalization(mesh, pa.normalization);
+    const Adjacency adj = vertex_adjacency(unit);
+    const std::vector<double> area = vertex_areas(unit);
+    for (const LevelRoughness& la : pa.levels)
+        for (const LevelRoughness& lb : pb.levels)
+            if (la.level == lb.level) {
+                r.levels.push_back(la.level);
+                break;
+            }
+    if (!r.levels.empty()) {
+        const DiskMeans means = disk_means(unit, adj, F, r.levels);
+        for (std::size_t k = 0; k < r.levels.size(); ++k) {
             std::vector<double> map;
-            const Pooled p = pool(other, at, pa.D[ia], pb.D[ib], trim, keep_vertex_data ? &map : nullptr);
-            r.levels.push_back(pa.levels[ia].level);
+            const Pooled p = pool(F, means.mean[k], area, trim, keep_vertex_data ? &map : nullptr);
             r.rms.push_back(p.rms);
             r.used.push_back(p.used);
             if (keep_vertex_data) r.vertex.push_back(std::move(map));
-            break;
         }
+    }
     if (pa.has_global && pb.has_global) {
         r.has_global = true;
-        r.global = pool(other, at, pa.D_global, pb.D_global, trim, nullptr).rms;
+        r.global = pool(F, global_means(F), area, trim, nullptr).rms;
     }
-    for (std::size_t ia = 0; ia < pa.radii.size(); ++ia)
-        for (std::size_t ib = 0; ib < pb.radii.size(); ++ib) {
-            if (pa.radii[ia].radius != pb.radii[ib].radius) continue;
-            r.radii.push_back(pa.radii[ia].radius);
-            r.rms_radii.push_back(pool(other, at, pa.D_radii[ia], pb.D_radii[ib], trim, nullptr).rms);
-            break;
-        }
+    for (const LevelRoughness& la : pa.radii)
+        for (const LevelRoughness& lb : pb.radii)
+            if (la.radius == lb.radius) {
+                r.radii.push_back(la.radius);
+                break;
+            }
+    if (!r.radii.empty()) {
+        const BallMeans balls = ball_means(unit, adj, F, area, r.radii);
+        for (std::size_t k = 0; k < r.radii.size(); ++k)
+            r.rms_radii.push_back(pool(F, balls.mean[k], area, trim, nullptr).rms);
+    }
     return r;
 }
 
