@@ -113,6 +113,20 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
                         default 250000); above it a mesh is drawn clustered,
                         the numbers stay the full mesh's; needs html    [--html-face-budget]
   threads=None          OpenMP threads; None or 0: all cores               [--threads]
+Python only (no CLI flag):
+  maps=False            also result["maps"], per-vertex float64 arrays kept by the comparison
+                        itself (the numbers of --distance-maps and --vertex-data, for every
+                        normalize): distance_original (n1,), distance_processed (n2,) in the
+                        meshes' unit, signed_distance_* where the other mesh can be signed
+                        against; D_original (n1, L+G), D_processed (n2, L+G): D_L per vertex on
+                        the normalised mesh, a column per level and the global one last (NaN:
+                        undefined); D_radii_* (n, R) with radii; local_original (n1, levels of
+                        roughness_distance["local"]) with the distance half. No report number moves.
+  index_original=None, index_processed=None
+                        a meshdiff.DistanceIndex of that mesh, built once and reused (e.g. one
+                        original against many processed meshes) instead of one built per call;
+                        the same numbers, bit for bit. It must be of that very mesh (vertex and
+                        face counts, coordinates, faces), else a ValueError naming the keyword.
 )doc";
 
 //! compare() (followed by kCompareOptionsDoc).
