@@ -263,7 +263,8 @@ constexpr const char* kDistanceIndexDoc =
     R"doc(A bounding-volume hierarchy over the triangles of (V, F), built once and queried
 many times for exact closest points (point-to-triangle; no distance cut-off).
 The index keeps its own copy of the mesh. Queries are thread-safe and release
-the GIL.
+the GIL. compare(..., index_original=index) (or index_processed=) reuses it
+instead of building one of that mesh per comparison.
 )doc";
 
 //! DistanceIndex.query().

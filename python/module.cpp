@@ -165,7 +165,7 @@ py::dict maps_dict(const Comparison& c)
     vector("signed_distance_original", c.original_vertex_signed_distance);
     vector("signed_distance_processed", c.processed_vertex_signed_distance);
     for (const auto& [side, p] : {std::pair{"original", &c.original_profile}, {"processed", &c.processed_profile}}) {
-        if (!*p || (*p)->D.size() != (*p)->levels.size()) continue;  // no roughness, or not kept
+        if (!*p || (*p)->H.size() != (*p)->vertices) continue;  // no roughness, or its vertex data not kept
         maps[py::str(std::string("D_") + side)] = d_array(**p, false);
         if (!(*p)->radii.empty()) maps[py::str(std::string("D_radii_") + side)] = d_array(**p, true);
     }
