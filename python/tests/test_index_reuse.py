@@ -89,3 +89,12 @@ def test_an_index_of_another_mesh_is_refused(pair):
         meshdiff.compare(V1, F1, V2, F2, index_processed=flipped)
     with pytest.raises(TypeError, match=r"^index_processed: expected a meshdiff.DistanceIndex or None"):
         meshdiff.compare(V1, F1, V2, F2, index_processed=(V2, F2))
+
+
+def test_beside_a_point_cloud(pair):
+    """A cloud has no DistanceIndex: one given for it is refused; the mesh's index beside it is used."""
+    (V1, F1), (V2, F2) = pair
+    with pytest.raises(ValueError, match=r"^index_original: .* the original has 1887 and 0$"):
+        meshdiff.compare(V1, None, V2, F2, index_original=meshdiff.DistanceIndex(V1, F1))
+    got, built = index_builds(V1, None, V2, F2, index_processed=meshdiff.DistanceIndex(V2, F2))
+    assert got == meshdiff.compare(V1, None, V2, F2) and built == 0
