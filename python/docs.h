@@ -218,7 +218,8 @@ the mesh scaled to mean vertex distance 1, i.e. H_there = H * scale.
 constexpr const char* kRoughnessDoc =
     R"doc(Per-vertex roughness: D[i, j] = D_L(i) = H(i) - mean of H over the vertices
 within L = levels[j] edges of i (i excluded), on the mesh scaled to mean vertex
-distance 1 from its centroid (dimensionless). D is (n, len(levels)) float64,
+distance 1 from its centroid (dimensionless; normalize="area": to sqrt(area /
+4 pi) about its area-weighted centroid, as profile()). D is (n, len(levels)) float64,
 with one more column, the global level (mean over all other vertices), when
 global_level=True; NaN where D is undefined (undefined H, or no neighbour with
 a defined H). sigma[j] = sqrt(mean of D[:, j]^2 over the non-NaN entries),

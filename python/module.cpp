@@ -327,11 +327,12 @@ py::array_t<double> py_mean_curvature(const ArrayLike& V, const ArrayLike& F, Ob
 }
 
 py::tuple py_roughness(const ArrayLike& V, const ArrayLike& F, Obj levels, Obj global_level, Obj curvature,
-                       Obj weighting, Obj threads)
+                       Obj weighting, Obj normalize, Obj threads)
 {
     ProfileOptions defaults;
     defaults.global = false;  // roughness(): the global column only when asked for
     ProfileOptions options = profile_options(levels, py::none(), global_level, curvature, weighting, defaults);
+    if (auto n = choice<NormalizeMethod>(normalize, "profile.normalize")) options.normalize = *n;
     options.keep_vertex_data = true;
     validate(options);
     const LoadedMesh m = mesh_from(V, F, "V", "F");
@@ -648,7 +649,7 @@ void def_roughness(py::module_& m)
           py::arg("max_normal_angle_deg") = py::none(), py::arg("threads") = py::none());
     m.def("roughness", &py_roughness, kRoughnessDoc, py::arg("V"), py::arg("F"), py::kw_only(),
           py::arg("levels") = py::none(), py::arg("global_level") = py::bool_(false), py::arg("curvature") = py::none(),
-          py::arg("weighting") = py::none(), py::arg("threads") = py::none());
+          py::arg("weighting") = py::none(), py::arg("normalize") = py::none(), py::arg("threads") = py::none());
 }
 
 // surface_distance() and vertex_distances().

@@ -323,6 +323,7 @@ def roughness(
     global_level: bool = ...,
     curvature: Optional[str] = ...,
     weighting: Optional[str] = ...,
+    normalize: Optional[str] = ...,
     threads: Optional[int] = ...,
     progress: _Progress = ...,
 ) -> Tuple[_F64, _F64]: ...
@@ -334,6 +335,7 @@ def roughness(
     global_level: bool = ...,
     curvature: Optional[str] = ...,
     weighting: Optional[str] = ...,
+    normalize: Optional[str] = ...,
     threads: Optional[int] = ...,
     progress: _Progress = ...,
 ) -> Tuple[_F64, _F64]: ...

@@ -98,3 +98,18 @@ def test_maps_of_the_corsini_measure(spheres):
     assert sorted(m) == ["distance_original", "distance_processed", "signed_distance_original",
                          "signed_distance_processed"]
     assert "maps" not in meshdiff.compare_files(a, b, measure="corsini")
+
+
+def test_roughness_takes_normalize(cli, spheres, tmp_path):
+    """roughness() (no comparison) takes normalize= paper or area, as profile(): the same D as --vertex-data."""
+    a, _ = spheres
+    V, F = meshdiff.read_mesh(a)
+    for normalize in ("paper", "area"):
+        D, sigma = meshdiff.roughness(V, F, levels=LEVELS, global_level=True, normalize=normalize)
+        assert same(D, cli_profile_D(cli, a, normalize, tmp_path)), normalize
+        p = meshdiff.profile(V, F, levels=LEVELS, normalize=normalize)
+        np.testing.assert_allclose(sigma, p["sigma"] + [p["sigma_global"]], rtol=1e-12)
+    with pytest.raises(ValueError, match="^normalize"):
+        meshdiff.roughness(V, F, normalize="original")
+    with pytest.raises(ValueError, match="^normalize"):
+        meshdiff.roughness(V, F, normalize="volume")
