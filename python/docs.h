@@ -113,6 +113,20 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
                         default 250000); above it a mesh is drawn clustered,
                         the numbers stay the full mesh's; needs html    [--html-face-budget]
   threads=None          OpenMP threads; None or 0: all cores               [--threads]
+Python only (no CLI flag):
+  maps=False            also result["maps"], per-vertex float64 arrays kept by the comparison
+                        itself (the numbers of --distance-maps and --vertex-data, for every
+                        normalize): distance_original (n1,), distance_processed (n2,) in the
+                        meshes' unit, signed_distance_* where the other mesh can be signed
+                        against; D_original (n1, L+G), D_processed (n2, L+G): D_L per vertex on
+                        the normalised mesh, a column per level and the global one last (NaN:
+                        undefined); D_radii_* (n, R) with radii; local_original (n1, levels of
+                        roughness_distance["local"]) with the distance half. No report number moves.
+  index_original=None, index_processed=None
+                        a meshdiff.DistanceIndex of that mesh, built once and reused (e.g. one
+                        original against many processed meshes) instead of one built per call;
+                        the same numbers, bit for bit. It must be of that very mesh (vertex and
+                        face counts, coordinates, faces), else a ValueError naming the keyword.
 )doc";
 
 //! compare() (followed by kCompareOptionsDoc).
@@ -204,7 +218,8 @@ the mesh scaled to mean vertex distance 1, i.e. H_there = H * scale.
 constexpr const char* kRoughnessDoc =
     R"doc(Per-vertex roughness: D[i, j] = D_L(i) = H(i) - mean of H over the vertices
 within L = levels[j] edges of i (i excluded), on the mesh scaled to mean vertex
-distance 1 from its centroid (dimensionless). D is (n, len(levels)) float64,
+distance 1 from its centroid (dimensionless; normalize="area": to sqrt(area /
+4 pi) about its area-weighted centroid, as profile()). D is (n, len(levels)) float64,
 with one more column, the global level (mean over all other vertices), when
 global_level=True; NaN where D is undefined (undefined H, or no neighbour with
 a defined H). sigma[j] = sqrt(mean of D[:, j]^2 over the non-NaN entries),
@@ -249,7 +264,8 @@ constexpr const char* kDistanceIndexDoc =
     R"doc(A bounding-volume hierarchy over the triangles of (V, F), built once and queried
 many times for exact closest points (point-to-triangle; no distance cut-off).
 The index keeps its own copy of the mesh. Queries are thread-safe and release
-the GIL.
+the GIL. compare(..., index_original=index) (or index_processed=) reuses it
+instead of building one of that mesh per comparison.
 )doc";
 
 //! DistanceIndex.query().

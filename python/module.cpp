@@ -22,6 +22,7 @@
 #include "meshdiff/roughness/roughness.h"
 #include "meshdiff/version.h"
 
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -31,12 +32,153 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace meshdiff::python {
 namespace {
+
+// ---------------------------------------------------------------- DistanceIndex
+
+// A digest of \p mesh's coordinates and faces: DistanceIndex::of() tells
+// by it that a mesh given beside the index is the one it indexes.
+std::uint64_t mesh_digest(const Mesh& mesh)
+{
+    const std::hash<std::string_view> hash;
+    const std::size_t points =
+        hash(std::string_view(reinterpret_cast<const char*>(mesh.points.data()), mesh.points.size() * sizeof(Vec3)));
+    const std::size_t faces =
+        hash(std::string_view(reinterpret_cast<const char*>(mesh.faces.data()), mesh.faces.size() * sizeof(Face)));
+    return std::uint64_t(points) * 0x9E3779B97F4A7C15ULL ^ std::uint64_t(faces);
+}
+
+class DistanceIndex
+{
+public:
+    DistanceIndex(const ArrayLike& V, const ArrayLike& F)
+    {
+        const LoadedMesh m = mesh_from(V, F, "V", "F");
+        py::gil_scoped_release release;
+        index_ = std::make_unique<ClosestPointIndex>(m.mesh);
+        n_vertices_ = m.mesh.n_vertices();
+        digest_ = mesh_digest(m.mesh);
+    }
+
+    py::tuple query(const ArrayLike& P, const py::object& threads) const
+    {
+        const std::vector<Vec3> points = points_from(P.object, "P", true);
+        std::vector<ClosestPoint> c;
+        {
+            ThreadScope scope(threads);
+            py::gil_scoped_release release;
+            c = index_->closest_points(points);
+        }
+        const auto k = py::ssize_t(c.size());
+        py::array_t<double> distance(k);
+        py::array_t<std::int64_t> face(k);
+        py::array_t<double> point({k, py::ssize_t(3)});
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            distance.mutable_data()[i] = c[i].distance;
+            face.mutable_data()[i] = std::int64_t(c[i].face);
+            for (std::size_t j = 0; j < 3; ++j) point.mutable_data()[3 * i + j] = c[i].point[Eigen::Index(j)];
+        }
+        return py::make_tuple(distance, face, point);
+    }
+
+    //! The index, after checking that \p mesh (named \p which, given as
+    //! \p keyword) is the mesh it was built of: the same vertex and face
+    //! counts, coordinates and faces. Without the GIL.
+    //! \throw BadArgument naming \p keyword otherwise.
+    const ClosestPointIndex& of(const Mesh& mesh, const char* keyword, const char* which) const
+    {
+        if (mesh.n_vertices() != n_vertices_ || mesh.n_faces() != index_->n_faces())
+            throw BadArgument(
+                fmt::format("{}: the DistanceIndex is of a mesh with {} vertices and {} faces, the {} "
+                            "has {} and {}",
+                            keyword, n_vertices_, index_->n_faces(), which, mesh.n_vertices(), mesh.n_faces()));
+        if (mesh_digest(mesh) != digest_)
+            throw BadArgument(
+                fmt::format("{}: the DistanceIndex is of another mesh than the {} (same vertex and face "
+                            "counts, other coordinates or faces)",
+                            keyword, which));
+        return *index_;
+    }
+
+    std::size_t n_faces() const { return index_->n_faces(); }
+    std::size_t memory_bytes() const { return index_->memory_bytes(); }
+    py::tuple bounds() const
+    {
+        const BoundingBox b = index_->bounds();
+        return py::make_tuple(points_array({b.min}).attr("reshape")(3), points_array({b.max}).attr("reshape")(3));
+    }
+
+private:
+    std::unique_ptr<ClosestPointIndex> index_;
+    std::size_t n_vertices_ = 0;
+    std::uint64_t digest_ = 0;
+};
+
+// The keywords of compare() and compare_files() that only Python has: maps=
+// and the caller's indexes (DistanceIndex or None).
+struct PythonKeywords
+{
+    py::object maps, index_original, index_processed;
+};
+
+// The DistanceIndex given as \p keyword, or nullptr for None.
+const DistanceIndex* index_arg(Obj v, const char* keyword)
+{
+    if (v.is_none()) return nullptr;
+    if (!py::isinstance<DistanceIndex>(v))
+        throw py::type_error(fmt::format("{}: expected a meshdiff.DistanceIndex or None, got {}", keyword,
+                                         py::repr(v).cast<std::string>()));
+    return &v.cast<const DistanceIndex&>();
+}
+
+// \p p's D per vertex as an (n, columns) array: the ring levels' columns and
+// the global one (\p radii false), or the metric levels' (\p radii true).
+py::array_t<double> d_array(const RoughnessProfile& p, bool radii)
+{
+    std::vector<const std::vector<double>*> columns;
+    for (const auto& c : radii ? p.D_radii : p.D) columns.push_back(&c);
+    if (!radii && p.has_global) columns.push_back(&p.D_global);
+    const std::size_t n = p.vertices, k = columns.size();
+    py::array_t<double> D({py::ssize_t(n), py::ssize_t(k)});
+    double* d = D.mutable_data();
+    for (std::size_t c = 0; c < k; ++c)
+        for (std::size_t i = 0; i < n; ++i) d[i * k + c] = (*columns[c])[i];
+    return D;
+}
+
+// compare(..., maps=True): the per-vertex arrays that \p c kept (docs/python.md).
+py::dict maps_dict(const Comparison& c)
+{
+    py::dict maps;
+    auto vector = [&](const char* key, const std::vector<double>& v) {
+        if (!v.empty()) maps[key] = vector_array(v);
+    };
+    vector("distance_original", c.original_vertex_distance);
+    vector("distance_processed", c.processed_vertex_distance);
+    vector("signed_distance_original", c.original_vertex_signed_distance);
+    vector("signed_distance_processed", c.processed_vertex_signed_distance);
+    for (const auto& [side, p] : {std::pair{"original", &c.original_profile}, {"processed", &c.processed_profile}}) {
+        if (!*p || (*p)->H.size() != (*p)->vertices) continue;  // no roughness, or its vertex data not kept
+        maps[py::str(std::string("D_") + side)] = d_array(**p, false);
+        if (!(*p)->radii.empty()) maps[py::str(std::string("D_radii_") + side)] = d_array(**p, true);
+    }
+    if (c.local_roughness && !c.local_roughness->vertex.empty()) {
+        const LocalRoughnessDistance& l = *c.local_roughness;
+        const std::size_t n = l.vertices, k = l.vertex.size();
+        py::array_t<double> local({py::ssize_t(n), py::ssize_t(k)});
+        for (std::size_t c2 = 0; c2 < k; ++c2)
+            for (std::size_t i = 0; i < n; ++i) local.mutable_data()[i * k + c2] = l.vertex[c2][i];
+        maps["local_original"] = local;
+    }
+    return maps;
+}
 
 // ---------------------------------------------------------------- functions
 
@@ -54,45 +196,60 @@ py::object py_read_mesh(const py::object& path_obj, bool report)
 }
 
 // compare_meshes() with the outputs \p a asks for, as `meshdiff compare` runs it.
-py::dict run_compare(const CompareKeywords& a, const std::function<std::pair<LoadedMesh, LoadedMesh>()>& load,
-                     const std::string& original_name, const std::string& processed_name,
-                     const std::vector<std::string>& inputs, const std::string& command)
+py::dict run_compare(const CompareKeywords& a, const PythonKeywords& extra,
+                     const std::function<std::pair<LoadedMesh, LoadedMesh>()>& load, const std::string& original_name,
+                     const std::string& processed_name, const std::vector<std::string>& inputs,
+                     const std::string& command)
 {
     CompareOutputs outputs = compare_outputs(a);
     outputs.command = command;  // shown by the HTML report
     const CompareOptions checked = compare_options(a);
     validate(outputs, checked, inputs);
-    const CompareOptions options = with_outputs(checked, outputs);
+    CompareOptions options = with_outputs(checked, outputs);
+    const bool maps = flag(extra.maps, "maps", false);
+    if (maps) {  // what the maps are made of (the report stays the same, bit for bit)
+        options.vertex_distances = options.vertex_distances || options.distance;
+        options.profile.keep_vertex_data = true;
+    }
+    const DistanceIndex* index_original = index_arg(extra.index_original, "index_original");
+    const DistanceIndex* index_processed = index_arg(extra.index_processed, "index_processed");
     nlohmann::json j;
+    std::optional<Comparison> kept;  // for the maps
     {
         ThreadScope scope(a.threads);
         py::gil_scoped_release release;
         const auto [original, processed] = load();
-        const Comparison c = compare_meshes(original, processed, options);
+        if (index_original) options.index_original = &index_original->of(original.mesh, "index_original", "original");
+        if (index_processed)
+            options.index_processed = &index_processed->of(processed.mesh, "index_processed", "processed mesh");
+        Comparison c = compare_meshes(original, processed, options);
         StagedOutputs staged;  // every output file, or none
         write_outputs(c, original, processed, outputs, original_name, processed_name);
         j = comparison_json(c);
         if (!outputs.json.empty()) write_json_file(outputs.json, j);
         staged.commit();
+        if (maps) kept = std::move(c);
     }
-    return to_python(j);
+    py::dict result = to_python(j);
+    if (kept) result["maps"] = maps_dict(*kept);
+    return result;
 }
 
 py::dict py_compare(const ArrayLike& V1, const ArrayLike& F1, const ArrayLike& V2, const ArrayLike& F2,
-                    const CompareKeywords& a)
+                    const CompareKeywords& a, const PythonKeywords& extra)
 {
     auto meshes = std::make_shared<std::pair<LoadedMesh, LoadedMesh>>(mesh_or_cloud_from(V1, F1, "V1", "F1"),
                                                                       mesh_or_cloud_from(V2, F2, "V2", "F2"));
     return run_compare(
-        a, [meshes] { return std::move(*meshes); }, "<array V1>", "<array V2>", {},
+        a, extra, [meshes] { return std::move(*meshes); }, "<array V1>", "<array V2>", {},
         "meshdiff.compare(V1, F1, V2, F2, ...) (Python)");
 }
 
-py::dict py_compare_files(Obj original, Obj processed, const CompareKeywords& a)
+py::dict py_compare_files(Obj original, Obj processed, const CompareKeywords& a, const PythonKeywords& extra)
 {
     const std::string pa = path_from(original, "original"), pb = path_from(processed, "processed");
     return run_compare(
-        a,
+        a, extra,
         [&] {
             return std::pair{read_file(pa, true), read_file(pb, true)};
         },
@@ -170,11 +327,12 @@ py::array_t<double> py_mean_curvature(const ArrayLike& V, const ArrayLike& F, Ob
 }
 
 py::tuple py_roughness(const ArrayLike& V, const ArrayLike& F, Obj levels, Obj global_level, Obj curvature,
-                       Obj weighting, Obj threads)
+                       Obj weighting, Obj normalize, Obj threads)
 {
     ProfileOptions defaults;
     defaults.global = false;  // roughness(): the global column only when asked for
     ProfileOptions options = profile_options(levels, py::none(), global_level, curvature, weighting, defaults);
+    if (auto n = choice<NormalizeMethod>(normalize, "profile.normalize")) options.normalize = *n;
     options.keep_vertex_data = true;
     validate(options);
     const LoadedMesh m = mesh_from(V, F, "V", "F");
@@ -241,51 +399,6 @@ py::array_t<double> py_vertex_distances(const ArrayLike& V1, const ArrayLike& F1
     }
     return vector_array(d);
 }
-
-// ---------------------------------------------------------------- DistanceIndex
-
-class DistanceIndex
-{
-public:
-    DistanceIndex(const ArrayLike& V, const ArrayLike& F)
-    {
-        const LoadedMesh m = mesh_from(V, F, "V", "F");
-        py::gil_scoped_release release;
-        index_ = std::make_unique<ClosestPointIndex>(m.mesh);
-    }
-
-    py::tuple query(const ArrayLike& P, const py::object& threads) const
-    {
-        const std::vector<Vec3> points = points_from(P.object, "P", true);
-        std::vector<ClosestPoint> c;
-        {
-            ThreadScope scope(threads);
-            py::gil_scoped_release release;
-            c = index_->closest_points(points);
-        }
-        const auto k = py::ssize_t(c.size());
-        py::array_t<double> distance(k);
-        py::array_t<std::int64_t> face(k);
-        py::array_t<double> point({k, py::ssize_t(3)});
-        for (std::size_t i = 0; i < c.size(); ++i) {
-            distance.mutable_data()[i] = c[i].distance;
-            face.mutable_data()[i] = std::int64_t(c[i].face);
-            for (std::size_t j = 0; j < 3; ++j) point.mutable_data()[3 * i + j] = c[i].point[Eigen::Index(j)];
-        }
-        return py::make_tuple(distance, face, point);
-    }
-
-    std::size_t n_faces() const { return index_->n_faces(); }
-    std::size_t memory_bytes() const { return index_->memory_bytes(); }
-    py::tuple bounds() const
-    {
-        const BoundingBox b = index_->bounds();
-        return py::make_tuple(points_array({b.min}).attr("reshape")(3), points_array({b.max}).attr("reshape")(3));
-    }
-
-private:
-    std::unique_ptr<ClosestPointIndex> index_;
-};
 
 // ---------------------------------------------------------------- bindings
 
@@ -424,7 +537,8 @@ void def_compare_like(py::module_& m, const char* name, F&& f, const std::string
           py::arg("json") = py::none(), py::arg("distance_map") = py::none(),
           py::arg("distance_map_original") = py::none(), py::arg("distance_maps") = py::none(),
           py::arg("samples_out") = py::none(), py::arg("html") = py::none(), py::arg("color_range") = py::none(),
-          py::arg("html_face_budget") = py::none(), py::arg("threads") = py::none());
+          py::arg("html_face_budget") = py::none(), py::arg("threads") = py::none(), py::arg("maps") = py::bool_(false),
+          py::arg("index_original") = py::none(), py::arg("index_processed") = py::none());
 }
 
 // compare() and compare_files().
@@ -440,7 +554,8 @@ void def_compare(py::module_& m)
            Obj samples, Obj density, Obj face_sampling, Obj seed, Obj vertex_samples, Obj edge_samples,
            Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance, Obj hausdorff_abs_tolerance, Obj hausdorff_budget,
            Obj fscore, Obj histogram, Obj json, Obj distance_map, Obj distance_map_original, Obj distance_maps,
-           Obj samples_out, Obj html, Obj color_range, Obj html_face_budget, Obj threads) {
+           Obj samples_out, Obj html, Obj color_range, Obj html_face_budget, Obj threads, Obj maps, Obj index_original,
+           Obj index_processed) {
             return py_compare(
                 V1, F1, V2, F2,
                 compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
@@ -448,7 +563,8 @@ void def_compare(py::module_& m)
                                  distance, samples, density, face_sampling, seed, vertex_samples, edge_samples,
                                  face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
                                  hausdorff_budget, fscore, histogram, json, distance_map, distance_map_original,
-                                 distance_maps, samples_out, html, color_range, html_face_budget, threads));
+                                 distance_maps, samples_out, html, color_range, html_face_budget, threads),
+                PythonKeywords{maps, index_original, index_processed});
         },
         compare_doc, py::arg("V1"), py::arg("F1"), py::arg("V2"), py::arg("F2"));
     def_compare_like(
@@ -459,7 +575,7 @@ void def_compare(py::module_& m)
            Obj seed, Obj vertex_samples, Obj edge_samples, Obj face_samples, Obj hausdorff, Obj hausdorff_tolerance,
            Obj hausdorff_abs_tolerance, Obj hausdorff_budget, Obj fscore, Obj histogram, Obj json, Obj distance_map,
            Obj distance_map_original, Obj distance_maps, Obj samples_out, Obj html, Obj color_range,
-           Obj html_face_budget, Obj threads) {
+           Obj html_face_budget, Obj threads, Obj maps, Obj index_original, Obj index_processed) {
             return py_compare_files(
                 original, processed,
                 compare_keywords(levels, radii, global_level, curvature, weighting, measure, unbiased_variance,
@@ -467,7 +583,8 @@ void def_compare(py::module_& m)
                                  distance, samples, density, face_sampling, seed, vertex_samples, edge_samples,
                                  face_samples, hausdorff, hausdorff_tolerance, hausdorff_abs_tolerance,
                                  hausdorff_budget, fscore, histogram, json, distance_map, distance_map_original,
-                                 distance_maps, samples_out, html, color_range, html_face_budget, threads));
+                                 distance_maps, samples_out, html, color_range, html_face_budget, threads),
+                PythonKeywords{maps, index_original, index_processed});
         },
         compare_files_doc, py::arg("original"), py::arg("processed"));
 }
@@ -532,7 +649,7 @@ void def_roughness(py::module_& m)
           py::arg("max_normal_angle_deg") = py::none(), py::arg("threads") = py::none());
     m.def("roughness", &py_roughness, kRoughnessDoc, py::arg("V"), py::arg("F"), py::kw_only(),
           py::arg("levels") = py::none(), py::arg("global_level") = py::bool_(false), py::arg("curvature") = py::none(),
-          py::arg("weighting") = py::none(), py::arg("threads") = py::none());
+          py::arg("weighting") = py::none(), py::arg("normalize") = py::none(), py::arg("threads") = py::none());
 }
 
 // surface_distance() and vertex_distances().

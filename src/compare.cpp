@@ -36,6 +36,8 @@ DistanceOptions distance_options(const CompareOptions& o)
     d.summary = o.summary;
     d.vertex_distances = o.vertex_distances;
     d.keep_samples = o.keep_samples;
+    d.index_a = o.index_original;
+    d.index_b = o.index_processed;
     return d;
 }
 
@@ -89,7 +91,10 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const LoadedMesh& b, const C
     c.roughness = roughness_distance(*c.original_profile, *c.processed_profile, options.k);
     if (!options.local) return;
     // Over the original's vertices, against the processed surface (local_roughness.h).
-    const ClosestPointIndex index(b.mesh);
+    std::optional<ClosestPointIndex> own;  // unless the caller built it (surface_distance() checks it too)
+    if (options.index_processed && options.index_processed->n_faces() != b.mesh.n_faces())
+        throw InvalidArgumentError("CompareOptions: index_processed is not an index of the processed mesh");
+    const ClosestPointIndex& index = options.index_processed ? *options.index_processed : own.emplace(b.mesh);
     c.local_roughness = local_roughness_distance(a.mesh, *c.original_profile, b.mesh, *c.processed_profile, index,
                                                  options.local_trim, options.vertex_distances);
     if (!options.profile.keep_vertex_data)
@@ -135,6 +140,7 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
     Comparison c;
     c.options = options;
     c.options.progress = nullptr;
+    c.options.index_original = c.options.index_processed = nullptr;  // not kept beyond the call
     // The serial topology reports overlap the (partly serial) analyses, on
     // threads of their own unless OpenMP is limited to one thread.
     const auto policy = omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred;

@@ -70,6 +70,14 @@ struct CompareOptions
     //! it says so (progress.h); not owned, used only during the call.
     //! nullptr: the Progress of the calling thread's ProgressScope, if any.
     Progress* progress = nullptr;
+    //! Indexes of the original and of the processed mesh that the caller
+    //! built and keeps (DistanceOptions::index_a, index_b), e.g. to compare
+    //! one original with many processed meshes: the surface distance and the
+    //! local roughness difference query them instead of building their own.
+    //! Each must index that very mesh and outlive the call; the results are
+    //! the same bit for bit. nullptr (the default): built per call.
+    const ClosestPointIndex* index_original = nullptr;
+    const ClosestPointIndex* index_processed = nullptr;
 };
 
 //! The result of compare_meshes(). With CompareOptions::vertex_distances, the

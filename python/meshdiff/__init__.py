@@ -2,13 +2,12 @@
 
 The compiled extension meshdiff._meshdiff holds the library; this package
 re-exports it and adds, in pure Python, what a Python user expects of a library:
-mesh objects (trimesh, Open3D, meshio) wherever V, F are taken, per-vertex maps
-as arrays (compare(..., maps=True)), one-line errors for mistyped keywords, the
+mesh objects (trimesh, Open3D, meshio) wherever V, F are taken, one-line errors for mistyped keywords, the
 reports' warnings through warnings.warn, and a picklable DistanceIndex. Every
 number is the extension's. The reference is docs/python.md; help(meshdiff.compare)
 lists the options.
 """
-from typing import Any, Callable, Dict, Optional
+from typing import Any, Callable, Optional
 
 import numpy as np
 
@@ -44,15 +43,11 @@ _EXTRA_DOC = {
     "read_mesh": """
 Example: V, F = meshdiff.read_mesh("bunny.ply")""",
     "compare": _MESH_OBJECTS + _PROGRESS + """
-maps=False: with True, result["maps"] holds per-vertex numpy arrays:
-distance_original (n1,) and distance_processed (n2,) float64, the exact distance
-of each vertex to the other surface in the meshes' unit (when the distance is
-computed); D_original (n1, L) and D_processed (n2, L) float64, D_L per vertex on
-the unit-scaled mesh, a column per level and a last one for the global level
-(when the roughness is; NaN where undefined). Report warnings are also raised as
-meshdiff.MeshWarning.
+Report warnings are also raised as meshdiff.MeshWarning.
 
-Example: meshdiff.compare(mesh_a, mesh_b, maps=True)["maps"]["distance_original"]""",
+Example: meshdiff.compare(mesh_a, mesh_b, maps=True)["maps"]["distance_original"]
+Example: index = meshdiff.DistanceIndex(mesh_a)
+         [meshdiff.compare(mesh_a, b, index_original=index) for b in decimations]""",
     "compare_files": _PROGRESS + """
 Report warnings are also raised as meshdiff.MeshWarning.
 
@@ -120,37 +115,9 @@ def compare_files(*args: Any, **options: Any) -> Any:
     return result
 
 
-def _maps(arrays: list, result: Dict[str, Any], options: Dict[str, Any]) -> Dict[str, Any]:
-    """The per-vertex maps of compare(..., maps=True) (docs/python.md)."""
-    V1, F1, V2, F2 = arrays
-    maps: Dict[str, Any] = {}
-    if any(F is None or np.size(F) == 0 for F in (F1, F2)):
-        return maps  # a point cloud: its distances are the report's samples (return_samples of surface_distance)
-    if result.get("surface_distance") is not None:
-        maps["distance_original"] = _meshdiff.vertex_distances(V1, F1, V2, F2, threads=options.get("threads"))
-        maps["distance_processed"] = _meshdiff.vertex_distances(V2, F2, V1, F1, threads=options.get("threads"))
-    rd = result.get("roughness_distance")
-    if rd is not None and options.get("measure") in (None, "sigma"):
-        # The keywords as given (None: the library's default, as in compare()); the global
-        # column when the comparison has one.
-        # paper=True is the goldfeather fit (the library refuses another curvature beside it).
-        with_global = rd.get("global") is not None
-        curvature = "goldfeather" if options.get("paper") else options.get("curvature")
-        for side, V, F in (("original", V1, F1), ("processed", V2, F2)):
-            D, _ = _meshdiff.roughness(V, F, levels=options.get("levels"), global_level=with_global,
-                                       curvature=curvature, weighting=options.get("weighting"),
-                                       threads=options.get("threads"))
-            maps[f"D_{side}"] = D
-    return maps
-
-
-def compare(*args: Any, maps: bool = False, **options: Any) -> Any:
-    arrays = expand(args, _ORIGINAL_PROCESSED)
-    result = call("compare", _meshdiff.compare, arrays, options)
+def compare(*args: Any, **options: Any) -> Any:
+    result = call("compare", _meshdiff.compare, expand(args, _ORIGINAL_PROCESSED), options)
     warn_report(result, _ORIGINAL_PROCESSED)
-    if maps:  # V1, F1, V2, F2 by position or by name
-        named = [options.get(name) for name in ("V1", "F1", "V2", "F2")[len(arrays):]]
-        result["maps"] = _maps(list(arrays) + named, result, options)
     return result
 
 

@@ -97,6 +97,8 @@ def compare(
     threads: Optional[int] = ...,
     progress: _Progress = ...,
     maps: bool = ...,
+    index_original: Optional[DistanceIndex] = ...,
+    index_processed: Optional[DistanceIndex] = ...,
 ) -> _Report: ...
 @overload
 def compare(
@@ -143,6 +145,8 @@ def compare(
     threads: Optional[int] = ...,
     progress: _Progress = ...,
     maps: bool = ...,
+    index_original: Optional[DistanceIndex] = ...,
+    index_processed: Optional[DistanceIndex] = ...,
 ) -> _Report: ...
 def compare_files(
     original: _Path,
@@ -188,6 +192,9 @@ def compare_files(
     html_face_budget: Optional[int] = ...,
     threads: Optional[int] = ...,
     progress: _Progress = ...,
+    maps: bool = ...,
+    index_original: Optional[DistanceIndex] = ...,
+    index_processed: Optional[DistanceIndex] = ...,
 ) -> _Report: ...
 @overload
 def profile(
@@ -316,6 +323,7 @@ def roughness(
     global_level: bool = ...,
     curvature: Optional[str] = ...,
     weighting: Optional[str] = ...,
+    normalize: Optional[str] = ...,
     threads: Optional[int] = ...,
     progress: _Progress = ...,
 ) -> Tuple[_F64, _F64]: ...
@@ -327,6 +335,7 @@ def roughness(
     global_level: bool = ...,
     curvature: Optional[str] = ...,
     weighting: Optional[str] = ...,
+    normalize: Optional[str] = ...,
     threads: Optional[int] = ...,
     progress: _Progress = ...,
 ) -> Tuple[_F64, _F64]: ...

@@ -55,3 +55,14 @@ def test_a_distance_index_goes_to_the_workers(client, data):
     remote = client.submit(index.query, P).result()
     for a, b in zip(remote, index.query(P)):
         assert np.array_equal(a, b)
+
+
+def test_one_original_index_scattered_to_the_workers(client, data):
+    """The recipe of docs/python.md: the original's index built once, scattered to every worker and reused by
+    compare_files(index_original=...) for each processed mesh: the results of compare_files() without it."""
+    a = str(data / "bunny_res3.ply")
+    processed = [str(data / "bunny_res4_ascii.ply"), a]
+    compare = functools.partial(meshdiff.compare_files, levels=[1, 2], samples=5000, threads=1)
+    index = client.scatter(meshdiff.DistanceIndex(*meshdiff.read_mesh(a)), broadcast=True)
+    results = client.gather(client.map(compare, [a] * len(processed), processed, index_original=index, pure=False))
+    assert results == [compare(a, b) for b in processed]

@@ -390,6 +390,39 @@ BATCH_ONLY = {
 }
 
 
+# Keywords of compare() and compare_files() that only Python has (no CLI flag, so no batch either), with why,
+# and their cases, run in Python only: an accepted one leaves the report the CLI's without it, every number bit
+# for bit; a refused one names the keyword. A value may be a function of the two paths (a DistanceIndex).
+class PythonOnly:
+    def __init__(self, keyword, why, cases):
+        self.keyword, self.why, self.cases = keyword, why, cases
+
+
+def index_of(k):
+    return lambda a, b: meshdiff.DistanceIndex(*meshdiff.read_mesh((a, b)[k]))
+
+
+PYTHON_ONLY = [
+    PythonOnly("maps", "per-vertex numpy arrays in the result; the CLI writes them as PLY (--distance-maps)", [
+        ok([], dict(maps=True)),
+        ok([], dict(maps=True, normalize="area", radii=[0.1])),
+        type_([], dict(maps="yes")),
+    ]),
+    PythonOnly("index_original", "a DistanceIndex object kept between calls; a CLI run builds its own", [
+        ok([], dict(index_original=index_of(0))),
+        ok([], dict(index_original=index_of(0), roughness=False)),
+        value([], dict(index_original=index_of(1)), "an index of the processed mesh"),
+        type_([], dict(index_original="a.ply")),
+    ]),
+    PythonOnly("index_processed", "a DistanceIndex object kept between calls; a CLI run builds its own", [
+        ok([], dict(index_processed=index_of(1))),
+        ok([], dict(index_processed=index_of(1), index_original=index_of(0), levels=[1, 2])),
+        value([], dict(index_processed=index_of(0)), "an index of the original"),
+        type_([], dict(index_processed=1)),
+    ]),
+]
+
+
 def cli_options(cli, command):
     """The long options `meshdiff COMMAND --help` lists (the help flag aside)."""
     text = subprocess.run([cli, command, "--help"], check=True, capture_output=True, text=True).stdout
@@ -411,6 +444,8 @@ def test_every_option_is_in_the_table(cli):
         flags = {o.flag for o in table}
         assert cli_options(cli, command) == flags, f"{command}: the table and --help differ"
         keywords = {o.keyword for o in table if o.keyword} | {"threads"}
+        if command == "compare":
+            keywords |= {o.keyword for o in PYTHON_ONLY}
         assert python_keywords(function) == keywords, f"{function.__name__}: the table and the signature differ"
         for o in table:
             assert o.cases, f"{command} {o.flag}: no case"
@@ -422,6 +457,8 @@ def test_every_option_is_in_the_table(cli):
     passed = {o.flag for o in COMPARE if o.batch is True}
     assert cli_options(cli, "batch") == passed | set(BATCH_ONLY)
     assert counts == {"compare": 41, "profile": 22}, counts  # the options covered, stated
+    assert [o.keyword for o in PYTHON_ONLY] == ["maps", "index_original", "index_processed"]
+    assert all(o.cases and o.why for o in PYTHON_ONLY)
 
 
 CASES = [pytest.param("compare", o, c, id=f"compare {o.flag}: {c!r}") for o in COMPARE for c in o.cases] + [
@@ -513,6 +550,32 @@ def test_the_three_front_ends_agree(cli, meshes, tmp_path, command, option, case
         assert type(py_error) is expected_class, (py_error, case)
         assert re.search(rf"\b{option.keyword}\b", str(py_error)), py_error
         assert files_of(tmp_path / "py") == {}
+
+
+@pytest.mark.parametrize("option,case", [pytest.param(o, c, id=f"python {o.keyword}: {c!r}")
+                                         for o in PYTHON_ONLY for c in o.cases])
+def test_python_only_keywords(cli, meshes, tmp_path, option, case):
+    a, b = meshes
+    kw = {k: v(a, b) if callable(v) else v for k, v in case.py.items()}
+    if case.outcome == "ok":
+        got = meshdiff.compare_files(a, b, **kw)
+        maps = got.pop("maps", None)
+        assert (maps is not None) == bool(kw.get("maps"))
+        flags = {"normalize": "--normalize", "radii": "--radii", "levels": "--levels", "roughness": "--no-roughness"}
+        args = []
+        for k, v in kw.items():
+            if k in ("normalize",):
+                args += [flags[k], v]
+            elif k in ("radii", "levels"):
+                args += [flags[k], ",".join(map(str, v))]
+            elif k == "roughness":
+                args += [flags[k]]
+        expected = json.loads(run([cli, "compare", a, b, *args, "--json", "-"], tmp_path).stdout)
+        assert differences(got, expected) == []
+        return
+    expected_class = ValueError if case.outcome == "value" else TypeError
+    with pytest.raises(expected_class, match=rf"^{option.keyword}\b"):
+        meshdiff.compare_files(a, b, **kw)
 
 
 def test_regression_batch_with_every_boolean_flag(cli, meshes, tmp_path):

@@ -13,7 +13,7 @@ from meshdiff import _calls, _meshdiff
 from conftest import BUILD, INSTALLED, PACKAGE, REPO, child_env
 
 # Keywords the package adds in Python to those of the extension's function.
-PYTHON_ONLY = {"compare": {"maps", "progress"}, "read_mesh": set()}
+PYTHON_ONLY = {"read_mesh": set()}
 EXAMPLES = ["examples/evaluate_decimators.py"]
 
 
