@@ -14,9 +14,9 @@
 #include "interrupt.h"
 #include "meshdiff/compare.h"
 #include "meshdiff/distance/surface_distance.h"
+#include "meshdiff/frontend/options.h"
 #include "meshdiff/geometry/sampling.h"
 #include "meshdiff/io/io.h"
-#include "meshdiff/options.h"
 #include "meshdiff/report/outputs.h"
 #include "meshdiff/roughness/roughness.h"
 

@@ -27,10 +27,13 @@ MeshFacts cloud_facts(const LoadedMesh& loaded)
     return f;
 }
 
-// The options of the surface distance that \p o asks for.
-DistanceOptions distance_options(const CompareOptions& o)
+// The options of the surface distance that \p o asks for, with the derived
+// data \p a and \p b of the two meshes when given.
+DistanceOptions distance_options(const CompareOptions& o, const MeshData* a = nullptr, const MeshData* b = nullptr)
 {
     DistanceOptions d;
+    d.data_a = a;
+    d.data_b = b;
     d.sampling = o.sampling;
     d.hausdorff = o.hausdorff;
     d.summary = o.summary;
@@ -75,7 +78,8 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
 
 // The two sigma profiles, their distance and, if asked for, the local
 // difference (options checked).
-void sigma_half(Comparison& c, const LoadedMesh& a, const LoadedMesh& b, const CompareOptions& options)
+void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& b_data, const LoadedMesh& b,
+                const CompareOptions& options)
 {
     ProfileOptions po = options.profile;
     po.keep_vertex_data = po.keep_vertex_data || options.local;
@@ -94,7 +98,7 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const LoadedMesh& b, const C
     std::optional<ClosestPointIndex> own;  // unless the caller built it (surface_distance() checks it too)
     if (options.index_processed && options.index_processed->n_faces() != b.mesh.n_faces())
         throw InvalidArgumentError("CompareOptions: index_processed is not an index of the processed mesh");
-    const ClosestPointIndex& index = options.index_processed ? *options.index_processed : own.emplace(b.mesh);
+    const ClosestPointIndex& index = options.index_processed ? *options.index_processed : own.emplace(b_data);
     c.local_roughness = local_roughness_distance(a.mesh, *c.original_profile, b.mesh, *c.processed_profile, index,
                                                  options.local_trim, options.vertex_distances);
     if (!options.profile.keep_vertex_data)
@@ -141,17 +145,20 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
     c.options = options;
     c.options.progress = nullptr;
     c.options.index_original = c.options.index_processed = nullptr;  // not kept beyond the call
+    // What every stage derives from a mesh (box, degenerate faces, vertex-face
+    // incidence, validation), derived once per mesh (mesh_data.h).
+    const MeshData a_data(a.mesh), b_data(b.mesh);
     // The serial topology reports overlap the (partly serial) analyses, on
     // threads of their own unless OpenMP is limited to one thread.
     const auto policy = omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred;
     // They stop too when the Progress says so.
     Progress* progress = current_progress();
-    auto facts_of = [progress](const LoadedMesh& m) {
+    auto facts_of = [progress](const LoadedMesh& m, const MeshData& data) {
         const ProgressScope in_this_thread(progress);
-        return mesh_facts(m);
+        return mesh_facts(m, data);
     };
-    auto facts_a = std::async(policy, facts_of, std::cref(a));
-    auto facts_b = std::async(policy, facts_of, std::cref(b));
+    auto facts_a = std::async(policy, facts_of, std::cref(a), std::cref(a_data));
+    auto facts_b = std::async(policy, facts_of, std::cref(b), std::cref(b_data));
     if (options.roughness && options.measure == RoughnessMeasure::Corsini) {
         CorsiniOptions co;
         co.levels = options.profile.levels;
@@ -161,17 +168,17 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         c.processed_corsini = corsini_profile(b.mesh, co);
         c.corsini = corsini_distance(*c.original_corsini, *c.processed_corsini, options.k);
     } else if (options.roughness) {
-        sigma_half(c, a, b, options);
+        sigma_half(c, a, b_data, b, options);
     }
     if (options.distance) {
-        set_distance(c, surface_distance(a.mesh, b.mesh, distance_options(options)));
+        set_distance(c, surface_distance(a.mesh, b.mesh, distance_options(options, &a_data, &b_data)));
     } else if (options.vertex_distances) {
         c.processed_vertex_distance =
-            vertex_distances(b.mesh, a.mesh, ClosestPointIndex(a.mesh), c.processed_vertex_signed_distance);
+            vertex_distances(b.mesh, a.mesh, ClosestPointIndex(a_data), c.processed_vertex_signed_distance);
         c.original_vertex_distance =
-            vertex_distances(a.mesh, b.mesh, ClosestPointIndex(b.mesh), c.original_vertex_signed_distance);
+            vertex_distances(a.mesh, b.mesh, ClosestPointIndex(b_data), c.original_vertex_signed_distance);
     }
-    c.same_connectivity = same_connectivity(a.mesh, b.mesh, &c.same_connectivity_unavailable);
+    c.same_connectivity = same_connectivity(a_data, b_data, &c.same_connectivity_unavailable);
     c.original = facts_a.get();
     c.processed = facts_b.get();
     return c;

@@ -4,11 +4,15 @@
 
 #include "meshdiff/error.h"
 
+#include "core/derivations.h"
+
 #include <omp.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 
 using namespace meshdiff;
 
@@ -227,4 +231,34 @@ TEST(CompareMeshes, CorsiniMeasureReplacesTheSigmaProfilesWithCorsinisRoughness)
     for (const auto& l : self.corsini->levels) EXPECT_EQ(l.distance, 0.0);
     o.profile.radii = {0.1};
     EXPECT_THROW(compare_meshes(sphere(), sphere(), o), InvalidArgumentError);
+}
+
+// One comparison derives the box, the degenerate-face mask, the vertex-face
+// incidence and the validation of each mesh at most once (issue 27): the two
+// inputs, and each normalised copy the profiles and the local difference
+// work on; with metric levels, the distance maps and the local difference on.
+TEST(CompareMeshes, DerivesEachDatumOncePerMesh)
+{
+    CompareOptions with_radii;
+    with_radii.profile.radii = {0.1, 0.3};
+    with_radii.vertex_distances = true;
+    for (const CompareOptions& o : {CompareOptions{}, with_radii}) {
+        detail::start_derivation_log();
+        const Comparison c = compare_meshes(sphere(), irregular(), o);
+        const detail::DerivationCounts counts = detail::stop_derivation_log();
+        const char* names[] = {"box", "degenerate mask", "vertex-face incidence", "validation"};
+        std::map<std::string, int> inputs;
+        for (const auto& [key, n] : counts) {
+            const std::string who = key.first == sphere().mesh.points.data()      ? "original"
+                                    : key.first == irregular().mesh.points.data() ? "processed"
+                                                                                  : "a derived copy";
+            EXPECT_LE(n, 1) << who << "'s " << names[int(key.second)] << " derived " << n << " times";
+            if (who != "a derived copy") ++inputs[who];
+        }
+        // The log saw both inputs, each with all four data (the test would
+        // pass vacuously on an empty log).
+        EXPECT_EQ(inputs["original"], 4);
+        EXPECT_EQ(inputs["processed"], 4);
+        EXPECT_TRUE(c.local_roughness.has_value());
+    }
 }

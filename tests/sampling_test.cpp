@@ -258,7 +258,7 @@ TEST(Sampling, SamplesMadeInPiecesAreTheSamplesBitForBit)
             o.samples = 20000;
             o.seed = 3;
             const SurfaceSamples all = sample_surface(m, o);
-            const detail::SamplePlan plan = detail::plan_samples(m, o);
+            const detail::SamplePlan plan = detail::plan_samples(MeshData(m), o);
             ASSERT_EQ(plan.size(), all.size());
             EXPECT_EQ(plan.counts.n_edge, all.n_edge);
             EXPECT_EQ(plan.counts.n_face, all.n_face);

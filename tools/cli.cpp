@@ -3,7 +3,7 @@
 #include "commands.h"
 #include "interrupt.h"
 #include "meshdiff/error.h"
-#include "meshdiff/options.h"
+#include "meshdiff/frontend/options.h"
 #include "meshdiff/version.h"
 #include "options.h"
 

@@ -1,7 +1,7 @@
 #include "commands.h"
+#include "meshdiff/frontend/options.h"
 #include "meshdiff/io/io.h"
 #include "meshdiff/io/output_file.h"
-#include "meshdiff/options.h"
 #include "meshdiff/report/text.h"
 #include "meshdiff/studies/noise.h"
 #include "options.h"

@@ -1,7 +1,7 @@
 #include "options.h"
 
 #include "meshdiff/error.h"
-#include "meshdiff/options.h"
+#include "meshdiff/frontend/options.h"
 #include "meshdiff/report/html.h"
 
 #include <fmt/format.h>
@@ -215,7 +215,7 @@ void add_compare_options(CLI::App* sub, CompareCliOptions& o)
                      ->default_str(fmt::format("{}", defaults.k));
     sub->add_flag("--no-roughness", o.no_roughness, "skip the roughness half");
     sub->add_flag("--no-local", o.no_local,
-                  "skip the local roughness difference (each processed vertex's D_L against the original's at the "
+                  "skip the local roughness difference (each original vertex's D_L against the processed mesh's at its "
                   "closest point, RMS per level)");
     add(sub, "--local-trim", o.local_trim,
         fmt::format("share of the original's vertices with the largest |difference| left out of each local RMS, in "

@@ -48,4 +48,4 @@
 #include "meshdiff/studies/smoothing_record.h"
 
 #include "meshdiff/compare.h"
-#include "meshdiff/options.h"
+#include "meshdiff/frontend/options.h"

@@ -2,6 +2,8 @@
 
 #include "meshdiff/error.h"
 
+#include "core/derivations.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@ namespace meshdiff {
 
 void validate(const Mesh& mesh, const std::string& what)
 {
+    detail::note_derivation(detail::Derived::Validation, mesh);
     if (mesh.points.empty()) throw InvalidMeshError(fmt::format("{}: mesh has no vertices", what));
     if (mesh.faces.empty()) throw InvalidMeshError(fmt::format("{}: mesh has no faces", what));
     const auto n = std::int64_t(mesh.n_vertices());
@@ -33,6 +36,7 @@ void validate(const Mesh& mesh, const std::string& what)
 
 BoundingBox bounding_box(const Mesh& mesh)
 {
+    detail::note_derivation(detail::Derived::Box, mesh);
     BoundingBox box;
     if (mesh.points.empty()) return box;
     box.min = box.max = mesh.points[0];

@@ -1,8 +1,10 @@
 #include "meshdiff/core/topology.h"
 
+#include "meshdiff/core/mesh_data.h"
 #include "meshdiff/core/progress.h"
 #include "meshdiff/error.h"
 
+#include "core/derivations.h"
 #include "core/union_find.h"
 
 #include <fmt/format.h>
@@ -157,6 +159,7 @@ Adjacency vertex_adjacency(const Mesh& mesh)
 
 Adjacency vertex_faces(const Mesh& mesh)
 {
+    detail::note_derivation(detail::Derived::VertexFaces, mesh);
     // Faces are visited in order, so each row comes out ascending.
     return build_csr(
         mesh.n_vertices(),
@@ -169,7 +172,13 @@ Adjacency vertex_faces(const Mesh& mesh)
 
 std::vector<char> degenerate_face_mask(const Mesh& mesh)
 {
-    const double diag = bounding_box(mesh).diagonal();
+    return degenerate_face_mask(mesh, bounding_box(mesh));
+}
+
+std::vector<char> degenerate_face_mask(const Mesh& mesh, const BoundingBox& box)
+{
+    detail::note_derivation(detail::Derived::DegenerateMask, mesh);
+    const double diag = box.diagonal();
     const double eps = kDegenerateArea * diag * diag;
     std::vector<char> mask(mesh.n_faces(), 0);
     for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
@@ -270,11 +279,10 @@ void count_duplicate_faces(const Mesh& mesh, TopologyReport& r)
 // tested; above (a hub) the faces are grouped by their other vertices
 // (a sort), so a vertex costs O(deg log deg), not O(deg^2). Both give the
 // same count: the number of classes does not depend on the union order.
-void count_non_manifold_vertices(const Mesh& mesh, TopologyReport& r)
+void count_non_manifold_vertices(const Mesh& mesh, const Adjacency& vf, TopologyReport& r)
 {
     const std::size_t n = mesh.n_vertices();
     constexpr std::size_t kPairwiseFanDegree = 16;
-    const Adjacency vf = vertex_faces(mesh);
     std::vector<std::uint32_t> other;                         // the two other vertices per incident face
     std::vector<std::pair<std::uint32_t, std::uint32_t>> by;  // (other vertex, face slot), hubs only
     UnionFind fan;
@@ -315,6 +323,12 @@ void count_non_manifold_vertices(const Mesh& mesh, TopologyReport& r)
 
 TopologyReport topology_report(const Mesh& mesh)
 {
+    return topology_report(MeshData(mesh));
+}
+
+TopologyReport topology_report(const MeshData& data)
+{
+    const Mesh& mesh = data.mesh();
     TopologyReport r;
     const std::size_t n = mesh.n_vertices();
     r.vertices = n;
@@ -332,10 +346,10 @@ TopologyReport topology_report(const Mesh& mesh)
     check_cancelled(progress);
     count_duplicate_faces(mesh, r);
     check_cancelled(progress);
-    const auto degenerate = degenerate_face_mask(mesh);
+    const auto& degenerate = data.degenerate_faces();
     r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
     check_cancelled(progress);
-    count_non_manifold_vertices(mesh, r);
+    count_non_manifold_vertices(mesh, data.vertex_faces(), r);
     return r;
 }
 

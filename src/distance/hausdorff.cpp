@@ -65,14 +65,15 @@ void validate(const HausdorffOptions& o)
 }
 
 namespace {
-void validate_inputs(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index, const HausdorffOptions& options)
+void validate_inputs(const MeshData& a, const MeshData& b, const ClosestPointIndex& b_index,
+                     const HausdorffOptions& options)
 {
     validate(options);
-    validate(a, "certified_hausdorff: mesh A");
-    validate(b, "certified_hausdorff: mesh B");
-    if (b_index.n_faces() != b.n_faces())
+    a.validate("certified_hausdorff: mesh A");
+    b.validate("certified_hausdorff: mesh B");
+    if (b_index.n_faces() != b.mesh().n_faces())
         throw InvalidArgumentError(fmt::format("certified_hausdorff: the index holds {} faces but mesh B has {}",
-                                               b_index.n_faces(), b.n_faces()));
+                                               b_index.n_faces(), b.mesh().n_faces()));
 }
 
 // One certification (detail::certified_hausdorff()), in its steps: the lower
@@ -346,12 +347,14 @@ struct Certification
 
 }  // namespace
 
-CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
-                                               const HausdorffOptions& options,
+CertifiedHausdorff detail::certified_hausdorff(const MeshData& a_data, const MeshData& b_data,
+                                               const ClosestPointIndex& b_index, const HausdorffOptions& options,
                                                const std::optional<HausdorffSeed>& seed,
                                                const std::vector<ClosestPoint>& vq)
 {
-    validate_inputs(a, b, b_index, options);
+    validate_inputs(a_data, b_data, b_index, options);
+    const Mesh& a = a_data.mesh();
+    const Mesh& b = b_data.mesh();
     if (vq.size() != a.n_vertices())
         throw InvalidArgumentError(
             fmt::format("certified_hausdorff: {} vertex closest points for {} vertices", vq.size(), a.n_vertices()));
@@ -366,15 +369,19 @@ CertifiedHausdorff detail::certified_hausdorff(const Mesh& a, const Mesh& b, con
 CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
                                        const HausdorffOptions& options, const std::optional<HausdorffSeed>& seed)
 {
-    validate_inputs(a, b, b_index, options);  // before the vertex queries
-    return detail::certified_hausdorff(a, b, b_index, options, seed, b_index.closest_points(a.points));
+    const MeshData a_data(a), b_data(b);
+    validate_inputs(a_data, b_data, b_index, options);  // before the vertex queries
+    return detail::certified_hausdorff(a_data, b_data, b_index, options, seed, b_index.closest_points(a.points));
 }
 
 CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const HausdorffOptions& options)
 {
-    validate(b, "certified_hausdorff: mesh B");
-    const ClosestPointIndex index(b);
-    return certified_hausdorff(a, b, index, options);
+    const MeshData b_data(b);
+    b_data.validate("certified_hausdorff: mesh B");
+    const ClosestPointIndex index(b_data);
+    const MeshData a_data(a);
+    validate_inputs(a_data, b_data, index, options);  // before the vertex queries
+    return detail::certified_hausdorff(a_data, b_data, index, options, std::nullopt, index.closest_points(a.points));
 }
 
 // The seed of a certified Hausdorff distance: the sampled maximum of \p s,

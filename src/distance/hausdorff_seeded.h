@@ -10,9 +10,10 @@
 
 namespace meshdiff::detail {
 
-//! certified_hausdorff(a, b, b_index, options, seed), \p vertex_closest being
+//! certified_hausdorff(a, b, b_index, options, seed) from the derived data
+//! of A and B (mesh_data.h), \p vertex_closest being
 //! b_index.closest_points(a.points) (the closest point of every vertex of A).
-CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const ClosestPointIndex& b_index,
+CertifiedHausdorff certified_hausdorff(const MeshData& a, const MeshData& b, const ClosestPointIndex& b_index,
                                        const HausdorffOptions& options, const std::optional<HausdorffSeed>& seed,
                                        const std::vector<ClosestPoint>& vertex_closest);
 

@@ -20,6 +20,13 @@ using Sum = detail::CompensatedSum;  // sequential, in index order
 
 std::optional<SameConnectivity> same_connectivity(const Mesh& a, const Mesh& b, std::string* reason)
 {
+    return same_connectivity(MeshData(a), MeshData(b), reason);
+}
+
+std::optional<SameConnectivity> same_connectivity(const MeshData& a_data, const MeshData& b_data, std::string* reason)
+{
+    const Mesh& a = a_data.mesh();
+    const Mesh& b = b_data.mesh();
     auto refuse = [reason](std::string why) -> std::optional<SameConnectivity> {
         if (reason) *reason = std::move(why);
         return std::nullopt;
@@ -44,8 +51,8 @@ std::optional<SameConnectivity> same_connectivity(const Mesh& a, const Mesh& b, 
         }
     }
     if (r.vertices > 0) r.displacement_rms = std::sqrt(d2.value() / double(r.vertices));
-    const std::vector<char> da = degenerate_face_mask(a);
-    const std::vector<char> db = degenerate_face_mask(b);
+    const std::vector<char>& da = a_data.degenerate_faces();
+    const std::vector<char>& db = b_data.degenerate_faces();
     Sum a2;
     for (std::size_t f = 0; f < a.n_faces(); ++f) {
         if (da[f] || db[f]) {

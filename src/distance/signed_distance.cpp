@@ -116,11 +116,12 @@ struct SignFacts
     }
 };
 
-SignFacts sign_facts(const Mesh& mesh)
+SignFacts sign_facts(const MeshData& data)
 {
+    const Mesh& mesh = data.mesh();
     SignFacts r;
     const std::size_t nf = mesh.n_faces();
-    const std::vector<char> degenerate = degenerate_face_mask(mesh);
+    const std::vector<char>& degenerate = data.degenerate_faces();
     r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
     EdgeMap edges = edge_map(mesh);
     r.boundary_edges = edges.boundary_edges;
@@ -171,16 +172,22 @@ std::string reason_of(const SignFacts& f, const std::string& name)
 
 std::string sign_unavailable_reason(const Mesh& mesh, const std::string& name)
 {
-    return reason_of(sign_facts(mesh), name);
+    return reason_of(sign_facts(MeshData(mesh)), name);
 }
 
 std::optional<PseudoNormals> pseudo_normals(const Mesh& mesh, const std::string& name, std::string* reason)
 {
+    return pseudo_normals(MeshData(mesh), name, reason);
+}
+
+std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::string& name, std::string* reason)
+{
+    const Mesh& mesh = data.mesh();
     if (3 * std::uint64_t(mesh.n_faces()) >= std::uint64_t(~0u)) {
         if (reason) *reason = fmt::format("{} has too many faces to be signed against ({})", name, mesh.n_faces());
         return std::nullopt;
     }
-    SignFacts facts = sign_facts(mesh);
+    SignFacts facts = sign_facts(data);
     std::string why = reason_of(facts, name);
     const std::size_t nf = mesh.n_faces();
     PseudoNormals n;
@@ -193,7 +200,7 @@ std::optional<PseudoNormals> pseudo_normals(const Mesh& mesh, const std::string&
         }
         n.volume = volume.value();
         // A closed mesh of zero volume (two coinciding sheets, say) has no inside.
-        const double diag = bounding_box(mesh).diagonal();
+        const double diag = data.box().diagonal();
         if (!(std::abs(n.volume) > 1e-12 * diag * diag * diag))
             why = fmt::format("{} encloses no volume (signed volume {:.6g})", name, n.volume);
     }

@@ -63,14 +63,14 @@ std::optional<SummaryMetrics> summary_metrics(const SurfaceDistance& d, std::str
     return m;
 }
 
-double detail::reference_diagonal(const Mesh& a, const char* what)
+double detail::reference_diagonal(const MeshData& a, const char* what)
 {
-    const double diagonal = bounding_box(a).diagonal();
+    const double diagonal = a.box().diagonal();
     if (!(diagonal > 0.0 && std::isfinite(diagonal)))
         throw InvalidMeshError(fmt::format(
             "surface_distance: A (the original) has no extent: its {} {} lie at one place (bounding-box diagonal "
             "{}), so the distances relative to its diagonal are undefined",
-            a.n_vertices(), what, diagonal));
+            a.mesh().n_vertices(), what, diagonal));
     return diagonal;
 }
 
@@ -90,7 +90,7 @@ struct Target
 // With \p vertex_closest (the closest points of all vertices of \p from), the
 // vertex samples take their distances from it instead of new queries (the
 // same values: the queries are exact).
-SampledDirection sampled_direction(const Mesh& from, const Target& to, const SamplingOptions& options,
+SampledDirection sampled_direction(const MeshData& from, const Target& to, const SamplingOptions& options,
                                    const std::vector<ClosestPoint>* vertex_closest, std::vector<std::int8_t>& signs)
 {
     SampledDirection d;
@@ -215,17 +215,18 @@ private:
 // of kQueryBlock: the queries then start from the same triangles as in one
 // batch); only their distances are kept, for the percentiles. The area shares
 // below \p thresholds go to \p within.
-DistanceStats chunked_direction(const Mesh& from, const Target& to, const SamplingOptions& options,
+DistanceStats chunked_direction(const MeshData& from_data, const Target& to, const SamplingOptions& options,
                                 const std::vector<ClosestPoint>* vertex_closest, const std::vector<double>& thresholds,
                                 std::size_t bins, std::size_t chunk, std::vector<double>& within)
 {
+    const Mesh& from = from_data.mesh();
     // As sample_surface() does: check, then plan in the "sampling" stage.
     validate(options);
-    validate(from, "sample_surface");
+    from_data.validate("sample_surface");
     detail::SamplePlan plan;
     {
         detail::StageProgress stage("sampling", 1);
-        plan = detail::plan_samples(from, options);
+        plan = detail::plan_samples(from_data, options);
         stage.finish();
     }
     const std::size_t n = plan.size();
@@ -295,8 +296,10 @@ std::vector<double> apply_signs(const std::vector<double>& distances, const std:
 // mesh's samples or a cloud's points) and their distances to `to`.
 struct DirectionTask
 {
-    const Mesh& from;
-    const Mesh& to;
+    const MeshData& from_data;  // the derived data of `from` and `to`
+    const MeshData& to_data;
+    const Mesh& from;  // from_data.mesh()
+    const Mesh& to;    // to_data.mesh()
     bool from_cloud;
     bool to_cloud;
     const char* to_name;  // names `to` in the reason for no sign
@@ -333,7 +336,7 @@ struct DirectionTarget
 void build_index(const DirectionTask& t, DirectionTarget& g)
 {
     if (!t.index) {
-        g.index = &g.own.emplace(t.to);
+        g.index = &g.own.emplace(t.to_data);
         return;
     }
     if (t.index->n_faces() != t.to.n_faces())
@@ -359,7 +362,7 @@ void make_target(const DirectionTask& t, DirectionTarget& g)
         // while the index is built.
         auto made_normals =
             std::async(omp_get_max_threads() > 1 && !t.index ? std::launch::async : std::launch::deferred,
-                       [&] { return pseudo_normals(t.to, t.to_name, &g.unsigned_reason); });
+                       [&] { return pseudo_normals(t.to_data, t.to_name, &g.unsigned_reason); });
         build_index(t, g);
         g.normals = made_normals.get();
     }
@@ -406,13 +409,14 @@ DirectionResult one_direction(const DirectionTask& t)
     if (meshes && !t.keep) {
         // The same statistics without keeping the samples (freed before the certification).
         const Target target{t.to, *g.index, g.normals ? &*g.normals : nullptr};
-        r.stats = chunked_direction(t.from, target, t.sampling, vertex_closest, t.thresholds, bins, t.chunk, r.within);
+        r.stats =
+            chunked_direction(t.from_data, target, t.sampling, vertex_closest, t.thresholds, bins, t.chunk, r.within);
     } else {
         SampledDirection d;
         if (meshes) {
             std::vector<std::int8_t> signs;
             const Target target{t.to, *g.index, g.normals ? &*g.normals : nullptr};
-            d = sampled_direction(t.from, target, t.sampling, vertex_closest, signs);
+            d = sampled_direction(t.from_data, target, t.sampling, vertex_closest, signs);
             r.stats = distance_stats(d.samples, d.distances);
             if (g.normals) {
                 d.signed_distances = apply_signs(d.distances, signs);
@@ -444,8 +448,8 @@ DirectionResult one_direction(const DirectionTask& t)
     }
     g.normals.reset();  // free the pseudo-normals before the certification
     if (o.hausdorff && meshes)
-        r.certified =
-            detail::certified_hausdorff(t.from, t.to, *g.index, *o.hausdorff, detail::seed_of(t.from, r.stats), vq);
+        r.certified = detail::certified_hausdorff(t.from_data, t.to_data, *g.index, *o.hausdorff,
+                                                  detail::seed_of(t.from, r.stats), vq);
     else if (o.hausdorff && t.from_cloud)
         r.certified =
             detail::exact_over_points(t.to, g.index, g.cloud ? &*g.cloud : nullptr, r.stats, t.from.points.size());
@@ -458,9 +462,25 @@ DistanceStats one_sided_distance(const Mesh& from, const ClosestPointIndex& to, 
 {
     const Mesh none;
     std::vector<std::int8_t> signs;
-    const SampledDirection d = sampled_direction(from, Target{none, to, nullptr}, options, nullptr, signs);
+    const SampledDirection d = sampled_direction(MeshData(from), Target{none, to, nullptr}, options, nullptr, signs);
     return distance_stats(d.samples, d.distances);
 }
+
+namespace {
+
+// The derived data of \p mesh ("A" or "B", \p which): \p given if set (it
+// must be that very mesh's), else made in \p own.
+const MeshData& data_of(const Mesh& mesh, const MeshData* given, std::optional<MeshData>& own, const char* which)
+{
+    if (!given) return own.emplace(mesh);
+    if (&given->mesh() != &mesh)
+        throw InvalidArgumentError(
+            fmt::format("DistanceOptions: data_{} holds the derived data of another mesh than {}",
+                        which[0] == 'A' ? "a" : "b", which));
+    return *given;
+}
+
+}  // namespace
 
 SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const DistanceOptions& options, bool keep_forward,
                                        bool keep_backward, bool clouds, std::size_t chunk)
@@ -471,15 +491,19 @@ SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const Dista
     validate(options.sampling);
     validate(options.summary);
     if (options.hausdorff) validate(*options.hausdorff);
+    // The derived data of A and B: the caller's, or made here.
+    std::optional<MeshData> own_a, own_b;
+    const MeshData& da = data_of(a, options.data_a, own_a, "A");
+    const MeshData& db = data_of(b, options.data_b, own_b, "B");
     const bool cloud_a = clouds && a.faces.empty(), cloud_b = clouds && b.faces.empty();
     if (cloud_a)
         check_cloud(a, "surface_distance: A");
     else
-        validate(a, "surface_distance: mesh A");
+        da.validate("surface_distance: mesh A");
     if (cloud_b)
         check_cloud(b, "surface_distance: B");
     else
-        validate(b, "surface_distance: mesh B");
+        db.validate("surface_distance: mesh B");
     // An unset target is Metro's 10 x max(#faces A, #faces B), each point of
     // a cloud counted as a face, so that a mesh is sampled at least as
     // densely as the cloud it is measured against.
@@ -489,20 +513,20 @@ SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const Dista
             10 * std::max(cloud_a ? a.n_vertices() : a.n_faces(), cloud_b ? b.n_vertices() : b.n_faces());
     // A cloud of one point (or of equal points) has no diagonal: an input
     // error like a mesh without extent.
-    const double diagonal = reference_diagonal(a, cloud_a ? "points" : "vertices");
+    const double diagonal = reference_diagonal(da, cloud_a ? "points" : "vertices");
     std::vector<double> thresholds;  // absolute
     for (double t : options.summary.fscore_thresholds) thresholds.push_back(t * diagonal);
 
     SurfaceDistance r;
-    DirectionResult f = one_direction({a, b, cloud_a, cloud_b, "the processed mesh", options, sampling, thresholds,
-                                       keep_forward, chunk, cloud_b ? nullptr : options.index_b});
+    DirectionResult f = one_direction({da, db, a, b, cloud_a, cloud_b, "the processed mesh", options, sampling,
+                                       thresholds, keep_forward, chunk, cloud_b ? nullptr : options.index_b});
     r.forward = std::move(f.stats);
     r.forward_samples = std::move(f.samples);
     r.original_vertex_distance = std::move(f.vertex_distance);
     r.original_vertex_signed_distance = std::move(f.vertex_signed_distance);
     r.forward_hausdorff = std::move(f.certified);
-    DirectionResult k = one_direction({b, a, cloud_b, cloud_a, "the original mesh", options, sampling, thresholds,
-                                       keep_backward, chunk, cloud_a ? nullptr : options.index_a});
+    DirectionResult k = one_direction({db, da, b, a, cloud_b, cloud_a, "the original mesh", options, sampling,
+                                       thresholds, keep_backward, chunk, cloud_a ? nullptr : options.index_a});
     r.backward = std::move(k.stats);
     r.backward_samples = std::move(k.samples);
     r.processed_vertex_distance = std::move(k.vertex_distance);
@@ -511,7 +535,7 @@ SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const Dista
 
     r.hausdorff = std::max(r.forward.max, r.backward.max);
     r.diagonal = diagonal;
-    r.metro_diagonal = metro_diagonal(a, b);
+    r.metro_diagonal = metro_diagonal(da.box(), db.box());
     r.summary = summary_metrics(r, &r.summary_unavailable);
     if (r.summary) r.fscore = fscores(options.summary.fscore_thresholds, diagonal, f.within, k.within);
     r.forward_kind = distance_kind(cloud_a, cloud_b);
@@ -578,8 +602,11 @@ std::vector<double> vertex_distances(const Mesh& from, const Mesh& to, const Clo
 
 double metro_diagonal(const Mesh& a, const Mesh& b)
 {
-    const BoundingBox ba = bounding_box(a);
-    const BoundingBox bb = bounding_box(b);
+    return metro_diagonal(bounding_box(a), bounding_box(b));
+}
+
+double metro_diagonal(const BoundingBox& ba, const BoundingBox& bb)
+{
     BoundingBox u;
     u.min = ba.min.cwiseMin(bb.min);
     u.max = ba.max.cwiseMax(bb.max);

@@ -14,7 +14,7 @@ namespace meshdiff::detail {
 //! distance divides by; throws InvalidMeshError when it is not positive: all
 //! of A's vertices (or points) at one place, or so close that the diagonal
 //! underflows. \p what names A's elements ("vertices", "points").
-double reference_diagonal(const Mesh& a, const char* what);
+double reference_diagonal(const MeshData& a, const char* what);
 
 //! The samples a direction makes and queries at a time when they are not kept
 //! (128 query blocks, about 8 MB of points, kinds, elements and signs).

@@ -238,6 +238,12 @@ ClosestPointIndex::ClosestPointIndex(const Mesh& mesh) : impl_(std::make_unique<
     detail::build_bvh(mesh, *impl_);
 }
 
+ClosestPointIndex::ClosestPointIndex(const MeshData& data) : impl_(std::make_unique<Impl>())
+{
+    data.validate("ClosestPointIndex");
+    detail::build_bvh(data.mesh(), *impl_);
+}
+
 ClosestPointIndex::~ClosestPointIndex() = default;
 ClosestPointIndex::ClosestPointIndex(ClosestPointIndex&&) noexcept = default;
 ClosestPointIndex& ClosestPointIndex::operator=(ClosestPointIndex&&) noexcept = default;

@@ -8,9 +8,15 @@ namespace meshdiff {
 
 std::vector<Vec3> vertex_normals(const Mesh& mesh)
 {
+    return vertex_normals(MeshData(mesh));
+}
+
+std::vector<Vec3> vertex_normals(const MeshData& data)
+{
+    const Mesh& mesh = data.mesh();
     std::vector<Vec3> normals(mesh.n_vertices(), Vec3::Zero());
     std::vector<double> weight(mesh.n_vertices(), 0.0);
-    const auto degenerate = degenerate_face_mask(mesh);
+    const std::vector<char>& degenerate = data.degenerate_faces();
     for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
         if (degenerate[f]) continue;
         const Face& t = mesh.faces[f];

@@ -40,7 +40,7 @@ struct SamplePlan
 
 //! The counts of sample_surface(mesh, options), options and mesh valid
 //! (checks for cancellation in between, as sample_surface() does).
-SamplePlan plan_samples(const Mesh& mesh, const SamplingOptions& options);
+SamplePlan plan_samples(const MeshData& data, const SamplingOptions& options);
 
 //! Makes the samples of a plan, a range of sample indices at a time. The
 //! MonteCarlo points come from one random stream drawn in sample order:

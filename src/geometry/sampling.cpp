@@ -52,11 +52,15 @@ void validate(const SamplingOptions& options)
         throw OptionError("sampling.density", fmt::format("{} must be finite and > 0", *options.density));
 }
 
-std::size_t sample_target(const Mesh& mesh, const SamplingOptions& options, std::size_t default_target)
+namespace {
+
+// sample_target() with the mesh's derived data.
+std::size_t sample_target(const MeshData& data, const SamplingOptions& options, std::size_t default_target)
 {
+    const Mesh& mesh = data.mesh();
     if (options.samples) return *options.samples;
     if (options.density) {
-        const auto degenerate = degenerate_face_mask(mesh);
+        const auto& degenerate = data.degenerate_faces();
         double area = 0.0;
         for (std::size_t f = 0; f < mesh.n_faces(); ++f)
             if (!degenerate[f]) area += 0.5 * face_cross(mesh, f).norm();
@@ -76,17 +80,25 @@ std::size_t sample_target(const Mesh& mesh, const SamplingOptions& options, std:
     return default_target;
 }
 
+}  // namespace
+
+std::size_t sample_target(const Mesh& mesh, const SamplingOptions& options, std::size_t default_target)
+{
+    return sample_target(MeshData(mesh), options, default_target);
+}
+
 namespace detail {
 
-SamplePlan plan_samples(const Mesh& mesh, const SamplingOptions& options)
+SamplePlan plan_samples(const MeshData& data, const SamplingOptions& options)
 {
+    const Mesh& mesh = data.mesh();
     SamplePlan plan;
     SurfaceSamples& s = plan.counts;
     plan.scheme = options.face_scheme;
     plan.seed = options.seed;
-    s.target = sample_target(mesh, options, 10 * mesh.n_faces());
+    s.target = sample_target(data, options, 10 * mesh.n_faces());
 
-    const auto degenerate = degenerate_face_mask(mesh);
+    const auto& degenerate = data.degenerate_faces();
     std::vector<double> face_area(mesh.n_faces(), 0.0);
     double area = 0.0;
     for (std::size_t f = 0; f < mesh.n_faces(); ++f)
@@ -285,9 +297,10 @@ void SampleMaker::make(std::size_t begin, std::size_t end, Vec3* points, SampleK
 
 namespace {
 
-SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions& options)
+SurfaceSamples sample_surface_unreported(const MeshData& data, const SamplingOptions& options)
 {
-    const detail::SamplePlan plan = detail::plan_samples(mesh, options);
+    const Mesh& mesh = data.mesh();
+    const detail::SamplePlan plan = detail::plan_samples(data, options);
     SurfaceSamples s = plan.counts;
     const std::size_t n = plan.size();
     s.points.resize(n);
@@ -301,10 +314,15 @@ SurfaceSamples sample_surface_unreported(const Mesh& mesh, const SamplingOptions
 
 SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options)
 {
+    return sample_surface(MeshData(mesh), options);
+}
+
+SurfaceSamples sample_surface(const MeshData& data, const SamplingOptions& options)
+{
     validate(options);
-    validate(mesh, "sample_surface");
+    data.validate("sample_surface");
     detail::StageProgress stage("sampling", 1);
-    SurfaceSamples s = sample_surface_unreported(mesh, options);
+    SurfaceSamples s = sample_surface_unreported(data, options);
     stage.finish();
     return s;
 }

@@ -11,10 +11,15 @@ namespace meshdiff {
 
 MeshFacts mesh_facts(const LoadedMesh& loaded)
 {
+    return mesh_facts(loaded, MeshData(loaded.mesh));
+}
+
+MeshFacts mesh_facts(const LoadedMesh& loaded, const MeshData& data)
+{
     MeshFacts f;
     f.input = loaded.input;
-    f.topology = topology_report(loaded.mesh);
-    f.box = bounding_box(loaded.mesh);
+    f.topology = topology_report(data);
+    f.box = data.box();
     f.area = surface_area(loaded.mesh);
     return f;
 }

@@ -77,24 +77,6 @@ Pooled pool(const std::vector<double>& F, const std::vector<double>& mean, const
     return p;
 }
 
-// The mean of F over all other vertices with a defined F (NaN at a vertex
-// without F, or with fewer than two), as the global level of a profile.
-std::vector<double> global_means(const std::vector<double>& F)
-{
-    long double sum = 0.0L;
-    std::size_t m = 0;
-    for (double f : F)
-        if (!std::isnan(f)) {
-            sum += f;
-            ++m;
-        }
-    std::vector<double> mean(F.size(), kNaN);
-    if (m >= 2)
-        for (std::size_t i = 0; i < F.size(); ++i)
-            if (!std::isnan(F[i])) mean[i] = double((sum - F[i]) / (long double)(m - 1));
-    return mean;
-}
-
 }  // namespace
 
 Vec3 barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
@@ -142,9 +124,10 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
     }
     // The operator of mesh's own profile: its rings, its global level, its
     // balls on its normalised mesh; its vertex areas weight the RMS.
-    const Mesh unit = apply_normalization(mesh, pa.normalization);
-    const Adjacency adj = vertex_adjacency(unit);
-    const std::vector<double> area = vertex_areas(unit);
+    const Mesh unit_mesh = apply_normalization(mesh, pa.normalization);
+    const MeshData unit(unit_mesh);  // its box, derived once for the rings and the balls
+    const Adjacency adj = vertex_adjacency(unit_mesh);
+    const std::vector<double> area = vertex_areas(unit_mesh);
     for (const LevelRoughness& la : pa.levels)
         for (const LevelRoughness& lb : pb.levels)
             if (la.level == lb.level) {

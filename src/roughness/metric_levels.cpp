@@ -354,6 +354,13 @@ std::vector<std::uint32_t> ball_patch(const Mesh& mesh, const Adjacency& adj, st
 BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<double>& values,
                      const std::vector<double>& weights, const std::vector<double>& radii, bool with_sizes)
 {
+    return ball_means(MeshData(mesh), adj, values, weights, radii, with_sizes);
+}
+
+BallMeans ball_means(const MeshData& data, const Adjacency& adj, const std::vector<double>& values,
+                     const std::vector<double>& weights, const std::vector<double>& radii, bool with_sizes)
+{
+    const Mesh& mesh = data.mesh();
     check_radii(radii);
     check_sizes(mesh, adj);
     const std::size_t n = mesh.n_vertices();
@@ -378,7 +385,7 @@ BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
 
     // A copy of the mesh renumbered in Morton order, so that nearby vertices
     // share cache lines.
-    const std::vector<std::uint32_t> order = morton_order(mesh);
+    const std::vector<std::uint32_t> order = morton_order(mesh, data.box());
     std::vector<std::uint32_t> rank(n);
     for (std::size_t i = 0; i < n; ++i) rank[order[i]] = std::uint32_t(i);
     Mesh pm;
@@ -399,7 +406,8 @@ BallMeans ball_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
 
     // Centres with a defined value in compact batches (as for rings).
     constexpr std::size_t kBatch = BatchBall<kBallWords>::kBatch;
-    const std::vector<std::uint32_t> centres = clustered_order(pm, padj, pvalues, kBatch);
+    // pm's points are mesh's, permuted: the same bounding box.
+    const std::vector<std::uint32_t> centres = clustered_order(morton_order(pm, data.box()), padj, pvalues, kBatch);
     const std::size_t n_batches = (centres.size() + kBatch - 1) / kBatch;
 
     detail::StageProgress stage("metric levels", n_batches);

@@ -29,10 +29,10 @@ inline std::uint64_t spread_bits(std::uint64_t x)
 }
 
 //! The vertex ids of \p mesh sorted along a Morton curve of their positions
-//! (21 bits per axis over the bounding box; ties by id).
-inline std::vector<std::uint32_t> morton_order(const Mesh& mesh)
+//! (21 bits per axis over \p box, the bounding box of the positions; ties by
+//! id).
+inline std::vector<std::uint32_t> morton_order(const Mesh& mesh, const BoundingBox& box)
 {
-    const auto box = bounding_box(mesh);
     const Vec3 ext = (box.max - box.min).cwiseMax(Vec3::Constant(1e-300));
     const double cells = double((1u << 21) - 1);
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(mesh.n_vertices());
@@ -49,10 +49,10 @@ inline std::vector<std::uint32_t> morton_order(const Mesh& mesh)
 }
 
 //! Centres grouped into compact patches of the mesh graph: seeds are taken in
-//! Morton order, and each patch grows by breadth-first search over vertices
+//! \p morton (morton_order()), and each patch grows by breadth-first search over vertices
 //! not yet assigned until it holds \p batch centres (or its component is
 //! exhausted). Compact batches keep the union of their disks small.
-inline std::vector<std::uint32_t> clustered_order(const Mesh& mesh, const Adjacency& adj,
+inline std::vector<std::uint32_t> clustered_order(const std::vector<std::uint32_t>& morton, const Adjacency& adj,
                                                   const std::vector<double>& values, std::size_t batch)
 {
     const std::size_t n = adj.size();
@@ -61,7 +61,7 @@ inline std::vector<std::uint32_t> clustered_order(const Mesh& mesh, const Adjace
     order.reserve(n);
     std::vector<std::uint32_t> queue;
     std::size_t in_batch = 0;
-    for (auto seed : morton_order(mesh)) {
+    for (auto seed : morton) {
         if (assigned[seed] || std::isnan(values[seed])) continue;
         queue.assign(1, seed);
         assigned[seed] = 1;

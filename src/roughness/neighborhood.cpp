@@ -399,6 +399,13 @@ constexpr std::size_t kWordSumDegree = 1024;
 DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<double>& values,
                      const std::vector<int>& levels, bool with_sizes)
 {
+    return disk_means(MeshData(mesh), adj, values, levels, with_sizes);
+}
+
+DiskMeans disk_means(const MeshData& data, const Adjacency& adj, const std::vector<double>& values,
+                     const std::vector<int>& levels, bool with_sizes)
+{
+    const Mesh& mesh = data.mesh();
     const std::size_t n = adj.size();
     if (values.size() != n || mesh.n_vertices() != n)
         throw InvalidArgumentError("disk_means: values, adjacency and mesh sizes differ");
@@ -414,7 +421,8 @@ DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
     // Centres with a defined value, in Morton order, cut into batches of kBatch (64 x kWords).
     std::vector<std::uint32_t> centres;
     centres.reserve(n);
-    for (auto v : clustered_order(mesh, adj, values, BatchBfs<kWords>::kBatch)) centres.push_back(v);
+    const std::vector<std::uint32_t> morton = detail::morton_order(mesh, data.box());
+    for (auto v : clustered_order(morton, adj, values, BatchBfs<kWords>::kBatch)) centres.push_back(v);
     const std::size_t n_batches = (centres.size() + BatchBfs<kWords>::kBatch - 1) / BatchBfs<kWords>::kBatch;
     const bool all_defined = centres.size() == n;
     bool word_sums = false;
@@ -445,7 +453,7 @@ DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
     std::vector<std::uint32_t> order, rank;
     bool renumber = false;
     if (far_input > adj.index.size() / 8) {
-        order = detail::morton_order(mesh);
+        order = morton;
         rank.resize(n);
         for (std::size_t i = 0; i < n; ++i) rank[order[i]] = std::uint32_t(i);
         renumber = far_input > 2 * far_neighbours(rank.data());
@@ -495,6 +503,22 @@ DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
     }
     stage.finish();
     return out;
+}
+
+std::vector<double> global_means(const std::vector<double>& values)
+{
+    long double sum = 0.0L;
+    std::size_t m = 0;
+    for (double v : values)
+        if (!std::isnan(v)) {
+            sum += v;
+            ++m;
+        }
+    std::vector<double> mean(values.size(), std::numeric_limits<double>::quiet_NaN());
+    if (m >= 2)
+        for (std::size_t i = 0; i < values.size(); ++i)
+            if (!std::isnan(values[i])) mean[i] = double((sum - values[i]) / (long double)(m - 1));
+    return mean;
 }
 
 }  // namespace meshdiff

@@ -233,7 +233,7 @@ void apply_trim(LevelRoughness& l, const std::vector<double>& D, const ProfileOp
 }
 
 // Levels and global level from H on the normalised mesh; fills p.
-void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj, std::vector<double> H,
+void profile_from_H(RoughnessProfile& p, const MeshData& unit, const Adjacency& adj, std::vector<double> H,
                     std::size_t undefined, const ProfileOptions& options)
 {
     const std::size_t n = H.size();
@@ -265,16 +265,8 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
     if (options.global) {
         p.has_global = true;
         // Mean over all other vertices with defined H, in O(n).
-        long double sum = 0.0L;
-        std::size_t m = 0;
-        for (double h : H)
-            if (!std::isnan(h)) {
-                sum += h;
-                ++m;
-            }
-        for (std::size_t i = 0; i < n; ++i)
-            D[i] = (std::isnan(H[i]) || m < 2) ? std::numeric_limits<double>::quiet_NaN()
-                                               : H[i] - double((sum - H[i]) / (long double)(m - 1));
+        D = global_means(H);
+        for (std::size_t i = 0; i < n; ++i) D[i] = H[i] - D[i];  // NaN propagates
         p.global = level_roughness(0, D, options.outlier_fraction);
         apply_trim(p.global, D, options);
         p.global.sigma_interval = bootstrap_interval(D, options.trim, options.bootstrap, options.bootstrap_seed);
@@ -283,7 +275,7 @@ void profile_from_H(RoughnessProfile& p, const Mesh& unit, const Adjacency& adj,
     }
     if (!options.radii.empty()) {
         // Metric levels (METHOD.md section 5a): area-weighted ball means.
-        const std::vector<double> area = vertex_areas(unit);
+        const std::vector<double> area = vertex_areas(unit.mesh());
         const BallMeans balls = ball_means(unit, adj, H, area, options.radii);
         p.radii.resize(options.radii.size());
         if (options.keep_vertex_data) p.D_radii.resize(options.radii.size());
@@ -334,7 +326,8 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
     const Adjacency adj = vertex_adjacency(unit);
     check_ball_work(unit, adj, options.radii);  // before any long work
     check_cancelled(current_progress());
-    const std::vector<Vec3> normals = vertex_normals(unit);
+    const MeshData unit_data(unit);  // its box and degenerate faces, derived once
+    const std::vector<Vec3> normals = vertex_normals(unit_data);
 
     p.curvature_options = options.curvature;
     CurvatureField field = mean_curvature(unit, adj, normals, options.curvature);
@@ -345,7 +338,7 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
     p.curvature_steep = field.steep;
     p.curvature_capped = field.capped;
     p.curvature_capped_vertices = field.capped_vertices;
-    profile_from_H(p, unit, adj, std::move(field.H), field.undefined, options);
+    profile_from_H(p, unit_data, adj, std::move(field.H), field.undefined, options);
     return p;
 }
 
@@ -374,7 +367,7 @@ RoughnessProfile roughness_profile_from_curvature(const Mesh& mesh, const std::v
     p.curvature_undefined = undefined;
     const Adjacency adj = vertex_adjacency(unit);
     check_ball_work(unit, adj, options.radii);
-    profile_from_H(p, unit, adj, std::move(H), undefined, options);
+    profile_from_H(p, MeshData(unit), adj, std::move(H), undefined, options);
     return p;
 }
 

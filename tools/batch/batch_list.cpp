@@ -1,7 +1,7 @@
 #include "batch_list.h"
 
 #include "meshdiff/error.h"
-#include "meshdiff/options.h"
+#include "meshdiff/frontend/options.h"
 
 #include <fmt/format.h>
 

@@ -123,6 +123,8 @@ TopologyReport topology_report(const Mesh& mesh);
 //! bounding-box diagonal). Such faces contribute no normal, no curvature term
 //! and no face samples.
 std::vector<char> degenerate_face_mask(const Mesh& mesh);
+//! The same from the mesh's bounding box \p box (bounding_box(mesh)).
+std::vector<char> degenerate_face_mask(const Mesh& mesh, const BoundingBox& box);
 
 //! Per-vertex flag: true where the vertex lies on a boundary edge (an edge
 //! with exactly one face) or on a non-manifold edge.

@@ -16,6 +16,7 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/mesh_data.h"
 
 #include <cstddef>
 #include <optional>
@@ -41,6 +42,9 @@ struct SameConnectivity
 //! same connectivity; then \p reason (if given) says why, e.g. "vertex counts
 //! differ (100 vs 98)" or "face 7 differs: (1, 2, 3) vs (1, 3, 2)".
 std::optional<SameConnectivity> same_connectivity(const Mesh& original, const Mesh& processed,
+                                                  std::string* reason = nullptr);
+//! The same from the two meshes' derived data (mesh_data.h).
+std::optional<SameConnectivity> same_connectivity(const MeshData& original, const MeshData& processed,
                                                   std::string* reason = nullptr);
 
 }  // namespace meshdiff

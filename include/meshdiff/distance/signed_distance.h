@@ -28,6 +28,7 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/mesh_data.h"
 #include "meshdiff/geometry/closest_point.h"
 #include "meshdiff/geometry/point_triangle.h"
 
@@ -83,6 +84,9 @@ std::string sign_unavailable_reason(const Mesh& mesh, const std::string& name);
 //! The pseudo-normals of \p mesh, or std::nullopt with \p reason set
 //! (sign_unavailable_reason(), or a zero volume) when it cannot be signed against.
 std::optional<PseudoNormals> pseudo_normals(const Mesh& mesh, const std::string& name = "the mesh",
+                                            std::string* reason = nullptr);
+//! The same from \p data, the derived data of the mesh (mesh_data.h).
+std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::string& name = "the mesh",
                                             std::string* reason = nullptr);
 
 //! Sign (-1, 0 or +1) of the distance of \p p to \p mesh whose closest point

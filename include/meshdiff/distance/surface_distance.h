@@ -147,6 +147,13 @@ struct DistanceOptions
     //! own k-d tree.
     const ClosestPointIndex* index_a = nullptr;
     const ClosestPointIndex* index_b = nullptr;
+    //! The derived data (mesh_data.h) of A and of B that the caller keeps,
+    //! e.g. from the topology report of the same meshes: each datum is then
+    //! derived once for all of them; nullptr (the default): made for the
+    //! call. Each must be that very mesh's (MeshData::mesh() is A, B) and
+    //! outlive the call; the results are the same bit for bit.
+    const MeshData* data_a = nullptr;
+    const MeshData* data_b = nullptr;
 };
 
 //! The Chamfer distances and PSNR of \p d from its directions'
@@ -214,5 +221,7 @@ std::vector<double> vertex_distances(const Mesh& from, const Mesh& to, const Clo
 //! Diagonal of the union of the boxes of \p a and \p b widened by 2% of its
 //! diagonal on every side (Metro's reference diagonal).
 double metro_diagonal(const Mesh& a, const Mesh& b);
+//! The same from the two meshes' bounding boxes.
+double metro_diagonal(const BoundingBox& a, const BoundingBox& b);
 
 }  // namespace meshdiff

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/mesh_data.h"
 #include "meshdiff/geometry/point_triangle.h"
 
 #include <array>
@@ -47,6 +48,9 @@ public:
     //! Builds the index over all faces of \p mesh (degenerate ones included).
     //! \throw InvalidMeshError if \p mesh is invalid (see meshdiff::validate()).
     explicit ClosestPointIndex(const Mesh& mesh);
+    //! The same from \p data, the derived data of the mesh (mesh_data.h),
+    //! which validates the mesh once.
+    explicit ClosestPointIndex(const MeshData& data);
     ~ClosestPointIndex();
     ClosestPointIndex(ClosestPointIndex&&) noexcept;
     ClosestPointIndex& operator=(ClosestPointIndex&&) noexcept;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/mesh_data.h"
 #include "meshdiff/core/topology.h"
 
 #include <vector>
@@ -17,5 +18,7 @@ namespace meshdiff {
 //! length of the sum is below 1e-6 times the sum of the angle weights), gets
 //! the zero vector: callers treat it as "no normal".
 std::vector<Vec3> vertex_normals(const Mesh& mesh);
+//! The same from \p data, the derived data of the mesh (its degenerate faces).
+std::vector<Vec3> vertex_normals(const MeshData& data);
 
 }  // namespace meshdiff

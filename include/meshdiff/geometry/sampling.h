@@ -38,6 +38,7 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/mesh_data.h"
 #include "meshdiff/core/topology.h"
 #include "meshdiff/enum_names.h"
 
@@ -128,5 +129,7 @@ std::size_t sample_target(const Mesh& mesh, const SamplingOptions& options, std:
 //! \throw InvalidArgumentError for invalid options (see validate()).
 //! \throw InvalidMeshError if \p mesh is invalid (see meshdiff::validate()).
 SurfaceSamples sample_surface(const Mesh& mesh, const SamplingOptions& options = {});
+//! The same from \p data, the derived data of the mesh (mesh_data.h).
+SurfaceSamples sample_surface(const MeshData& data, const SamplingOptions& options = {});
 
 }  // namespace meshdiff

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/mesh_data.h"
 #include "meshdiff/core/topology.h"
 #include "meshdiff/enum_names.h"
 #include "meshdiff/io/io.h"
@@ -29,6 +30,8 @@ struct MeshFacts
 
 //! The facts of a mesh as read.
 MeshFacts mesh_facts(const LoadedMesh& loaded);
+//! The same from \p data, the derived data of loaded.mesh (mesh_data.h).
+MeshFacts mesh_facts(const LoadedMesh& loaded, const MeshData& data);
 
 //! What a warning is about.
 enum class WarningKind

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/mesh_data.h"
 #include "meshdiff/core/topology.h"
 #include "meshdiff/geometry/vertex_areas.h"  // vertex_areas() was declared here until 0.2
 #include "meshdiff/roughness/roughness.h"
@@ -74,6 +75,9 @@ struct BallMeans
 //! batches, each batch's sums accumulated in a fixed order).
 //! \throw InvalidArgumentError for a bad radius or mismatched sizes.
 BallMeans ball_means(const Mesh& mesh, const Adjacency& adjacency, const std::vector<double>& values,
+                     const std::vector<double>& weights, const std::vector<double>& radii, bool with_sizes = false);
+//! The same from \p data, the derived data of the mesh (its bounding box).
+BallMeans ball_means(const MeshData& data, const Adjacency& adjacency, const std::vector<double>& values,
                      const std::vector<double>& weights, const std::vector<double>& radii, bool with_sizes = false);
 
 //! Area-weighted sigma of one metric level: sqrt( sum w_i D_i^2 / sum w_i )

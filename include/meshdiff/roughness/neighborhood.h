@@ -6,6 +6,7 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/mesh_data.h"
 #include "meshdiff/core/topology.h"
 
 #include <cstdint>
@@ -49,5 +50,15 @@ struct DiskMeans
 //! \throw InvalidArgumentError for a level < 1 or mismatched sizes.
 DiskMeans disk_means(const Mesh& mesh, const Adjacency& adjacency, const std::vector<double>& values,
                      const std::vector<int>& levels, bool with_sizes = false);
+//! The same from \p data, the derived data of the mesh (its bounding box).
+DiskMeans disk_means(const MeshData& data, const Adjacency& adjacency, const std::vector<double>& values,
+                     const std::vector<int>& levels, bool with_sizes = false);
+
+//! The global level's means: at each vertex with a defined value, the mean
+//! over all OTHER vertices with a defined value (a long double sum, O(n));
+//! NaN where the value is NaN or fewer than two values are defined. The one
+//! home of the leave-one-out mean of METHOD.md's global level, for the profile
+//! and the local roughness difference alike.
+std::vector<double> global_means(const std::vector<double>& values);
 
 }  // namespace meshdiff

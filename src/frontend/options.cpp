@@ -1,4 +1,4 @@
-#include "meshdiff/options.h"
+#include "meshdiff/frontend/options.h"
 
 #include "meshdiff/distance/surface_distance.h"
 #include "meshdiff/roughness/metric_levels.h"

@@ -1,4 +1,4 @@
-//! \file options.h
+//! \file frontend/options.h
 //! \brief The rules of the options that the front ends (the CLI, batch,
 //! Python) share, in one home: the text forms of the list options (`1-20`,
 //! `default`, `0.001,0.005`), the Hausdorff method and the rule that turns
