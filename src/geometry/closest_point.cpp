@@ -68,8 +68,10 @@ inline void slot_distances2_scalar(const WideNode& n, const Vec3& p, double d2[4
 }
 
 #if MESHDIFF_HAVE_AVX512_KERNELS
-// The same in AVX2 registers (a lane per slot; not FMA).
-__attribute__((target("avx2"))) inline void slot_distances2_avx2(const WideNode& n, const Vec3& p, double d2[4])
+// The same in AVX2 registers (a lane per slot; not FMA), returning the mask
+// of the slots with d2 * keep <= best.
+__attribute__((target("avx2"))) inline unsigned slot_distances2_avx2(const WideNode& n, const Vec3& p, double keep,
+                                                                     double best, double d2[4])
 {
     const __m256d zero = _mm256_setzero_pd();
     __m256d e[3];
@@ -82,6 +84,8 @@ __attribute__((target("avx2"))) inline void slot_distances2_avx2(const WideNode&
     const __m256d sum =
         _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(e[0], e[0]), _mm256_mul_pd(e[1], e[1])), _mm256_mul_pd(e[2], e[2]));
     _mm256_storeu_pd(d2, sum);
+    return unsigned(
+        _mm256_movemask_pd(_mm256_cmp_pd(_mm256_mul_pd(sum, _mm256_set1_pd(keep)), _mm256_set1_pd(best), _CMP_LE_OQ)));
 }
 #endif
 
@@ -199,19 +203,25 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
     auto push_slots = [&](std::uint32_t w, unsigned skip) MESHDIFF_INLINE {
         const WideNode& node = nodes[w];
         double d2[4];
-#if MESHDIFF_HAVE_AVX512_KERNELS
-        if constexpr (kAvx2)
-            slot_distances2_avx2(node, p, d2);
-        else
-#endif
-            slot_distances2_scalar(node, p, d2);
-        if (node.obb_mask & 0xFu) {
-            for (unsigned s = 0; s < node.slots; ++s)
-                if (node.obb_mask & (1u << s)) d2[s] = std::max(d2[s], obb_distance2(obb(node, s), p));
-        }
         // The slots to visit: used, not `skip`, not pruned.
         unsigned live = 0;
-        for (unsigned s = 0; s < 4; ++s) live |= unsigned(d2[s] * keep <= best_d2) << s;
+#if MESHDIFF_HAVE_AVX512_KERNELS
+        if constexpr (kAvx2) {
+            live = slot_distances2_avx2(node, p, keep, best_d2, d2);
+        } else
+#endif
+        {
+            slot_distances2_scalar(node, p, d2);
+            for (unsigned s = 0; s < 4; ++s) live |= unsigned(d2[s] * keep <= best_d2) << s;
+        }
+        if (node.obb_mask & 0xFu) {
+            for (unsigned s = 0; s < node.slots; ++s) {
+                if (node.obb_mask & (1u << s)) {
+                    d2[s] = std::max(d2[s], obb_distance2(obb(node, s), p));
+                    if (!(d2[s] * keep <= best_d2)) live &= ~(1u << s);
+                }
+            }
+        }
         live &= ((1u << node.slots) - 1u) & ~(1u << skip);
         if (live == 0) return;
         if ((live & (live - 1u)) == 0) {
