@@ -96,7 +96,7 @@ __attribute__((target("avx2"))) inline unsigned slot_distances2_avx2(const WideN
 // Queries per parallel block (fixed: results do not depend on threads).
 constexpr std::size_t kBlock = detail::kQueryBlock;
 
-// A leaf's entry in the searches: `count` marks it (a wide node: 0).
+// An entry of the searches' stacks: a wide node or a leaf, with its bound.
 struct Entry
 {
     std::uint32_t ref;    // wide node, or the leaf's first triangle
@@ -108,11 +108,14 @@ struct Entry
 
 struct ClosestPointIndex::Impl : detail::Bvh
 {
+    // The oriented box of slot `bit` (< 4) or half `bit` - 4 of node n (its
+    // bit of obb_mask is set).
     const Obb& obb(const WideNode& n, unsigned bit) const
     {
         return obbs[n.obb_first + unsigned(__builtin_popcount(unsigned(n.obb_mask) & ((1u << bit) - 1u)))];
     }
-    // The root's bound, as node_distance2 of the binary tree.
+    // A lower bound of the distance^2 from p to any triangle: the root's box,
+    // or its oriented box if that is farther.
     double root_distance2(const Vec3& p) const
     {
         const double d2 = box_distance2(root_lo.data(), root_hi.data(), p);
