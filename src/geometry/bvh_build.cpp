@@ -335,38 +335,156 @@ void Builder::grow_subtrees(Part& tree)
     append_subtrees(tree, sub);
 }
 
+// x rounded to a float downwards, and upwards.
+float float_below(double x)
+{
+    const auto f = static_cast<float>(x);
+    return double(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float float_above(double x)
+{
+    const auto f = static_cast<float>(x);
+    return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+// The 4-wide tree of `out` from the binary tree `bin` (whose oriented boxes
+// are `obbs`, node k's at bin_obb[k] or kNoSlot): wide nodes in depth-first
+// order, the root first, each slot's and inner half's oriented box copied
+// into out.obbs in the order of obb_mask's bits.
+struct Collapse
+{
+    static constexpr std::uint32_t kNoSlot = std::numeric_limits<std::uint32_t>::max();
+    const std::vector<Node>& bin;
+    const std::vector<Obb>& obbs;
+    const std::vector<std::uint32_t>& bin_obb;
+    Bvh& out;
+
+    std::uint32_t obb_of(std::uint32_t k) const { return bin[k].count & kHasObb ? bin_obb[k] : kNoSlot; }
+
+    // The number of wide nodes made from the inner binary node k.
+    std::size_t count(std::uint32_t k) const
+    {
+        std::size_t n = 1;
+        for (std::uint32_t h = 0; h < 2; ++h) {
+            const std::uint32_t c = bin[k].first + h;
+            if (bin[c].triangles() > 0) continue;
+            for (std::uint32_t g = 0; g < 2; ++g)
+                if (bin[bin[c].first + g].triangles() == 0) n += count(bin[c].first + g);
+        }
+        return n;
+    }
+
+    // The wide node of the inner binary node k, slot `up` % 4 of wide node
+    // `up` / 4.
+    std::uint32_t wide(std::uint32_t k, std::uint32_t up)
+    {
+        const auto w = std::uint32_t(out.nodes.size());
+        out.nodes.push_back({});
+        out.parent_of.push_back(up);
+        out.exact_box.push_back({bin[k].lo[0], bin[k].lo[1], bin[k].lo[2], bin[k].hi[0], bin[k].hi[1], bin[k].hi[2]});
+        std::array<std::uint32_t, 4> slot{};  // binary node of each slot
+        std::array<std::uint32_t, 2> half_obb{kNoSlot, kNoSlot};
+        std::uint8_t n = 0, split = 0;
+        for (std::uint32_t h = 0; h < 2; ++h) {
+            const std::uint32_t c = bin[k].first + h;
+            if (bin[c].triangles() > 0) {
+                slot[n++] = c;
+            } else {
+                slot[n++] = bin[c].first;
+                slot[n++] = bin[c].first + 1;
+                half_obb[h] = obb_of(c);
+            }
+            if (h == 0) split = n;
+        }
+        WideNode node;
+        for (std::size_t a = 0; a < 3; ++a) {
+            node.lo[a].fill(std::numeric_limits<float>::infinity());
+            node.hi[a].fill(-std::numeric_limits<float>::infinity());
+        }
+        node.child.fill(0);
+        node.count.fill(0);
+        node.slots = n;
+        node.split = split;
+        node.obb_mask = 0;
+        node.obb_first = std::uint32_t(out.obbs.size());
+        for (std::uint32_t s = 0; s < n; ++s) {
+            const Node& b = bin[slot[s]];
+            for (std::size_t a = 0; a < 3; ++a) {
+                node.lo[a][s] = float_below(b.lo[a]);
+                node.hi[a][s] = float_above(b.hi[a]);
+            }
+            if (obb_of(slot[s]) != kNoSlot) {
+                node.obb_mask = std::uint8_t(node.obb_mask | (1u << s));
+                out.obbs.push_back(obbs[obb_of(slot[s])]);
+            }
+        }
+        for (std::uint32_t h = 0; h < 2; ++h) {
+            if (half_obb[h] != kNoSlot) {
+                node.obb_mask = std::uint8_t(node.obb_mask | (1u << (4 + h)));
+                out.obbs.push_back(obbs[half_obb[h]]);
+            }
+        }
+        for (std::uint32_t s = 0; s < n; ++s) {
+            const Node& b = bin[slot[s]];
+            if (b.triangles() > 0) {
+                node.child[s] = b.first;
+                node.count[s] = std::uint8_t(b.triangles());
+                for (std::uint32_t i = 0; i < b.triangles(); ++i) out.leaf_of[b.first + i] = 4 * w + s;
+            }
+        }
+        out.nodes[w] = node;
+        for (std::uint32_t s = 0; s < n; ++s) {
+            if (bin[slot[s]].triangles() == 0) {
+                const std::uint32_t child = wide(slot[s], 4 * w + s);
+                out.nodes[w].child[s] = child;
+            }
+        }
+        return w;
+    }
+};
+
 // The tables of `out` from the grown tree and the permutation `order` of the
-// triangles into leaf order: the triangles in that order, the oriented boxes'
-// slots, and the parent, leaf and position tables.
+// triangles into leaf order: the triangles in that order, the 4-wide tree
+// with its oriented boxes, and the parent, leaf and position tables.
 void make_tables(Part& tree, const std::vector<std::uint32_t>& order, Bvh& out)
 {
     const std::size_t n = order.size();
-    out.nodes = std::move(tree.nodes);
-    out.obbs = std::move(tree.obbs);
-    const auto obb_of = std::move(tree.obb_of);
     std::vector<Tri> ordered(n);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) ordered[i] = out.tris[order[i]];
     out.tris.swap(ordered);
-    out.obb_slot.assign(out.obbs.empty() ? 0 : out.nodes.size(), 0);
-    for (const auto& [node, slot] : obb_of) {
-        out.nodes[node].count |= kHasObb;
-        out.obb_slot[node] = slot;
-    }
-    out.parent_of.assign(out.nodes.size(), 0);
-    out.leaf_of.assign(n, 0);
+    std::vector<Tri>().swap(ordered);
     out.position_of.assign(n, 0);
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) out.position_of[out.tris[i].face] = std::uint32_t(i);
-#pragma omp parallel for schedule(static)
-    for (std::size_t k = 0; k < out.nodes.size(); ++k) {
-        const Node& node = out.nodes[k];
-        if (node.triangles() > 0) {
-            for (std::uint32_t i = 0; i < node.triangles(); ++i) out.leaf_of[node.first + i] = std::uint32_t(k);
-        } else {
-            out.parent_of[node.first] = out.parent_of[node.first + 1] = std::uint32_t(k);
-        }
+
+    const std::vector<Node>& bin = tree.nodes;
+    std::vector<std::uint32_t> bin_obb(tree.obbs.empty() ? 0 : bin.size(), 0);
+    for (const auto& [node, slot] : tree.obb_of) {
+        tree.nodes[node].count |= kHasObb;
+        bin_obb[node] = slot;
     }
+    out.leaf_of.assign(n, 0);
+    const Node& root = bin[0];
+    for (std::size_t a = 0; a < 3; ++a) {
+        out.root_lo[a] = root.lo[a];
+        out.root_hi[a] = root.hi[a];
+    }
+    Collapse collapse{bin, tree.obbs, bin_obb, out};
+    if (root.count & kHasObb) {
+        out.root_obb = std::uint32_t(out.obbs.size());
+        out.obbs.push_back(tree.obbs[bin_obb[0]]);
+    }
+    if (root.triangles() > 0 || n == 0) {
+        out.root_count = root.triangles();
+    } else {
+        const std::size_t n_wide = collapse.count(0);
+        out.nodes.reserve(n_wide);
+        out.parent_of.reserve(n_wide);
+        out.exact_box.reserve(n_wide);
+        collapse.wide(0, 0);
+    }
+    out.obbs.shrink_to_fit();
 }
 
 }  // namespace

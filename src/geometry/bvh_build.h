@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace meshdiff::detail {
@@ -47,16 +48,41 @@ struct Obb
     std::array<double, 3> half;
 };
 
+//! A node of the 4-wide tree the queries read, made from the binary tree
+//! above by opening each inner node's inner children: its slots are its
+//! binary node's children, or their children where those are inner, in the
+//! binary tree's order (up to 4; a slot is a leaf or a wide node). The first
+//! `split` slots are the binary left child's (1: a leaf; 2: its children), the
+//! others the right child's, so that the binary tree can be walked on it (the
+//! certification's hull bounds do, with the binary nodes' exact boxes: see
+//! Bvh::exact_box and closest_point.cpp). The slots' boxes are floats rounded
+//! outwards (each contains its binary node's box, so that no bound computed
+//! from it exceeds the true distance); an unused slot's is empty (+inf,
+//! -inf). Two cache lines.
+struct alignas(64) WideNode
+{
+    std::array<std::array<float, 4>, 3> lo, hi;  // [axis][slot]
+    std::array<std::uint32_t, 4> child;          // wide node, or a leaf's first triangle
+    std::array<std::uint8_t, 4> count;           // leaf: number of triangles (> 0); wide node: 0
+    std::uint32_t obb_first;                     // in Bvh::obbs: the oriented boxes of this node's slots, then halves
+    std::uint8_t obb_mask;                       // bit s < 4: slot s has one; bit 4 + h: the inner half h has one
+    std::uint8_t slots;                          // 2..4
+    std::uint8_t split;                          // slots of the left half: 1 or 2
+};
+
 //! The tree and its tables, as the queries read them.
 struct Bvh
 {
-    std::vector<Tri> tris;  // in leaf order
-    std::vector<Node> nodes;
-    std::vector<std::uint32_t> parent_of;    // per node (root: 0)
-    std::vector<std::uint32_t> leaf_of;      // per triangle position: its leaf
-    std::vector<std::uint32_t> position_of;  // per face: its position in tris
-    std::vector<Obb> obbs;                   // oriented boxes of the nodes with kHasObb
-    std::vector<std::uint32_t> obb_slot;     // per node: its index in obbs (read only with kHasObb)
+    std::vector<Tri> tris;                         // in leaf order
+    std::vector<WideNode> nodes;                   // the root first; none if the root is a leaf
+    std::vector<std::uint32_t> parent_of;          // per wide node: 4 x its parent + its slot there (root: 0)
+    std::vector<std::uint32_t> leaf_of;            // per triangle position: 4 x its leaf's wide node + slot
+    std::vector<std::uint32_t> position_of;        // per face: its position in tris
+    std::vector<Obb> obbs;                         // oriented boxes, per wide node in obb_mask's bit order
+    std::vector<std::array<double, 6>> exact_box;  // per wide node: its binary node's box (lo, hi)
+    std::array<double, 3> root_lo{}, root_hi{};    // the root's box
+    std::uint32_t root_obb = std::numeric_limits<std::uint32_t>::max();  // in obbs, or none
+    std::uint32_t root_count = 0;  // triangles of the root when it is a leaf (nodes empty)
 };
 
 //! Builds the tree over all faces of \p mesh into \p out (whose vectors are
@@ -64,8 +90,8 @@ struct Bvh
 //! or the tree deep), at most 4 triangles per leaf, oriented boxes for the
 //! nodes whose axis-aligned box is far larger than their triangles; the
 //! root's two subtrees on two threads for a large mesh, the same tree, node
-//! for node, as the serial build. Reports the stage "index" to the calling
-//! thread's Progress.
+//! for node, as the serial build; then made 4-wide (WideNode). Reports the
+//! stage "index" to the calling thread's Progress.
 //! \throw Cancelled if the run is cancelled.
 void build_bvh(const Mesh& mesh, Bvh& out);
 

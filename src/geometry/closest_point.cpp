@@ -7,11 +7,16 @@
 #include "geometry/point_triangle_kernels.h"
 #include "geometry/point_triangle_x4.h"
 #include "geometry/query_block.h"
+#include "geometry/simd.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+
+#if MESHDIFF_HAVE_AVX512_KERNELS
+#include <immintrin.h>
+#endif
 
 namespace meshdiff {
 
@@ -19,10 +24,9 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::uint32_t kNoFace = std::numeric_limits<std::uint32_t>::max();
-using detail::kHasObb;
-using detail::Node;
 using detail::Obb;
 using detail::Tri;
+using detail::WideNode;
 
 inline Vec3 tri_point(const Vec3& p, const Tri& t)
 {
@@ -41,46 +45,117 @@ inline double obb_distance2(const Obb& b, const Vec3& p)
     return d2;
 }
 
-inline double box_distance2(const Node& n, const Vec3& p)
+inline double box_distance2(const double* lo, const double* hi, const Vec3& p)
 {
-    const double ex = std::max(std::max(n.lo[0] - p.x(), p.x() - n.hi[0]), 0.0);
-    const double ey = std::max(std::max(n.lo[1] - p.y(), p.y() - n.hi[1]), 0.0);
-    const double ez = std::max(std::max(n.lo[2] - p.z(), p.z() - n.hi[2]), 0.0);
+    const double ex = std::max(std::max(lo[0] - p.x(), p.x() - hi[0]), 0.0);
+    const double ey = std::max(std::max(lo[1] - p.y(), p.y() - hi[1]), 0.0);
+    const double ez = std::max(std::max(lo[2] - p.z(), p.z() - hi[2]), 0.0);
     return ex * ex + ey * ey + ez * ez;
 }
 
+// The squared distances from p to the boxes of the 4 slots of a wide node
+// (+inf for an unused slot), the 4 at once. The float boxes contain the
+// binary nodes' boxes and are read exactly as doubles, so these bounds are
+// at most those of the exact boxes (rounding is monotonic).
+inline void slot_distances2_scalar(const WideNode& n, const Vec3& p, double d2[4])
+{
+    for (std::size_t s = 0; s < 4; ++s) {
+        const double ex = std::max(std::max(double(n.lo[0][s]) - p.x(), p.x() - double(n.hi[0][s])), 0.0);
+        const double ey = std::max(std::max(double(n.lo[1][s]) - p.y(), p.y() - double(n.hi[1][s])), 0.0);
+        const double ez = std::max(std::max(double(n.lo[2][s]) - p.z(), p.z() - double(n.hi[2][s])), 0.0);
+        d2[s] = ex * ex + ey * ey + ez * ez;
+    }
+}
+
+#if MESHDIFF_HAVE_AVX512_KERNELS
+// The same in AVX2 registers (a lane per slot; not FMA), returning the mask
+// of the slots with d2 * keep <= best.
+__attribute__((target("avx2"))) inline unsigned slot_distances2_avx2(const WideNode& n, const Vec3& p, double keep,
+                                                                     double best, double d2[4])
+{
+    const __m256d zero = _mm256_setzero_pd();
+    __m256d e[3];
+    for (std::size_t a = 0; a < 3; ++a) {
+        const __m256d q = _mm256_set1_pd(p[Eigen::Index(a)]);
+        const __m256d lo = _mm256_cvtps_pd(_mm_load_ps(n.lo[a].data()));
+        const __m256d hi = _mm256_cvtps_pd(_mm_load_ps(n.hi[a].data()));
+        e[a] = _mm256_max_pd(_mm256_max_pd(_mm256_sub_pd(lo, q), _mm256_sub_pd(q, hi)), zero);
+    }
+    const __m256d sum =
+        _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(e[0], e[0]), _mm256_mul_pd(e[1], e[1])), _mm256_mul_pd(e[2], e[2]));
+    _mm256_storeu_pd(d2, sum);
+    return unsigned(
+        _mm256_movemask_pd(_mm256_cmp_pd(_mm256_mul_pd(sum, _mm256_set1_pd(keep)), _mm256_set1_pd(best), _CMP_LE_OQ)));
+}
+#endif
+
+// The closures of the query are inlined into it, so that they are compiled
+// for its target (AVX2 or the baseline).
+#define MESHDIFF_INLINE __attribute__((always_inline))
+
 // Queries per parallel block (fixed: results do not depend on threads).
 constexpr std::size_t kBlock = detail::kQueryBlock;
+
+// An entry of the searches' stacks: a wide node or a leaf, with its bound.
+struct Entry
+{
+    std::uint32_t ref;    // wide node, or the leaf's first triangle
+    std::uint32_t count;  // leaf: triangles; wide node: 0 (hull search: see hull_query)
+    double d2;
+};
 
 }  // namespace
 
 struct ClosestPointIndex::Impl : detail::Bvh
 {
-    // A lower bound of the distance^2 from p to any triangle below node k: its
-    // box's, or its oriented box's if that is farther.
-    double node_distance2(std::uint32_t k, const Vec3& p) const
+    // The oriented box of slot `bit` (< 4) or half `bit` - 4 of node n (its
+    // bit of obb_mask is set).
+    const Obb& obb(const WideNode& n, unsigned bit) const
     {
-        const Node& n = nodes[k];
-        const double d2 = box_distance2(n, p);
-        if (!(n.count & kHasObb)) return d2;
-        return std::max(d2, obb_distance2(obbs[obb_slot[k]], p));
+        return obbs[n.obb_first + unsigned(__builtin_popcount(unsigned(n.obb_mask) & ((1u << bit) - 1u)))];
+    }
+    // A lower bound of the distance^2 from p to any triangle: the root's box,
+    // or its oriented box if that is farther.
+    double root_distance2(const Vec3& p) const
+    {
+        const double d2 = box_distance2(root_lo.data(), root_hi.data(), p);
+        if (root_obb == kNoFace) return d2;
+        return std::max(d2, obb_distance2(obbs[root_obb], p));
     }
     // Lexicographic minimum of (squared distance, face) over all triangles;
     // `hint` (a position in `tris`, or kNoFace) only changes the search order:
     // the search starts in the hint's leaf and climbs towards the root.
-    ClosestPoint query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const;
+    ClosestPoint query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const
+    {
+#if MESHDIFF_HAVE_AVX512_KERNELS
+        if (detail::use_avx2()) return query_avx2(p, hint, hit);
+#endif
+        return search<false>(p, hint, hit);
+    }
+#if MESHDIFF_HAVE_AVX512_KERNELS
+    // The query compiled for AVX2 (not FMA: the same roundings), the box
+    // tests and the leaves' triangles four at once.
+    __attribute__((target("avx2"))) ClosestPoint query_avx2(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const
+    {
+        return search<true>(p, hint, hit);
+    }
+#endif
+    template <bool kAvx2>
+    __attribute__((always_inline)) inline ClosestPoint search(const Vec3& p, std::uint32_t hint,
+                                                              std::uint32_t* hit) const;
     // Smallest over triangles of the largest squared distance from the corners
     // c to the triangle, stopping at the first value <= good2.
     double hull_query(const std::array<Vec3, 3>& c, double good2, std::uint32_t* face) const;
 };
 
-ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const
+template <bool kAvx2>
+inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const
 {
     double best_d2 = kInf;
     std::uint32_t best_face = kNoFace;
     std::uint32_t best_pos = kNoFace;
     Vec3 best_point = Vec3::Zero();
-    auto offer = [&](double d2, std::uint32_t pos, const Vec3& q) {
+    auto offer = [&](double d2, std::uint32_t pos, const Vec3& q) MESHDIFF_INLINE {
         const std::uint32_t face = tris[pos].face;
         if (d2 < best_d2 || (d2 == best_d2 && face < best_face)) {
             best_d2 = d2;
@@ -89,15 +164,14 @@ ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, s
             best_point = q;
         }
     };
-    auto consider = [&](std::uint32_t pos) {
+    auto consider = [&](std::uint32_t pos) MESHDIFF_INLINE {
         const Vec3 q = tri_point(p, tris[pos]);
         offer((p - q).squaredNorm(), pos, q);
     };
     // A leaf's triangles: with AVX2, up to four at once (bitwise the same
     // values, geometry/point_triangle_x4.h); thin ones one by one.
-    const bool x4 = detail::use_avx2();
-    auto consider_leaf = [&](const Node& leaf) {
-        const std::uint32_t first = leaf.first, count = leaf.triangles();
+    constexpr bool x4 = kAvx2;
+    auto consider_leaf = [&](std::uint32_t first, std::uint32_t count) MESHDIFF_INLINE {
         if (!x4 || count < 2) {
             for (std::uint32_t i = 0; i < count; ++i) consider(first + i);
             return;
@@ -122,50 +196,88 @@ ClosestPoint ClosestPointIndex::Impl::query(const Vec3& p, std::uint32_t hint, s
 
     // A node is skipped only if its box is farther than the best so far by a
     // margin above rounding, so that ties and near-ties are still examined.
+    // The answer, a lexicographic minimum, does not depend on the order in
+    // which the triangles are offered.
     constexpr double keep = 1.0 - 1e-12;
-    struct Entry
-    {
-        std::uint32_t node;
-        double d2;
+    std::array<Entry, 256> stack;
+    std::size_t top = 0;
+    // Pushes the slots of wide node w but `skip`, the farthest first so that
+    // the nearest is visited first.
+    auto push_slots = [&](std::uint32_t w, unsigned skip) MESHDIFF_INLINE {
+        const WideNode& node = nodes[w];
+        double d2[4];
+        // The slots to visit: used, not `skip`, not pruned.
+        unsigned live = 0;
+#if MESHDIFF_HAVE_AVX512_KERNELS
+        if constexpr (kAvx2) {
+            live = slot_distances2_avx2(node, p, keep, best_d2, d2);
+        } else
+#endif
+        {
+            slot_distances2_scalar(node, p, d2);
+            for (unsigned s = 0; s < 4; ++s) live |= unsigned(d2[s] * keep <= best_d2) << s;
+        }
+        if (node.obb_mask & 0xFu) {
+            for (unsigned s = 0; s < node.slots; ++s) {
+                if (node.obb_mask & (1u << s)) {
+                    d2[s] = std::max(d2[s], obb_distance2(obb(node, s), p));
+                    if (!(d2[s] * keep <= best_d2)) live &= ~(1u << s);
+                }
+            }
+        }
+        live &= ((1u << node.slots) - 1u) & ~(1u << skip);
+        if (live == 0) return;
+        if ((live & (live - 1u)) == 0) {
+            const auto s = unsigned(__builtin_ctz(live));
+            stack[top++] = {node.child[s], node.count[s], d2[s]};
+            return;
+        }
+        unsigned order[4];
+        unsigned m = 0;
+        for (; live != 0; live &= live - 1u) {
+            const auto s = unsigned(__builtin_ctz(live));
+            // Insertion by decreasing distance.
+            unsigned j = m++;
+            while (j > 0 && d2[order[j - 1]] < d2[s]) {
+                order[j] = order[j - 1];
+                --j;
+            }
+            order[j] = s;
+        }
+        for (unsigned j = 0; j < m; ++j) {
+            const unsigned s = order[j];
+            stack[top++] = {node.child[s], node.count[s], d2[s]};
+        }
     };
-    std::array<Entry, 128> stack;
-    // Branch and bound below `root`, nearest child first.
-    auto descend = [&](std::uint32_t root, double root_d2) {
-        std::size_t top = 0;
-        stack[top++] = {root, root_d2};
+    // Branch and bound over the entries on the stack.
+    auto run = [&]() MESHDIFF_INLINE {
         while (top > 0) {
             const Entry e = stack[--top];
             if (e.d2 * keep > best_d2) continue;
-            const Node& node = nodes[e.node];
-            if (node.triangles() > 0) {
-                consider_leaf(node);
-                continue;
-            }
-            const double dl = node_distance2(node.first, p);
-            const double dr = node_distance2(node.first + 1, p);
-            const Entry l{node.first, dl};
-            const Entry r{node.first + 1, dr};
-            // Push the farther child first so that the nearer one is visited first.
-            const Entry& near = dl <= dr ? l : r;
-            const Entry& far = dl <= dr ? r : l;
-            if (far.d2 * keep <= best_d2) stack[top++] = far;
-            if (near.d2 * keep <= best_d2) stack[top++] = near;
+            if (e.count > 0)
+                consider_leaf(e.ref, e.count);
+            else
+                push_slots(e.ref, 4);
         }
     };
 
-    if (hint == kNoFace) {
-        descend(0, node_distance2(0, p));
+    if (nodes.empty()) {
+        consider_leaf(0, root_count);
+    } else if (hint == kNoFace) {
+        stack[top++] = {0, 0, root_distance2(p)};
+        run();
     } else {
-        // Start in the hint's leaf and climb to the root, searching the sibling
-        // subtree at each level: every triangle is in exactly one of these.
-        std::uint32_t node = leaf_of[hint];
-        consider_leaf(nodes[node]);
-        while (node != 0) {
-            const std::uint32_t parent = parent_of[node];
-            const std::uint32_t sibling = node == nodes[parent].first ? node + 1 : node - 1;
-            const double d2 = node_distance2(sibling, p);
-            if (d2 * keep <= best_d2) descend(sibling, d2);
-            node = parent;
+        // Start in the hint's leaf and climb to the root, searching the other
+        // slots at each level: every triangle is below exactly one of them.
+        std::uint32_t w = leaf_of[hint] / 4;
+        unsigned slot = leaf_of[hint] % 4;
+        consider_leaf(nodes[w].child[slot], nodes[w].count[slot]);
+        for (;;) {
+            push_slots(w, slot);
+            run();
+            if (w == 0) break;
+            slot = parent_of[w] % 4;
+            w = parent_of[w] / 4;
         }
     }
     if (hit) *hit = best_pos;
@@ -184,27 +296,84 @@ double ClosestPointIndex::Impl::hull_query(const std::array<Vec3, 3>& c, double 
     // or a triangle that cannot reach it is skipped. Without one (good2 <=
     // 0), the minimum is searched.
     const double cut = good2 > 0.0 ? good2 : kInf;
+    // The search walks the binary tree the wide nodes were made from, in its
+    // order and with its exact boxes (the first value found depends on both):
+    // an entry is a wide node (count 0: its binary node), the left or right
+    // half of one (count kHalf + h: the binary child whose children are two
+    // slots), or a leaf (count kLeaf + its triangles).
+    constexpr std::uint32_t kHalf = 1, kLeaf = 8;
     // A node's bound: no triangle below it is closer to corner i than its
     // box, so the largest of the three box distances bounds the value of
     // every triangle below it from below.
-    auto bound = [&](std::uint32_t k) {
-        return std::max({node_distance2(k, c[0]), node_distance2(k, c[1]), node_distance2(k, c[2])});
+    auto bound = [&](const double* lo, const double* hi, const Obb* o) {
+        double v[3];
+        for (std::size_t i = 0; i < 3; ++i) {
+            v[i] = box_distance2(lo, hi, c[i]);
+            if (o) v[i] = std::max(v[i], obb_distance2(*o, c[i]));
+        }
+        return std::max({v[0], v[1], v[2]});
     };
-    struct Entry
-    {
-        std::uint32_t node;
-        double d2;
+    // The entry of slot s of wide node n, with its binary node's exact box:
+    // a wide node's, or a leaf's, the box of its triangles' corners (as the
+    // build made it).
+    auto slot_box = [&](const WideNode& n, unsigned s, double lo[3], double hi[3]) {
+        if (n.count[s] == 0) {
+            const std::array<double, 6>& b = exact_box[n.child[s]];
+            for (std::size_t a = 0; a < 3; ++a) {
+                lo[a] = b[a];
+                hi[a] = b[3 + a];
+            }
+            return;
+        }
+        for (std::size_t a = 0; a < 3; ++a) {
+            lo[a] = kInf;
+            hi[a] = -kInf;
+        }
+        for (std::uint32_t i = n.child[s]; i < n.child[s] + n.count[s]; ++i) {
+            for (const Vec3* q : {&tris[i].a, &tris[i].b, &tris[i].c}) {
+                for (std::size_t a = 0; a < 3; ++a) {
+                    lo[a] = std::min(lo[a], (*q)[Eigen::Index(a)]);
+                    hi[a] = std::max(hi[a], (*q)[Eigen::Index(a)]);
+                }
+            }
+        }
+    };
+    auto slot_entry = [&](const WideNode& n, unsigned s) {
+        double lo[3], hi[3];
+        slot_box(n, s, lo, hi);
+        const Obb* o = n.obb_mask & (1u << s) ? &obb(n, s) : nullptr;
+        return Entry{n.child[s], n.count[s] == 0 ? 0u : kLeaf + n.count[s], bound(lo, hi, o)};
+    };
+    // The entry of half h of wide node w: a leaf's slot, or the binary node
+    // over two slots, whose box is the union of theirs.
+    auto half_entry = [&](std::uint32_t w, unsigned h) {
+        const WideNode& n = nodes[w];
+        const unsigned s0 = h == 0 ? 0u : n.split;
+        const unsigned width = h == 0 ? n.split : unsigned(n.slots - n.split);
+        if (width == 1) return slot_entry(n, s0);
+        double lo[3], hi[3], lo1[3], hi1[3];
+        slot_box(n, s0, lo, hi);
+        slot_box(n, s0 + 1, lo1, hi1);
+        for (std::size_t a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], lo1[a]);
+            hi[a] = std::max(hi[a], hi1[a]);
+        }
+        const Obb* o = n.obb_mask & (1u << (4 + h)) ? &obb(n, 4 + h) : nullptr;
+        return Entry{w, kHalf + h, bound(lo, hi, o)};
     };
     std::array<Entry, 128> stack;
     std::size_t top = 0;
-    stack[top++] = {0, bound(0)};
+    {
+        const Obb* o = root_obb == kNoFace ? nullptr : &obbs[root_obb];
+        const double d2 = bound(root_lo.data(), root_hi.data(), o);
+        stack[top++] = nodes.empty() ? Entry{0, kLeaf + root_count, d2} : Entry{0, 0, d2};
+    }
     while (top > 0) {
         const Entry e = stack[--top];
         if (e.d2 >= best || e.d2 > cut) continue;
-        const Node& node = nodes[e.node];
-        if (node.triangles() > 0) {
-            for (std::uint32_t i = 0; i < node.triangles(); ++i) {
-                const Tri& t = tris[node.first + i];
+        if (e.count >= kLeaf) {
+            for (std::uint32_t i = 0; i < e.count - kLeaf; ++i) {
+                const Tri& t = tris[e.ref + i];
                 double v = 0.0;
                 for (const Vec3& q : c) {
                     v = std::max(v, (q - tri_point(q, t)).squaredNorm());
@@ -221,8 +390,16 @@ double ClosestPointIndex::Impl::hull_query(const std::array<Vec3, 3>& c, double 
             }
             continue;
         }
-        const Entry l{node.first, bound(node.first)};
-        const Entry r{node.first + 1, bound(node.first + 1)};
+        Entry l, r;
+        if (e.count == 0) {
+            l = half_entry(e.ref, 0);
+            r = half_entry(e.ref, 1);
+        } else {
+            const WideNode& n = nodes[e.ref];
+            const unsigned s0 = e.count == kHalf ? 0u : n.split;
+            l = slot_entry(n, s0);
+            r = slot_entry(n, s0 + 1);
+        }
         const Entry& near = l.d2 <= r.d2 ? l : r;
         const Entry& far = l.d2 <= r.d2 ? r : l;
         if (far.d2 < best && far.d2 <= cut) stack[top++] = far;
@@ -339,18 +516,16 @@ std::size_t ClosestPointIndex::n_faces() const
 BoundingBox ClosestPointIndex::bounds() const
 {
     BoundingBox b;
-    const Node& root = impl_->nodes[0];
-    b.min = Vec3(root.lo[0], root.lo[1], root.lo[2]);
-    b.max = Vec3(root.hi[0], root.hi[1], root.hi[2]);
+    b.min = Vec3(impl_->root_lo[0], impl_->root_lo[1], impl_->root_lo[2]);
+    b.max = Vec3(impl_->root_hi[0], impl_->root_hi[1], impl_->root_hi[2]);
     return b;
 }
 
 std::size_t ClosestPointIndex::memory_bytes() const
 {
-    return impl_->tris.capacity() * sizeof(Tri) + impl_->nodes.capacity() * sizeof(Node) +
-           impl_->obbs.capacity() * sizeof(Obb) +
-           (impl_->parent_of.capacity() + impl_->leaf_of.capacity() + impl_->obb_slot.capacity() +
-            impl_->position_of.capacity()) *
+    return impl_->tris.capacity() * sizeof(Tri) + impl_->nodes.capacity() * sizeof(WideNode) +
+           impl_->exact_box.capacity() * sizeof(std::array<double, 6>) + impl_->obbs.capacity() * sizeof(Obb) +
+           (impl_->parent_of.capacity() + impl_->leaf_of.capacity() + impl_->position_of.capacity()) *
                sizeof(std::uint32_t);
 }
 
