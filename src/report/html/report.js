@@ -343,6 +343,75 @@
     return m.colors[name];
   }
 
+  // ---- the coarse mesh drawn while the camera moves -------------------------------------------
+  // A software renderer (no GPU) takes about a second per frame of 200,000 faces: while the user drags or
+  // zooms, a mesh drawn with more than lodFaces faces is replaced by a coarser clustering of what is drawn
+  // (as html_mesh.cpp reduces: a uniform grid, a cluster at its vertices' mean, carrying per field the value
+  // of largest magnitude of its vertices, so its colours are the colour map's), and the full drawn mesh
+  // comes back LOD_SETTLE_MS after the interaction ends (a wheel's ticks each start and end one).
+  const LOD_FACES = 20000;
+  const LOD_SETTLE_MS = 250;
+  // One clustering of m's drawn vertices on a grid of `cells` cells along the longest side of their box.
+  function clusterOnce(m, lo, side, cells) {
+    const p = m.positions, n = p.length / 3, h = side / cells, stride = Math.floor(cells) + 2;
+    const cluster = new Uint32Array(n), ids = new Map();
+    const cell = (x) => Math.min(Math.max(Math.floor(x / h), 0), stride - 1);
+    for (let i = 0; i < n; ++i) {
+      const key = cell(p[3 * i] - lo[0]) + stride * (cell(p[3 * i + 1] - lo[1]) + stride * cell(p[3 * i + 2] - lo[2]));
+      let id = ids.get(key);
+      if (id === undefined) { id = ids.size; ids.set(key, id); }
+      cluster[i] = id;
+    }
+    const idx = m.indices, faces = [];
+    for (let f = 0; f < idx.length; f += 3) {
+      const a = cluster[idx[f]], b = cluster[idx[f + 1]], c = cluster[idx[f + 2]];
+      if (a !== b && b !== c && a !== c) faces.push(a, b, c);
+    }
+    return { cluster, count: ids.size, indices: faces };
+  }
+  // m's coarse version of at most `budget` faces ({positions, indices, cluster, values, colors}), or null when
+  // m draws at most `budget` faces (or none).
+  function coarsen(m, budget) {
+    if (m.indices.length / 3 <= budget) return null;
+    const p = m.positions, lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+    for (let i = 0; i < p.length; ++i) {
+      lo[i % 3] = Math.min(lo[i % 3], p[i]);
+      hi[i % 3] = Math.max(hi[i % 3], p[i]);
+    }
+    const side = Math.max(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-30);
+    // As html_mesh.cpp: a closed surface on an N^3 grid keeps about 12 N^2 faces; coarsen by 15% until within budget.
+    let cells = Math.sqrt(budget / 4), c = clusterOnce(m, lo, side, cells);
+    while (c.indices.length / 3 > budget && cells > 2) {
+      cells *= 0.85;
+      c = clusterOnce(m, lo, side, cells);
+    }
+    const sum = new Float64Array(3 * c.count), count = new Uint32Array(c.count);
+    for (let i = 0; i < c.cluster.length; ++i) {
+      const k = c.cluster[i];
+      for (let a = 0; a < 3; ++a) sum[3 * k + a] += p[3 * i + a];
+      ++count[k];
+    }
+    const positions = new Float32Array(3 * c.count);
+    for (let i = 0; i < positions.length; ++i) positions[i] = sum[i] / count[Math.floor(i / 3)];
+    return { positions, indices: new Uint32Array(c.indices), cluster: c.cluster, values: {}, colors: {} };
+  }
+  // The coarse mesh's values of a field: per cluster, the value of largest magnitude of its vertices (NaN: none).
+  function coarseColors(m, name) {
+    const c = m.coarse;
+    if (!c.colors[name]) {
+      const fine = meshValues(m, name), v = new Float64Array(c.positions.length / 3).fill(NaN);
+      for (let i = 0; i < fine.length; ++i) {
+        const x = fine[i], k = c.cluster[i];
+        if (!Number.isNaN(x) && (Number.isNaN(v[k]) || Math.abs(x) > Math.abs(v[k]))) v[k] = x;
+      }
+      const f = fieldNamed(name), out = new Uint8Array(3 * v.length);
+      for (let i = 0; i < v.length; ++i) out.set(colorOf(f, v[i]), 3 * i);
+      c.values[name] = v;
+      c.colors[name] = out;
+    }
+    return c.colors[name];
+  }
+
   // ---- the 3D view: its elements ------------------------------------------------------------
   function reducedNote(meshes) {
     if (!meshes.some((m) => m.info.reduced)) return;
@@ -350,6 +419,13 @@
       ' faces per mesh (vertex clustering; a cluster shows the largest value of its vertices): ' +
       meshes.map((m, k) => NAMES[k] + ' ' + m.info.faces.toLocaleString('en') + ' of ' + m.info.full_faces.toLocaleString('en') + ' faces').join(', ') +
       '. Every number of this report is of the full meshes.' }));
+  }
+  // Said when a mesh has a coarse version for interaction (its budget, LOD_FACES, is the page's).
+  function lodNote(meshes) {
+    if (!meshes.some((m) => m.indices.length / 3 > LOD_FACES)) return;
+    app.appendChild(el('p', { cls: 'note', id: 'lod-note', text: 'While the view turns or zooms, a mesh drawn with more than ' +
+      LOD_FACES.toLocaleString('en') + ' faces is drawn coarser (clustered again to at most that many faces, same colours); ' +
+      'the drawn mesh comes back when the view stops.' }));
   }
   // The field and mode selects and the shading checkbox, with the mouse's help.
   function buildControls(meshes, dom) {
@@ -368,6 +444,7 @@
   function buildViewDom(meshes) {
     section('3D view');
     reducedNote(meshes);
+    lodNote(meshes);
     const dom = {};
     buildControls(meshes, dom);
     dom.barCanvas = el('canvas', { width: 256, height: 14, id: 'colorbar-ramp' });
@@ -436,12 +513,38 @@
   }
   // Everything the view's functions share: the meshes, the elements, the state, renderer, camera and scenes.
   function createScenes(meshes, dom) {
-    const state = { field: view.fields.length ? view.fields[0].name : null, mode: 'side', shading: true, frames: 0, error: null };
+    const state = { field: view.fields.length ? view.fields[0].name : null, mode: 'side', shading: true, frames: 0, error: null,
+      interacting: false, lod: 'full', drawnFaces: 0, lodFaces: LOD_FACES };
     const renderer = createRenderer(dom, state);
     const { center, diag } = meshBounds(meshes);
     const camera = createCamera(center, diag);
     const scenes = meshes.map((m) => createScene(m, diag));
-    return { meshes, dom, state, renderer, center, diag, camera, scenes, controls: null, pending: false };
+    const v = { meshes, dom, state, renderer, center, diag, camera, scenes, controls: null, pending: false, settle: null };
+    buildCoarse(v, LOD_FACES);
+    return v;
+  }
+  // Each scene's coarse object (hidden but while the camera moves) for meshes drawn with more than `budget` faces.
+  function buildCoarse(v, budget) {
+    v.state.lodFaces = budget;
+    v.meshes.forEach((m, k) => {
+      const s = v.scenes[k];
+      if (s.coarse) {
+        s.scene.remove(s.coarse);
+        s.coarse.geometry.dispose();
+        s.coarse = null;
+      }
+      m.coarse = s.empty ? null : coarsen(m, budget);
+      if (!m.coarse) return;
+      const g = new THREE.BufferGeometry();
+      g.setAttribute('position', new THREE.BufferAttribute(m.coarse.positions, 3));
+      g.setIndex(new THREE.BufferAttribute(m.coarse.indices, 1));
+      g.setAttribute('color', new THREE.BufferAttribute(v.state.field ? coarseColors(m, v.state.field).slice()
+        : new Uint8Array(m.coarse.positions.length).fill(128), 3, true));
+      g.computeVertexNormals();
+      s.coarse = new THREE.Mesh(g, s.object.material);
+      s.coarse.visible = false;
+      s.scene.add(s.coarse);
+    });
   }
 
   // The certified Hausdorff distance: where it is attained (on the mesh whose samples reach it) and its closest point.
@@ -487,16 +590,28 @@
     renderer.setScissorTest(true);
     const vps = viewports(v);
     dom.labels.forEach((l) => { l.style.display = 'none'; });
+    // While the camera moves, the coarse objects stand in for the full ones (shown again after the frame, so
+    // that picking always hits the drawn full mesh).
+    const coarse = v.state.interacting && vps.some(([k]) => v.scenes[k].coarse);
+    let drawn = 0;
     for (const [k, x, vw] of vps) {
       renderer.setViewport(x, 0, vw, h);
       renderer.setScissor(x, 0, vw, h);
       camera.aspect = vw / h;
       camera.updateProjectionMatrix();
-      v.scenes[k].light.position.copy(camera.position);
-      renderer.render(v.scenes[k].scene, camera);
+      const s = v.scenes[k], swap = coarse && s.coarse;
+      s.light.position.copy(camera.position);
+      if (swap) [s.object.visible, s.coarse.visible] = [false, true];
+      renderer.render(s.scene, camera);
+      if (swap) [s.object.visible, s.coarse.visible] = [true, false];
+      drawn += (swap ? v.meshes[k].coarse.indices.length : v.meshes[k].indices.length) / 3;
       dom.labels[k].style.display = '';
       dom.labels[k].style.left = (x + 6) + 'px';
     }
+    v.state.lod = coarse ? 'coarse' : 'full';
+    v.state.drawnFaces = drawn;
+    dom.canvas.dataset.lod = v.state.lod;
+    dom.canvas.dataset.drawnFaces = String(drawn);
     v.state.frames++;
   }
   // Where a point of scene k's space is drawn, in CSS pixels of the canvas (for scripts and tests).
@@ -528,10 +643,15 @@
     if (!f) throw new Error('no field ' + name);
     v.state.field = name;
     v.dom.fieldSelect.value = name;
-    v.meshes.forEach((m) => {
+    v.meshes.forEach((m, k) => {
       const attr = m.geometry.getAttribute('color');
       attr.array.set(meshColors(m, name));
       attr.needsUpdate = true;
+      if (m.coarse) {
+        const ca = v.scenes[k].coarse.geometry.getAttribute('color');
+        ca.array.set(coarseColors(m, name));
+        ca.needsUpdate = true;
+      }
     });
     drawColorbar(v.dom, f);
     requestRender(v);
@@ -544,7 +664,10 @@
   function setShading(v, on) {
     v.state.shading = on;
     v.dom.shading.checked = on;
-    for (const s of v.scenes) if (!s.empty) s.object.material = on ? s.lit : s.flat;
+    for (const s of v.scenes) {
+      if (!s.empty) s.object.material = on ? s.lit : s.flat;
+      if (s.coarse) s.coarse.material = s.object.material;
+    }
     requestRender(v);
   }
 
@@ -556,6 +679,18 @@
     v.controls.target.copy(v.center);
     v.controls.update();
     v.controls.addEventListener('change', () => requestRender(v));
+    // The coarse meshes from a drag's (or a wheel tick's) start until LOD_SETTLE_MS after its end.
+    v.controls.addEventListener('start', () => {
+      clearTimeout(v.settle);
+      v.state.interacting = true;
+    });
+    v.controls.addEventListener('end', () => {
+      clearTimeout(v.settle);
+      v.settle = setTimeout(() => {
+        v.state.interacting = false;
+        if (v.state.lod === 'coarse') requestRender(v);
+      }, LOD_SETTLE_MS);
+    });
   }
   // The hit nearest the viewer among objects(k) of the viewport k under the pointer: {k, hit}, or null.
   function pick(v, raycaster, ev, objects) {
@@ -624,6 +759,15 @@
       values: (k, name) => meshValues(v.meshes[k], name || state.field),
       markerPositions: () => v.scenes.map((s) => s.markers.map((o) => o.position.toArray())),
       colorOf: (name, value) => colorOf(fieldNamed(name), value),
+      // The coarse mesh drawn while the camera moves: its size, and its per-vertex values and colours.
+      coarseFaces: (k) => (v.meshes[k].coarse ? v.meshes[k].coarse.indices.length / 3 : null),
+      coarseValues: (k, name) => (coarseColors(v.meshes[k], name || state.field), v.meshes[k].coarse.values[name || state.field]),
+      coarseColors: (k, name) => coarseColors(v.meshes[k], name || state.field),
+      coarseCluster: (k) => v.meshes[k].coarse.cluster,
+      setInteractionFaces: (n) => {
+        buildCoarse(v, n);
+        requestRender(v);
+      },
       ready: true,
     };
   }
