@@ -1,7 +1,9 @@
 #include "core/derivations.h"
 
 #include <atomic>
+#include <functional>
 #include <mutex>
+#include <string_view>
 
 namespace meshdiff::detail {
 
@@ -13,11 +15,19 @@ DerivationCounts g_counts;
 
 }  // namespace
 
+MeshKey mesh_key(const Mesh& mesh)
+{
+    const std::string_view bytes(reinterpret_cast<const char*>(mesh.points.data()),
+                                 mesh.points.size() * sizeof(mesh.points[0]));
+    return {static_cast<const void*>(mesh.points.data()), std::hash<std::string_view>{}(bytes)};
+}
+
 void note_derivation(Derived what, const Mesh& mesh)
 {
     if (!g_on.load(std::memory_order_relaxed)) return;
+    const MeshKey key = mesh_key(mesh);
     const std::lock_guard<std::mutex> lock(g_mutex);
-    ++g_counts[{static_cast<const void*>(mesh.points.data()), what}];
+    ++g_counts[{key, what}];
 }
 
 void start_derivation_log()

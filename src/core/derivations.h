@@ -7,6 +7,7 @@
 
 #include "meshdiff/core/mesh.h"
 
+#include <cstddef>
 #include <map>
 #include <utility>
 
@@ -20,8 +21,18 @@ enum class Derived
     Validation       //!< validate(const Mesh&)
 };
 
-//! Counts of each datum derived, by mesh (the address of its first point).
-using DerivationCounts = std::map<std::pair<const void*, Derived>, int>;
+//! A mesh as the log tells meshes apart: the address of its first point and
+//! a hash of its points' bytes (two meshes alive at once differ in the
+//! address; a mesh freed and another made at the same address differ in the
+//! hash unless their points are the same, when the second derivation is a
+//! repeat of the first's work).
+using MeshKey = std::pair<const void*, std::size_t>;
+
+//! The key of \p mesh.
+MeshKey mesh_key(const Mesh& mesh);
+
+//! Counts of each datum derived, by mesh.
+using DerivationCounts = std::map<std::pair<MeshKey, Derived>, int>;
 
 //! Records that \p what was derived from \p mesh, when the log is on.
 void note_derivation(Derived what, const Mesh& mesh);
