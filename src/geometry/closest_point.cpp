@@ -104,6 +104,36 @@ struct Entry
     double d2;
 };
 
+// Pushes the slots of \p node in the bitmask \p live, at squared distances
+// \p d2, onto \p stack (\p top entries): the farthest first, so that the
+// nearest is popped first.
+MESHDIFF_INLINE inline void push_farthest_first(const WideNode& node, unsigned live, const double* d2, Entry* stack,
+                                                std::size_t& top)
+{
+    if (live == 0) return;
+    if ((live & (live - 1u)) == 0) {
+        const auto s = unsigned(__builtin_ctz(live));
+        stack[top++] = {node.child[s], node.count[s], d2[s]};
+        return;
+    }
+    unsigned order[4];
+    unsigned m = 0;
+    for (; live != 0; live &= live - 1u) {
+        const auto s = unsigned(__builtin_ctz(live));
+        // Insertion by decreasing distance.
+        unsigned j = m++;
+        while (j > 0 && d2[order[j - 1]] < d2[s]) {
+            order[j] = order[j - 1];
+            --j;
+        }
+        order[j] = s;
+    }
+    for (unsigned j = 0; j < m; ++j) {
+        const unsigned s = order[j];
+        stack[top++] = {node.child[s], node.count[s], d2[s]};
+    }
+}
+
 }  // namespace
 
 struct ClosestPointIndex::Impl : detail::Bvh
@@ -226,28 +256,7 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
             }
         }
         live &= ((1u << node.slots) - 1u) & ~(1u << skip);
-        if (live == 0) return;
-        if ((live & (live - 1u)) == 0) {
-            const auto s = unsigned(__builtin_ctz(live));
-            stack[top++] = {node.child[s], node.count[s], d2[s]};
-            return;
-        }
-        unsigned order[4];
-        unsigned m = 0;
-        for (; live != 0; live &= live - 1u) {
-            const auto s = unsigned(__builtin_ctz(live));
-            // Insertion by decreasing distance.
-            unsigned j = m++;
-            while (j > 0 && d2[order[j - 1]] < d2[s]) {
-                order[j] = order[j - 1];
-                --j;
-            }
-            order[j] = s;
-        }
-        for (unsigned j = 0; j < m; ++j) {
-            const unsigned s = order[j];
-            stack[top++] = {node.child[s], node.count[s], d2[s]};
-        }
+        push_farthest_first(node, live, d2, stack.data(), top);
     };
     // Branch and bound over the entries on the stack.
     auto run = [&]() MESHDIFF_INLINE {
