@@ -19,6 +19,7 @@
 #include "meshdiff/noise.h"
 #include "meshdiff/normalize.h"
 #include "meshdiff/normals.h"
+#include "meshdiff/options.h"
 #include "meshdiff/output_file.h"
 #include "meshdiff/point_triangle.h"
 #include "meshdiff/progress.h"
