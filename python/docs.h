@@ -78,11 +78,13 @@ them): a bad value is a ValueError, a wrong type a TypeError, naming the keyword
   paper=False           the paper's exact method: goldfeather fit without row weights,
                         paper normalisation, untrimmed sigma; a curvature, weighting,
                         normalize or trim that contradicts it is a ValueError  [--paper]
-  local=True            the local roughness difference: per level, the RMS over the original's
-                        vertices of D_L minus the processed D_L at the closest point, in
-                        ["roughness_distance"]["local"] (levels, rms, radii, rms_radii, global)  [--no-local]
-  local_trim=None       the share of the original's vertices with the largest |difference| left
-                        out of each local RMS (0..0.25); None: 0.05       [--local-trim]
+  local=True            the local roughness difference: per level, the RMS over the processed
+                        mesh's vertices of the detail on its L-rings of the change of H (the
+                        original's H at the closest point); per radius the same on the original's
+                        balls; in ["roughness_distance"]["local"] (levels, rms, radii, rms_radii,
+                        global)  [--no-local]
+  local_trim=None       the share of the vertices with the largest |difference| left out of
+                        each local RMS (0..0.25); None: 0.05              [--local-trim]
   k=None                the constant of d_L = ln(|s'-s|/s + k) - ln(k); 1e-4  [-k]
   roughness=True        compute both profiles and d_L                      [--no-roughness]
   distance=True         compute the surface distance                       [--no-distance]
@@ -120,7 +122,7 @@ Python only (no CLI flag):
                         meshes' unit, signed_distance_* where the other mesh can be signed
                         against; D_original (n1, L+G), D_processed (n2, L+G): D_L per vertex on
                         the normalised mesh, a column per level and the global one last (NaN:
-                        undefined); D_radii_* (n, R) with radii; local_original (n1, levels of
+                        undefined); D_radii_* (n, R) with radii; local_processed (n2, levels of
                         roughness_distance["local"]) with the distance half. No report number moves.
   index_original=None, index_processed=None
                         a meshdiff.DistanceIndex of that mesh, built once and reused (e.g. one

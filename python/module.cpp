@@ -175,7 +175,7 @@ py::dict maps_dict(const Comparison& c)
         py::array_t<double> local({py::ssize_t(n), py::ssize_t(k)});
         for (std::size_t c2 = 0; c2 < k; ++c2)
             for (std::size_t i = 0; i < n; ++i) local.mutable_data()[i * k + c2] = l.vertex[c2][i];
-        maps["local_original"] = local;
+        maps["local_processed"] = local;
     }
     return maps;
 }

@@ -78,7 +78,7 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
 
 // The two sigma profiles, their distance and, if asked for, the local
 // difference (options checked).
-void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& b_data, const LoadedMesh& b,
+void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, const LoadedMesh& b, const MeshData& b_data,
                 const CompareOptions& options)
 {
     ProfileOptions po = options.profile;
@@ -94,13 +94,36 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& b_data, cons
     }
     c.roughness = roughness_distance(*c.original_profile, *c.processed_profile, options.k);
     if (!options.local) return;
-    // Over the original's vertices, against the processed surface (local_roughness.h).
-    std::optional<ClosestPointIndex> own;  // unless the caller built it (surface_distance() checks it too)
+    // The local difference (local_roughness.h): the ring levels and the global
+    // level over the processed mesh's vertices and its own rings, against the
+    // original surface (a level is each mesh's own L-ring, as in the
+    // profiles); the radii over the original's vertices and balls, against the
+    // processed surface (a radius is the same patch on both meshes, and the
+    // original samples it densest). An index the caller built is used
+    // (surface_distance() checks it too), otherwise one of our own.
+    if (options.index_original && options.index_original->n_faces() != a.mesh.n_faces())
+        throw InvalidArgumentError("CompareOptions: index_original is not an index of the original mesh");
     if (options.index_processed && options.index_processed->n_faces() != b.mesh.n_faces())
         throw InvalidArgumentError("CompareOptions: index_processed is not an index of the processed mesh");
-    const ClosestPointIndex& index = options.index_processed ? *options.index_processed : own.emplace(b_data);
-    c.local_roughness = local_roughness_distance(a.mesh, *c.original_profile, b.mesh, *c.processed_profile, index,
-                                                 options.local_trim, options.vertex_distances);
+    LocalRoughnessParts rings;
+    rings.radii = false;
+    {
+        std::optional<ClosestPointIndex> own;
+        const ClosestPointIndex& index = options.index_original ? *options.index_original : own.emplace(a_data);
+        c.local_roughness = local_roughness_distance(b.mesh, *c.processed_profile, a.mesh, *c.original_profile, index,
+                                                     options.local_trim, options.vertex_distances, rings);
+    }
+    if (!options.profile.radii.empty()) {
+        LocalRoughnessParts radii;
+        radii.levels = radii.global = false;
+        std::optional<ClosestPointIndex> own;
+        const ClosestPointIndex& index = options.index_processed ? *options.index_processed : own.emplace(b_data);
+        const LocalRoughnessDistance on_original = local_roughness_distance(
+            a.mesh, *c.original_profile, b.mesh, *c.processed_profile, index, options.local_trim, false, radii);
+        c.local_roughness->radii = on_original.radii;
+        c.local_roughness->rms_radii = on_original.rms_radii;
+        c.local_roughness->vertices_radii = on_original.vertices;
+    }
     if (!options.profile.keep_vertex_data)
         for (RoughnessProfile* p : {&*c.original_profile, &*c.processed_profile}) {
             p->H = {};
@@ -168,7 +191,7 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         c.processed_corsini = corsini_profile(b.mesh, co);
         c.corsini = corsini_distance(*c.original_corsini, *c.processed_corsini, options.k);
     } else if (options.roughness) {
-        sigma_half(c, a, b_data, b, options);
+        sigma_half(c, a, a_data, b, b_data, options);
     }
     if (options.distance) {
         set_distance(c, surface_distance(a.mesh, b.mesh, distance_options(options, &a_data, &b_data)));

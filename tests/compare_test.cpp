@@ -238,11 +238,11 @@ TEST(CompareMeshes, CorsiniMeasureReplacesTheSigmaProfilesWithCorsinisRoughness)
 // incidence and the validation of each mesh at most once (issue 27): the two
 // inputs, and each normalised copy the profiles and the local difference
 // work on; with metric levels, the distance maps and the local difference on.
-// Meshes are told apart by the hash of their points: the one repeat is the
-// original's normalised copy, which the profile makes and frees and the local
-// difference makes again (keeping it from the profile would hold a copy of
-// the original's points through the whole comparison); each copy derives its
-// box once.
+// Meshes are told apart by the hash of their points: the one repeat is a
+// normalised copy, which the profile makes and frees and the local
+// difference makes again (the processed mesh's for the ring levels, the
+// original's for the radii; keeping it from the profile would hold a copy of
+// the points through the whole comparison); each copy derives its box once.
 TEST(CompareMeshes, DerivesEachDatumOncePerMesh)
 {
     CompareOptions with_radii;
@@ -253,21 +253,26 @@ TEST(CompareMeshes, DerivesEachDatumOncePerMesh)
         const Comparison c = compare_meshes(sphere(), irregular(), o);
         const detail::DerivationCounts counts = detail::stop_derivation_log();
         ASSERT_TRUE(c.local_roughness.has_value() && c.original_profile.has_value());
-        const std::size_t original = detail::mesh_key(sphere().mesh).second,
-                          processed = detail::mesh_key(irregular().mesh).second,
-                          original_unit =
-                              detail::mesh_key(apply_normalization(sphere().mesh, c.original_profile->normalization))
-                                  .second;
+        const std::size_t
+            original = detail::mesh_key(sphere().mesh).second,
+            processed = detail::mesh_key(irregular().mesh).second,
+            original_unit =
+                detail::mesh_key(apply_normalization(sphere().mesh, c.original_profile->normalization)).second,
+            processed_unit =
+                detail::mesh_key(apply_normalization(irregular().mesh, c.processed_profile->normalization)).second;
         std::map<std::pair<std::size_t, detail::Derived>, int> by_points;  // the same points, any address
         for (const auto& [key, n] : counts) by_points[{key.first.second, key.second}] += n;
         const char* names[] = {"box", "degenerate mask", "vertex-face incidence", "validation"};
         std::map<std::string, int> inputs;
         for (const auto& [key, n] : by_points) {
-            const std::string who = key.first == original        ? "original"
-                                    : key.first == processed     ? "processed"
-                                    : key.first == original_unit ? "the original's normalised copy"
-                                                                 : "another derived copy";
-            const int copies = key.first == original_unit && key.second == detail::Derived::Box ? 2 : 1;
+            const std::string who = key.first == original         ? "original"
+                                    : key.first == processed      ? "processed"
+                                    : key.first == original_unit  ? "the original's normalised copy"
+                                    : key.first == processed_unit ? "the processed mesh's normalised copy"
+                                                                  : "another derived copy";
+            const int copies =
+                (key.first == original_unit || key.first == processed_unit) && key.second == detail::Derived::Box ? 2
+                                                                                                                  : 1;
             EXPECT_LE(n, copies) << who << "'s " << names[int(key.second)] << " derived " << n << " times";
             if (key.first == original || key.first == processed) ++inputs[who];
         }

@@ -198,11 +198,13 @@ TEST(Progress, CompareReportsEveryStageToTheEnd)
         if (s.name == "distances") samples_seen += s.total;
     }
     // The vertices' distances (for the certification) and the other samples',
-    // and the closest points of the original's vertices for the local
-    // roughness difference.
+    // and the closest points of the local roughness difference: of the
+    // processed mesh's vertices (ring levels) and, with radii, of the
+    // original's.
     ASSERT_TRUE(c.local_roughness);
-    EXPECT_EQ(samples_seen,
-              c.distance->forward.n_samples() + c.distance->backward.n_samples() + c.local_roughness->vertices);
+    ASSERT_FALSE(c.local_roughness->radii.empty());
+    EXPECT_EQ(samples_seen, c.distance->forward.n_samples() + c.distance->backward.n_samples() +
+                                c.local_roughness->vertices + c.local_roughness->vertices_radii);
     EXPECT_EQ(c.options.progress, nullptr);  // not kept in the result
     ASSERT_TRUE(c.distance && c.distance->forward_hausdorff);
     EXPECT_TRUE(c.distance->forward_hausdorff->certified);

@@ -126,12 +126,12 @@ TEST(DistanceMap, OriginalSideIsTheBruteForceDistanceOfEveryOriginalVertex)
     EXPECT_EQ(distance_map(c, MapSide::Processed).comments, distance_map(c).comments);
 }
 
-TEST(DistanceMap, TheOriginalsMapCarriesTheLocalRoughnessDifferencePerLevel)
+TEST(DistanceMap, TheProcessedMapCarriesTheLocalRoughnessDifferencePerLevel)
 {
     // issue 29: the local roughness difference as a per-vertex map on the
-    // original (PREFIX_original.ply of --distance-maps): local_L = F(i) - mean
-    // of F over N_L(i), F = H - H'(cp) (local_roughness.h), whose RMS
-    // weighted by the original's vertex areas (untrimmed here) is
+    // processed mesh (PREFIX_processed.ply of --distance-maps): local_L = F(i)
+    // - mean of F over its N_L(i), F = H' - H(cp) (local_roughness.h), whose
+    // RMS weighted by the processed mesh's vertex areas (untrimmed here) is
     // roughness_distance.local.
     CompareOptions o;
     o.profile.levels = {1, 3};
@@ -140,14 +140,14 @@ TEST(DistanceMap, TheOriginalsMapCarriesTheLocalRoughnessDifferencePerLevel)
     o.local_trim = 0.0;
     const Comparison c = compare_meshes(sphere(), ellipsoid(), o);
     ASSERT_TRUE(c.local_roughness);
-    const VertexMap m = distance_map(c, MapSide::Original);
+    const VertexMap m = distance_map(c, MapSide::Processed);
     ASSERT_EQ(m.scalars.size(), 5u);
     for (std::size_t k = 0; k < 2; ++k) {
         const VertexScalar& s = m.scalars[3 + k];
         EXPECT_EQ(s.name, k == 0 ? "local_1" : "local_3");
-        ASSERT_EQ(s.values.size(), sphere().mesh.n_vertices());
+        ASSERT_EQ(s.values.size(), ellipsoid().mesh.n_vertices());
         const std::vector<double> area =
-            vertex_areas(apply_normalization(sphere().mesh, c.original_profile->normalization));
+            vertex_areas(apply_normalization(ellipsoid().mesh, c.processed_profile->normalization));
         double sum = 0.0, weight = 0.0;
         std::size_t n = 0;
         for (std::size_t i = 0; i < s.values.size(); ++i)
@@ -160,8 +160,8 @@ TEST(DistanceMap, TheOriginalsMapCarriesTheLocalRoughnessDifferencePerLevel)
         EXPECT_NEAR(std::sqrt(sum / weight), c.local_roughness->rms[k], 1e-12 * c.local_roughness->rms[k]);
     }
     EXPECT_NE(m.comments.back().find("local_L (L = 1, 3)"), std::string::npos) << m.comments.back();
-    // The processed mesh's map has no such property (the measure is over the original's vertices).
-    EXPECT_EQ(distance_map(c, MapSide::Processed).scalars.size(), 3u);
+    // The original's map has no such property (the ring levels pool over the processed mesh's vertices).
+    EXPECT_EQ(distance_map(c, MapSide::Original).scalars.size(), 3u);
     // Without vertex data kept, none either.
     o.vertex_distances = false;
     o.local = true;

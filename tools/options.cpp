@@ -215,10 +215,10 @@ void add_compare_options(CLI::App* sub, CompareCliOptions& o)
                      ->default_str(fmt::format("{}", defaults.k));
     sub->add_flag("--no-roughness", o.no_roughness, "skip the roughness half");
     sub->add_flag("--no-local", o.no_local,
-                  "skip the local roughness difference (each original vertex's D_L against the processed mesh's at its "
-                  "closest point, RMS per level)");
+                  "skip the local roughness difference (per level, the RMS over the processed mesh's vertices of the "
+                  "detail on its L-rings of the change of H from the original's at the closest point)");
     add(sub, "--local-trim", o.local_trim,
-        fmt::format("share of the original's vertices with the largest |difference| left out of each local RMS, in "
+        fmt::format("share of the vertices with the largest |difference| left out of each local RMS, in "
                     "[0, {:g}]",
                     kMaxTrim),
         fmt::format("{:g}", defaults.local_trim), "NUMBER");

@@ -37,11 +37,13 @@ struct CompareOptions
     RoughnessMeasure measure = RoughnessMeasure::Sigma;
     bool corsini_unbiased = false;  //!< CorsiniOptions::unbiased
     //! With the sigma measure, also the local roughness difference
-    //! (local_roughness.h): each processed vertex's D_L against the
-    //! original's at the closest point, pooled as an RMS per level.
+    //! (local_roughness.h): per ring level and globally, the detail of the
+    //! change of H on the processed mesh's own rings, pooled over its
+    //! vertices as an RMS (H of the original carried to them at the closest
+    //! point); per radius, the same on the original's balls over its vertices.
     bool local = true;
-    //! The share of the original's vertices with the largest |difference|
-    //! left out of each local RMS, in [0, kMaxTrim]: a few vertices (open
+    //! The share of the vertices with the largest |difference| left out of
+    //! each local RMS, in [0, kMaxTrim]: a few vertices (open
     //! boundaries, sharp CAD edges, curvature outliers) otherwise decide it.
     //! The default is the decimation study's (reference/README.md): with 0.05
     //! the local RMS grew with decimation on 9 of 12 series at level 1, with 0
@@ -95,7 +97,9 @@ struct Comparison : VertexDistances
     std::optional<RoughnessProfile> processed_profile;
     std::optional<RoughnessDistance> roughness;
     //! With CompareOptions::local (sigma measure): the local roughness
-    //! difference; per-vertex maps kept with vertex_distances.
+    //! difference (ring levels and global over the processed mesh's
+    //! vertices, radii over the original's); per-vertex maps of the ring
+    //! levels, on the processed mesh, kept with vertex_distances.
     std::optional<LocalRoughnessDistance> local_roughness;
     //! With RoughnessMeasure::Corsini, instead of the three above.
     std::optional<CorsiniProfile> original_corsini;

@@ -42,10 +42,12 @@ def test_the_same_numbers_and_no_index_built_again(pair, options):
     for r in (both, one):
         assert same_maps(r.pop("maps"), maps)
         assert r == plain  # every number of the report, bit for bit
-    # Without indexes: one of each mesh for the surface distance (and one more of the processed mesh
-    # for the local roughness difference); with both given, none; with the original's, the others.
+    # Without indexes: one of each mesh for the surface distance, and for the local roughness difference
+    # one more of the original (its ring levels) and, with radii, of the processed mesh (its radii);
+    # with both given, none; with the original's, the processed mesh's ones.
     local = options.get("measure") != "corsini" and options.get("roughness", True)
-    assert built == 2 + local and built_both == 0 and built_one == 1 + local
+    radii = local and bool(options.get("radii"))
+    assert built == 2 + local + radii and built_both == 0 and built_one == 1 + radii
 
 
 def test_one_index_serves_many_comparisons(pair):
@@ -58,7 +60,7 @@ def test_one_index_serves_many_comparisons(pair):
         expected = meshdiff.compare(V1, F1, V, F2, levels=[1])
         for i in (index, again):
             got, built = index_builds(V1, F1, V, F2, levels=[1], index_original=i)
-            assert got == expected and built == 2, k
+            assert got == expected and built == 1, k  # the processed mesh's, for the surface distance
     # mesh objects and files too
     class Mesh:
         def __init__(self, V, F):

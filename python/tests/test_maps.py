@@ -49,10 +49,10 @@ def test_maps_are_the_cli_maps_for_every_normalisation(cli, spheres, normalize, 
     m = r.pop("maps")
     assert r == meshdiff.compare_files(a, b, levels=LEVELS, normalize=normalize)  # the report is unchanged
     n1, n2 = r["original"]["mesh"]["vertices"], r["processed"]["mesh"]["vertices"]
-    assert sorted(m) == ["D_original", "D_processed", "distance_original", "distance_processed", "local_original",
+    assert sorted(m) == ["D_original", "D_processed", "distance_original", "distance_processed", "local_processed",
                          "signed_distance_original", "signed_distance_processed"]
     assert m["D_original"].shape == (n1, 3) and m["D_processed"].shape == (n2, 3)
-    assert m["local_original"].shape == (n1, len(r["roughness_distance"]["local"]["levels"]))
+    assert m["local_processed"].shape == (n2, len(r["roughness_distance"]["local"]["levels"]))
     # The CLI's distance maps of the same comparison: distances, signed distances, local_L.
     prefix = tmp_path / "maps"
     subprocess.run([cli, a, b, "--levels", ",".join(map(str, LEVELS)), "--normalize", normalize,
@@ -63,7 +63,7 @@ def test_maps_are_the_cli_maps_for_every_normalisation(cli, spheres, normalize, 
     assert same(m["distance_processed"], processed["distance"])
     assert same(m["signed_distance_processed"], processed["signed_distance"])
     for k, level in enumerate(r["roughness_distance"]["local"]["levels"]):
-        assert same(m["local_original"][:, k], original[f"local_{level}"]), level
+        assert same(m["local_processed"][:, k], processed[f"local_{level}"]), level
     # D_L per vertex: the profile's vertex data of each mesh on its own scale (paper, area); in the
     # original's frame the original's D is its paper-scale one.
     if normalize in ("paper", "area"):
@@ -89,7 +89,7 @@ def test_maps_with_radii(spheres):
     m = r["maps"]
     assert m["D_radii_original"].shape == (r["original"]["mesh"]["vertices"], 2)
     assert m["D_radii_processed"].shape == (r["processed"]["mesh"]["vertices"], 2)
-    assert "local_original" not in m  # the local maps come with the distance half
+    assert "local_processed" not in m  # the local maps come with the distance half
 
 
 def test_maps_of_the_corsini_measure(spheres):

@@ -59,8 +59,10 @@ nlohmann::json local_roughness_json(const LocalRoughnessDistance& d)
     };
     nlohmann::json j;
     j["definition"] =
-        "rms_L = sqrt(mean over the original's vertices i of (D_L(i) - D'_L(cp(i)))^2), D'_L(cp(i)) the processed "
-        "mesh's D_L interpolated linearly on its triangle holding the closest point to i";
+        "rms_L = sqrt(area-weighted mean over the processed mesh's vertices i of (F(i) - mean of F over the "
+        "processed L-ring of i)^2), F(i) = H'(i) - H(cp(i)) the change of mean curvature, H of the original "
+        "interpolated at its closest point to i (global: all other vertices); rms_radii: the same over the "
+        "original's vertices and balls, F = H - H'(cp); the largest |values| trimmed";
     j["levels"] = d.levels;
     j["rms"] = numbers(d.rms);
     j["vertices_used"] = d.used;
@@ -68,6 +70,7 @@ nlohmann::json local_roughness_json(const LocalRoughnessDistance& d)
     j["rms_radii"] = numbers(d.rms_radii);
     j["global"] = d.has_global && std::isfinite(d.global) ? nlohmann::json(d.global) : nlohmann::json(nullptr);
     j["vertices"] = d.vertices;
+    j["vertices_radii"] = d.vertices_radii;
     j["trim"] = d.trim;
     return j;
 }
@@ -293,7 +296,9 @@ std::string comparison_text(const Comparison& c)
             s += fmt::format("  sigma trimmed: the {:g}% of vertices with the largest |D| left out\n", 100.0 * pa.trim);
         if (local)
             s += fmt::format(
-                "  local = RMS over the original's vertices of D_L minus the processed D'_L at the closest point{}\n",
+                "  local = RMS over the processed mesh's vertices of the detail at its level L of the change of H "
+                "(the original's H at the closest point){}{}\n",
+                local->radii.empty() ? "" : "; at a radius over the original's vertices and balls",
                 local->trim > 0.0 ? fmt::format(" (the {:g}% largest left out)", 100.0 * local->trim) : "");
         auto local_at = [&](const std::vector<int>& keys, const std::vector<double>& rms, int key) {
             for (std::size_t i = 0; i < keys.size(); ++i)

@@ -63,9 +63,9 @@ VertexMap distance_map(const Comparison& c, MapSide side, std::optional<std::pai
     if (sd.size() == d.size()) m.scalars.push_back({"signed_distance", sd});
     // The distance again as "quality", the property MeshLab reads (its colourize, histogram and clamp filters).
     m.scalars.push_back({"quality", d});
-    // On the original: the local roughness difference per level (local_roughness.h), where it was kept.
+    // On the processed mesh: the local roughness difference per ring level (local_roughness.h), where it was kept.
     std::vector<int> local_levels;
-    if (!processed && c.local_roughness) {
+    if (processed && c.local_roughness) {
         const LocalRoughnessDistance& l = *c.local_roughness;
         for (std::size_t k = 0; k < l.vertex.size() && k < l.levels.size(); ++k)
             if (l.vertex[k].size() == d.size()) {
@@ -104,8 +104,9 @@ VertexMap distance_map(const Comparison& c, MapSide side, std::optional<std::pai
         m.comments.push_back("no signed_distance: the other mesh cannot be signed against (see the report)");
     if (!local_levels.empty())
         m.comments.push_back(fmt::format(
-            "local_L (L = {}): D_L of the vertex minus the processed mesh's D_L at its closest point (roughness "
-            "lost > 0, added < 0; NaN where either is undefined); their trimmed RMS is roughness_distance.local",
+            "local_L (L = {}): F minus its mean over the vertex's L-ring, F = H minus the original's H at the "
+            "closest point (roughness added > 0, lost < 0; NaN where undefined); their trimmed RMS is "
+            "roughness_distance.local",
             fmt::join(local_levels, ", ")));
     return m;
 }

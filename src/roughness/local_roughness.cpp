@@ -100,7 +100,7 @@ Vec3 barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
 
 LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const RoughnessProfile& pa, const Mesh& other,
                                                 const RoughnessProfile& pb, const ClosestPointIndex& index, double trim,
-                                                bool keep_vertex_data)
+                                                bool keep_vertex_data, LocalRoughnessParts parts)
 {
     if (pa.H.size() != mesh.n_vertices() || pb.H.size() != other.n_vertices())
         throw InvalidArgumentError("local roughness: a profile has no per-vertex H (keep_vertex_data)");
@@ -111,7 +111,7 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
     if (!(trim >= 0.0 && trim <= kMaxTrim))
         throw OptionError("local_trim", fmt::format("{} is not a share in [0, {}]", trim, kMaxTrim));
     LocalRoughnessDistance r;
-    r.vertices = mesh.n_vertices();
+    r.vertices = r.vertices_radii = mesh.n_vertices();
     r.trim = trim;
     const std::size_t n = mesh.n_vertices();
     // F(i) = H(i) - H'(cp(i)): the change of H, carried to the vertices of mesh.
@@ -130,7 +130,7 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
     const std::vector<double> area = vertex_areas(unit_mesh);
     for (const LevelRoughness& la : pa.levels)
         for (const LevelRoughness& lb : pb.levels)
-            if (la.level == lb.level) {
+            if (parts.levels && la.level == lb.level) {
                 r.levels.push_back(la.level);
                 break;
             }
@@ -144,13 +144,13 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
             if (keep_vertex_data) r.vertex.push_back(std::move(map));
         }
     }
-    if (pa.has_global && pb.has_global) {
+    if (parts.global && pa.has_global && pb.has_global) {
         r.has_global = true;
         r.global = pool(F, global_means(F), area, trim, nullptr).rms;
     }
     for (const LevelRoughness& la : pa.radii)
         for (const LevelRoughness& lb : pb.radii)
-            if (la.radius == lb.radius) {
+            if (parts.radii && la.radius == lb.radius) {
                 r.radii.push_back(la.radius);
                 break;
             }

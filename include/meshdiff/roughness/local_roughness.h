@@ -21,21 +21,31 @@
 //! trimmed_rms()). N_L is the ring level L of this mesh (neighborhood.h), the
 //! global level uses all other vertices, a metric level the ball of radius r
 //! on this mesh's normalised mesh with area-weighted means (metric_levels.h).
+//! Both terms live on the same neighbourhoods, so the difference is linear
+//! in F and 0 for a perfect copy.
 //!
-//! So local_L is 0 for a perfect copy, and as the other mesh loses all
-//! detail at the scale of the level (H'(cp) flat over N_L(i)) it approaches
-//! this mesh's own area-weighted sigma_L. The first form of this measure
-//! (issue 29) compared D_L(i) with the other mesh's D'_L at cp(i), computed
-//! on the other mesh's own rings: as a mesh is decimated those span ever
-//! larger patches, the two D become uncorrelated and the RMS, near
-//! sqrt(sigma_L^2 + sigma'_L^2), falls when sigma'_L falls (README, "Ranking
-//! decimations"). Both terms now live on the same neighbourhoods, which also
-//! makes the difference linear in F.
+//! A comparison (compare.h) takes "this mesh" as follows:
+//! - **Ring levels and the global level: the processed mesh** (its vertices,
+//!   its L-rings, its areas), against the original surface. Level L means
+//!   each mesh's own L-ring, as in the profiles and eq. 10; a decimated
+//!   mesh's L-ring spans a larger patch, so the original's detail inside it,
+//!   which the coarse mesh cannot carry, grows with the decimation. This is
+//!   the form that ranks decimations: on the 20 series of the decimation
+//!   study (README, "Ranking decimations") it grows strictly at levels 1, 2
+//!   and 5 on all 20 (the original's rings: 16, 15 and 18; the larger of the
+//!   two: 20, 20, 18).
+//! - **Metric levels (radii): the original** (its vertices and balls),
+//!   against the processed surface: a radius is the same patch on both
+//!   meshes, the original samples it densest, and a decimated mesh's small
+//!   balls hold too few vertices (the processed mesh's balls: 14, 17 and 18 of
+//!   20 at r = 0.05, 0.1, 0.2; the original's: 17, 18, 19).
+//! On the original's rings the measure saturates: once all detail at the
+//! level's scale is lost it approaches the original's own sigma_L, and the
+//! processed mesh's curvature noise read on those rings then shrinks as the
+//! mesh coarsens (the form of 2026-12-05). The first form (issue 29)
+//! compared D_L(i) with the other mesh's D'_L at cp(i) computed on its own
+//! rings, which become uncorrelated and fall with sigma'_L.
 //!
-//! A comparison pools over the vertices of the original against the
-//! processed surface (compare.h): the original is the dense, reference
-//! sampling, and the per-vertex values form a map on the original of where
-//! detail was lost (> 0 where the original's D_L was positive) or added.
 //! Unlike eq. 10, which sees only |sigma'_L - sigma_L|, this measure cannot
 //! let two changes cancel (coarser rings raising sigma while lost detail
 //! lowers it). H is in the units of each profile's normalised mesh (with
@@ -59,7 +69,10 @@ struct LocalRoughnessDistance
     std::vector<double> rms_radii;  //!< local_r aligned with radii (NaN: no data)
     bool has_global = false;        //!< both profiles have the global level
     double global = 0.0;            //!< local_G (NaN: no data)
-    std::size_t vertices = 0;       //!< vertices pooled over (of the first mesh)
+    std::size_t vertices = 0;       //!< vertices pooled over at the levels and globally (of the first mesh)
+    //! Vertices pooled over at the radii: the first mesh's here; a
+    //! comparison's radii come from the original (compare.h).
+    std::size_t vertices_radii = 0;
     double trim = 0.0;              //!< the share left out of each RMS, as used
     std::vector<std::size_t> used;  //!< vertices with both values, aligned with levels
     //! With keep_vertex_data: F(i) - mean of F over N_L(i) per level (aligned
@@ -67,9 +80,17 @@ struct LocalRoughnessDistance
     std::vector<std::vector<double>> vertex;
 };
 
+//! Which parts local_roughness_distance() computes.
+struct LocalRoughnessParts
+{
+    bool levels = true;  //!< the ring levels present in both profiles
+    bool global = true;  //!< the global level, if both profiles have it
+    bool radii = true;   //!< the metric levels present in both profiles
+};
+
 //! The local roughness difference of the vertices of \p mesh against the
 //! surface of \p other, at the levels, radii and global level present in
-//! both profiles. Both profiles must carry their per-vertex H
+//! both profiles (those of \p parts). Both profiles must carry their per-vertex H
 //! (ProfileOptions::keep_vertex_data); \p other_index is the closest-point
 //! index of \p other. \p trim: the share of the vertices with the largest
 //! |difference| left out of each RMS (trimmed_rms()), in [0, kMaxTrim].
@@ -79,7 +100,7 @@ struct LocalRoughnessDistance
 LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const RoughnessProfile& profile, const Mesh& other,
                                                 const RoughnessProfile& other_profile,
                                                 const ClosestPointIndex& other_index, double trim = 0.0,
-                                                bool keep_vertex_data = false);
+                                                bool keep_vertex_data = false, LocalRoughnessParts parts = {});
 
 //! Barycentric coordinates of \p p (a point of the triangle's plane) in
 //! triangle (a, b, c); for a degenerate triangle, 1 at the corner nearest p.
