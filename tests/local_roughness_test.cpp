@@ -251,6 +251,43 @@ TEST(LocalRoughness, NeedsVertexData)
     EXPECT_THROW(local_roughness_distance(m, p, m, p, ClosestPointIndex(m)), InvalidArgumentError);
 }
 
+// A comparison pools the ring levels and the global level over the processed
+// mesh's vertices (its rings, against the original surface) and the radii
+// over the original's (its balls, against the processed surface): the
+// decimation study's choice (local_roughness.h).
+TEST(LocalRoughness, ComparisonPoolsLevelsOverTheProcessedMeshAndRadiiOverTheOriginal)
+{
+    const Mesh a = noisy_sphere(3, 0.02, 1).mesh, b = noisy_sphere(2, 0.03, 2).mesh;
+    ASSERT_NE(a.n_vertices(), b.n_vertices());
+    CompareOptions o;
+    o.distance = false;
+    o.profile.levels = {1, 2};
+    o.profile.radii = {0.3};
+    o.profile.keep_vertex_data = true;
+    const Comparison c = compare_meshes(loaded(a), loaded(b), o);
+    ASSERT_TRUE(c.local_roughness);
+    const LocalRoughnessDistance& l = *c.local_roughness;
+    EXPECT_EQ(l.vertices, b.n_vertices());
+    EXPECT_EQ(l.vertices_radii, a.n_vertices());
+    const RoughnessProfile &pa = *c.original_profile, &pb = *c.processed_profile;
+    const LocalRoughnessDistance on_processed =
+        local_roughness_distance(b, pb, a, pa, ClosestPointIndex(a), o.local_trim);
+    const LocalRoughnessDistance on_original =
+        local_roughness_distance(a, pa, b, pb, ClosestPointIndex(b), o.local_trim);
+    EXPECT_EQ(l.levels, on_processed.levels);
+    EXPECT_EQ(l.rms, on_processed.rms);
+    EXPECT_EQ(l.global, on_processed.global);
+    EXPECT_EQ(l.radii, on_original.radii);
+    EXPECT_EQ(l.rms_radii, on_original.rms_radii);
+    EXPECT_NE(l.rms[0], on_original.rms[0]);  // the two directions differ
+    const nlohmann::json j = comparison_json(c)["roughness_distance"]["local"];
+    EXPECT_EQ(j["vertices"].get<std::size_t>(), b.n_vertices());
+    EXPECT_EQ(j["vertices_radii"].get<std::size_t>(), a.n_vertices());
+    // Without radii none are pooled.
+    o.profile.radii.clear();
+    EXPECT_EQ(compare_meshes(loaded(a), loaded(b), o).local_roughness->vertices_radii, 0u);
+}
+
 TEST(LocalRoughness, OffSwitchAndTheJsonBlock)
 {
     const Mesh a = noisy_sphere(2, 0.02, 1).mesh, b = noisy_sphere(2, 0.03, 2).mesh;

@@ -111,7 +111,8 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
     if (!(trim >= 0.0 && trim <= kMaxTrim))
         throw OptionError("local_trim", fmt::format("{} is not a share in [0, {}]", trim, kMaxTrim));
     LocalRoughnessDistance r;
-    r.vertices = r.vertices_radii = mesh.n_vertices();
+    r.vertices = mesh.n_vertices();
+    r.vertices_radii = parts.radii ? mesh.n_vertices() : 0;
     r.trim = trim;
     const std::size_t n = mesh.n_vertices();
     // F(i) = H(i) - H'(cp(i)): the change of H, carried to the vertices of mesh.

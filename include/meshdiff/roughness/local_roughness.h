@@ -70,8 +70,9 @@ struct LocalRoughnessDistance
     bool has_global = false;        //!< both profiles have the global level
     double global = 0.0;            //!< local_G (NaN: no data)
     std::size_t vertices = 0;       //!< vertices pooled over at the levels and globally (of the first mesh)
-    //! Vertices pooled over at the radii: the first mesh's here; a
-    //! comparison's radii come from the original (compare.h).
+    //! Vertices pooled over at the radii: the first mesh's here (0 when
+    //! LocalRoughnessParts::radii is off); a comparison's radii come from the
+    //! original (compare.h), 0 without radii.
     std::size_t vertices_radii = 0;
     double trim = 0.0;              //!< the share left out of each RMS, as used
     std::vector<std::size_t> used;  //!< vertices with both values, aligned with levels
