@@ -101,15 +101,18 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, cons
     // processed surface (a radius is the same patch on both meshes, and the
     // original samples it densest). An index the caller built is used
     // (surface_distance() checks it too), otherwise one of our own.
-    if (options.index_original && options.index_original->n_faces() != a.mesh.n_faces())
-        throw InvalidArgumentError("CompareOptions: index_original is not an index of the original mesh");
-    if (options.index_processed && options.index_processed->n_faces() != b.mesh.n_faces())
-        throw InvalidArgumentError("CompareOptions: index_processed is not an index of the processed mesh");
+    auto index_of = [](const ClosestPointIndex* given, const MeshData& data, std::optional<ClosestPointIndex>& own,
+                       const char* name) -> const ClosestPointIndex& {
+        if (!given) return own.emplace(data);
+        if (given->n_faces() != data.mesh().n_faces())
+            throw InvalidArgumentError(fmt::format("CompareOptions: index_{0} is not an index of the {0} mesh", name));
+        return *given;
+    };
     LocalRoughnessParts rings;
     rings.radii = false;
     {
         std::optional<ClosestPointIndex> own;
-        const ClosestPointIndex& index = options.index_original ? *options.index_original : own.emplace(a_data);
+        const ClosestPointIndex& index = index_of(options.index_original, a_data, own, "original");
         c.local_roughness = local_roughness_distance(b.mesh, *c.processed_profile, a.mesh, *c.original_profile, index,
                                                      options.local_trim, options.vertex_distances, rings);
     }
@@ -117,12 +120,12 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, cons
         LocalRoughnessParts radii;
         radii.levels = radii.global = false;
         std::optional<ClosestPointIndex> own;
-        const ClosestPointIndex& index = options.index_processed ? *options.index_processed : own.emplace(b_data);
+        const ClosestPointIndex& index = index_of(options.index_processed, b_data, own, "processed");
         const LocalRoughnessDistance on_original = local_roughness_distance(
             a.mesh, *c.original_profile, b.mesh, *c.processed_profile, index, options.local_trim, false, radii);
         c.local_roughness->radii = on_original.radii;
         c.local_roughness->rms_radii = on_original.rms_radii;
-        c.local_roughness->vertices_radii = on_original.vertices;
+        c.local_roughness->vertices_radii = on_original.vertices_radii;
     }
     if (!options.profile.keep_vertex_data)
         for (RoughnessProfile* p : {&*c.original_profile, &*c.processed_profile}) {

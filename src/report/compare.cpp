@@ -298,8 +298,8 @@ std::string comparison_text(const Comparison& c)
             s += fmt::format(
                 "  local = RMS over the processed mesh's vertices of the detail at its level L of the change of H "
                 "(the original's H at the closest point){}{}\n",
-                local->radii.empty() ? "" : "; at a radius over the original's vertices and balls",
-                local->trim > 0.0 ? fmt::format(" (the {:g}% largest left out)", 100.0 * local->trim) : "");
+                local->trim > 0.0 ? fmt::format(" (the {:g}% largest left out)", 100.0 * local->trim) : "",
+                local->radii.empty() ? "" : "; at a radius the same over the original's vertices and balls");
         auto local_at = [&](const std::vector<int>& keys, const std::vector<double>& rms, int key) {
             for (std::size_t i = 0; i < keys.size(); ++i)
                 if (keys[i] == key) return rms[i];

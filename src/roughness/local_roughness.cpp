@@ -129,12 +129,13 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
     const MeshData unit(unit_mesh);  // its box, derived once for the rings and the balls
     const Adjacency adj = vertex_adjacency(unit_mesh);
     const std::vector<double> area = vertex_areas(unit_mesh);
-    for (const LevelRoughness& la : pa.levels)
-        for (const LevelRoughness& lb : pb.levels)
-            if (parts.levels && la.level == lb.level) {
-                r.levels.push_back(la.level);
-                break;
-            }
+    if (parts.levels)
+        for (const LevelRoughness& la : pa.levels)
+            for (const LevelRoughness& lb : pb.levels)
+                if (la.level == lb.level) {
+                    r.levels.push_back(la.level);
+                    break;
+                }
     if (!r.levels.empty()) {
         const DiskMeans means = disk_means(unit, adj, F, r.levels);
         for (std::size_t k = 0; k < r.levels.size(); ++k) {
@@ -149,12 +150,13 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
         r.has_global = true;
         r.global = pool(F, global_means(F), area, trim, nullptr).rms;
     }
-    for (const LevelRoughness& la : pa.radii)
-        for (const LevelRoughness& lb : pb.radii)
-            if (parts.radii && la.radius == lb.radius) {
-                r.radii.push_back(la.radius);
-                break;
-            }
+    if (parts.radii)
+        for (const LevelRoughness& la : pa.radii)
+            for (const LevelRoughness& lb : pb.radii)
+                if (la.radius == lb.radius) {
+                    r.radii.push_back(la.radius);
+                    break;
+                }
     if (!r.radii.empty()) {
         const BallMeans balls = ball_means(unit, adj, F, area, r.radii);
         for (std::size_t k = 0; k < r.radii.size(); ++k)
