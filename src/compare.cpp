@@ -2,6 +2,8 @@
 
 #include "meshdiff/error.h"
 
+#include "roughness/profile_keeping_h.h"
+
 #include <fmt/format.h>
 #include <omp.h>
 
@@ -81,16 +83,20 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
 void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, const LoadedMesh& b, const MeshData& b_data,
                 const CompareOptions& options)
 {
-    ProfileOptions po = options.profile;
-    po.keep_vertex_data = po.keep_vertex_data || options.local;
+    // The local difference needs H per vertex, not D: the profiles keep H
+    // only (their ring levels then fold D batch by batch, level_stream.h).
+    const ProfileOptions& po = options.profile;
     if (po.normalize == NormalizeMethod::Original) {
         Normalization frame = unit_normalization(a.mesh);
         frame.method = NormalizeMethod::Original;
-        c.original_profile = roughness_profile(a.mesh, po, frame);
-        c.processed_profile = roughness_profile(b.mesh, po, frame);
+        c.original_profile = detail::roughness_profile_keeping_H(a.mesh, po, frame, options.local);
+        c.processed_profile = detail::roughness_profile_keeping_H(b.mesh, po, frame, options.local);
     } else {
-        c.original_profile = roughness_profile(a.mesh, po);
-        c.processed_profile = roughness_profile(b.mesh, po);
+        validate(po);
+        c.original_profile =
+            detail::roughness_profile_keeping_H(a.mesh, po, normalization_of(a.mesh, po.normalize), options.local);
+        c.processed_profile =
+            detail::roughness_profile_keeping_H(b.mesh, po, normalization_of(b.mesh, po.normalize), options.local);
     }
     c.roughness = roughness_distance(*c.original_profile, *c.processed_profile, options.k);
     if (!options.local) return;

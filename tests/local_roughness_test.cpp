@@ -12,6 +12,8 @@
 #include "meshdiff/roughness/roughness_distance.h"
 #include "meshdiff/studies/shapes.h"
 
+#include <omp.h>
+
 #include <cmath>
 
 using namespace meshdiff;
@@ -423,7 +425,7 @@ TEST(TrimmedSigma, LeavesOutTheLargestValues)
     for (std::size_t k = 0; k < 2; ++k) {
         EXPECT_LT(t.levels[k].sigma, plain.levels[k].sigma);
         EXPECT_EQ(t.levels[k].trimmed, std::size_t(std::ceil(0.05 * double(m.n_vertices()))));
-        EXPECT_EQ(t.levels[k].sigma, trimmed_rms(t.D[k], 0.05));
+        EXPECT_NEAR(t.levels[k].sigma, trimmed_rms(t.D[k], 0.05), 1e-13 * t.levels[k].sigma);  // as above
         EXPECT_EQ(t.levels[k].top_share, plain.levels[k].top_share);  // the diagnostic stays on all vertices
     }
     EXPECT_LT(t.global.sigma, plain.global.sigma);
@@ -446,11 +448,46 @@ TEST(LocalRoughness, TrimLeavesOutTheLargestDifferences)
     EXPECT_EQ(t.trim, 0.05);
     const std::vector<double> area = vertex_areas(apply_normalization(a, pa.normalization));
     for (std::size_t k = 0; k < 3; ++k) {
-        EXPECT_EQ(t.rms[k], trimmed_rms(all.vertex[k], 0.05, &area));
+        // trimmed_rms() adds in vertex order, the comparison batch by batch
+        // (folded, compensated): the same but for the rounding of the sums.
+        EXPECT_NEAR(t.rms[k], trimmed_rms(all.vertex[k], 0.05, &area), 1e-13 * t.rms[k]);
         EXPECT_LT(t.rms[k], all.rms[k]);
     }
     EXPECT_THROW(local_roughness_distance(a, pa, b, pb, index, 0.3), OptionError);
     CompareOptions o;
     o.local_trim = -1.0;
     EXPECT_THROW(validate(o), OptionError);
+}
+
+// Issue 30, lever 5: without the per-vertex maps the levels are folded batch
+// by batch (no levels x n means): the trimmed, area-weighted RMS of the
+// stored path but for the rounding of its sums, the same counts, the same
+// bits at any thread count.
+TEST(LocalRoughness, FoldedLevelsAreTheStoredLevelsButForTheRoundingOfTheirSums)
+{
+    const Mesh a = noisy_sphere(3, 0.02, 1).mesh;
+    const Mesh b = noisy_sphere(2, 0.01, 2).mesh;
+    ProfileOptions o = with_data();
+    o.levels = {1, 2, 5, 20};
+    const RoughnessProfile pa = roughness_profile(a, o);
+    const RoughnessProfile pb = roughness_profile(b, o);
+    const ClosestPointIndex index(a);
+    for (double trim : {0.0, 0.05, 0.2}) {
+        SCOPED_TRACE(testing::Message() << "trim " << trim);
+        const LocalRoughnessDistance stored = local_roughness_distance(b, pb, a, pa, index, trim, true);
+        const int saved = omp_get_max_threads();
+        omp_set_num_threads(1);
+        const LocalRoughnessDistance one = local_roughness_distance(b, pb, a, pa, index, trim, false);
+        omp_set_num_threads(2);
+        const LocalRoughnessDistance folded = local_roughness_distance(b, pb, a, pa, index, trim, false);
+        omp_set_num_threads(saved);
+        ASSERT_EQ(folded.rms.size(), 4u);
+        EXPECT_TRUE(folded.vertex.empty());
+        EXPECT_EQ(folded.used, stored.used);
+        for (std::size_t k = 0; k < 4; ++k) {
+            EXPECT_GT(stored.rms[k], 0.0);
+            EXPECT_NEAR(folded.rms[k], stored.rms[k], 1e-13 * stored.rms[k]) << "level " << folded.levels[k];
+            EXPECT_EQ(one.rms[k], folded.rms[k]);
+        }
+    }
 }

@@ -404,3 +404,74 @@ TEST(PaperMethod, AFieldThatContradictsItIsRefusedNamingPaperAndTheField)
     o.trim = 0.05;
     refused(o, "profile.trim");
 }
+
+// Issue 30, lever 5: without per-vertex data the ring levels are folded batch
+// by batch (no levels x n means, no D). Against the stored path (D kept):
+// the same counts, trims and worst vertices (the same D in the same total
+// order), sigma and the top share within the rounding of their sums; and the
+// same bits at any thread count. H with undefined vertices, so that centres
+// and levels without a defined neighbour are left out as in the stored path.
+TEST(RoughnessProfile, FoldedLevelsAreTheStoredLevelsButForTheRoundingOfTheirSums)
+{
+    const Mesh mesh = read_mesh(data("fandisk.ply")).mesh;
+    std::vector<double> H(mesh.n_vertices());
+    for (std::size_t i = 0; i < H.size(); ++i)
+        H[i] = i % 13 == 4 ? std::nan("") : std::sin(0.37 * double(i)) + (i % 97 == 0 ? 40.0 : 0.0);
+    struct Case
+    {
+        double trim, outlier;
+    };
+    for (const Case c : {Case{0.0, 0.001}, Case{0.1, 0.001}, Case{0.0, 0.05}, Case{0.04, 0.02}}) {
+        ProfileOptions o;
+        o.levels = {1, 2, 3, 7, 20};
+        o.trim = c.trim;
+        o.outlier_fraction = c.outlier;
+        o.keep_vertex_data = true;
+        const RoughnessProfile stored = roughness_profile_from_curvature(mesh, H, o);
+        o.keep_vertex_data = false;
+        const int saved = omp_get_max_threads();
+        omp_set_num_threads(1);
+        const RoughnessProfile one = roughness_profile_from_curvature(mesh, H, o);
+        omp_set_num_threads(2);
+        const RoughnessProfile folded = roughness_profile_from_curvature(mesh, H, o);
+        omp_set_num_threads(saved);
+        ASSERT_TRUE(folded.D.empty());
+        ASSERT_EQ(folded.levels.size(), stored.levels.size());
+        for (std::size_t k = 0; k < stored.levels.size(); ++k) {
+            const LevelRoughness &s = stored.levels[k], &f = folded.levels[k], &f1 = one.levels[k];
+            SCOPED_TRACE(testing::Message() << "trim " << c.trim << " outlier " << c.outlier << " level " << s.level);
+            EXPECT_EQ(f.vertices_used, s.vertices_used);
+            EXPECT_EQ(f.no_neighborhood, s.no_neighborhood);
+            EXPECT_EQ(f.trimmed, s.trimmed);
+            EXPECT_EQ(f.worst_vertices, s.worst_vertices);
+            EXPECT_GT(s.sigma, 0.0);
+            EXPECT_NEAR(f.sigma, s.sigma, 1e-13 * s.sigma);
+            EXPECT_NEAR(f.top_share, s.top_share, 1e-13 * s.top_share);
+            // The same bits at 1 and 2 threads.
+            EXPECT_EQ(f1.sigma, f.sigma);
+            EXPECT_EQ(f1.top_share, f.top_share);
+            EXPECT_EQ(f1.worst_vertices, f.worst_vertices);
+        }
+        if (c.trim > 0.0) {  // the trim left vertices out
+            EXPECT_GT(folded.levels[0].trimmed, 0u);
+        }
+    }
+}
+
+// The folded path is not taken where the stored D is needed: the bootstrap
+// resamples it (its interval is there) and keep_vertex_data keeps it.
+TEST(RoughnessProfile, BootstrapAndVertexDataKeepTheStoredLevels)
+{
+    const Mesh mesh = read_mesh(data("bunny_res3.ply")).mesh;
+    ProfileOptions o;
+    o.levels = {1, 2};
+    o.bootstrap = 20;
+    const RoughnessProfile p = roughness_profile(mesh, o);
+    ASSERT_TRUE(p.levels[0].sigma_interval.has_value());
+    EXPECT_LE(p.levels[0].sigma_interval->first, p.levels[0].sigma_interval->second);
+    o.bootstrap = 0;
+    o.keep_vertex_data = true;
+    const RoughnessProfile kept = roughness_profile(mesh, o);
+    ASSERT_EQ(kept.D.size(), 2u);
+    EXPECT_EQ(kept.D[0].size(), mesh.n_vertices());
+}

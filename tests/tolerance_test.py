@@ -48,11 +48,17 @@ KEPT = ["curvature", "sigma", "sigma_global", "global", "level_details", "levels
 DROPPED = {"worst_vertices"}  # vertex ids ordered by |D|: ties may reorder under rounding
 
 
-def run_profile(meshdiff, mesh, fit, out, threads):
+def run_profile(meshdiff, mesh, fit, out, threads, vertex_data=True):
     json_path, ply_path = out + ".json", out + ".ply"
-    subprocess.run([meshdiff, "profile", mesh, "--curvature", fit, "--json", json_path, "--vertex-data", ply_path,
+    extra = ["--vertex-data", ply_path] if vertex_data else []
+    subprocess.run([meshdiff, "profile", mesh, "--curvature", fit, "--json", json_path, *extra,
                     "--threads", str(threads), "-q"], check=True, stdout=subprocess.DEVNULL)
-    return json_path, ply_path
+    return (json_path, ply_path) if vertex_data else (json_path,)
+
+
+def worst_vertex_lists(report):
+    """The worst-vertex ids of every level, in the report's order."""
+    return [level.get("worst_vertices") for level in report.get("level_details", [])]
 
 
 def read_vertex_columns(path):
@@ -194,6 +200,17 @@ def check(meshdiff, data_dir, work):
             errors.append(f"{mesh} {fit}: the JSON or the PLY differs between --threads 1 and --threads 2")
         new_report = json.loads(outputs[1][0])
         compare_json(meta["profile"], reduced(new_report), f"{mesh} {fit}", errors, worst_aggregate)
+        # Without per-vertex data the ring levels are folded batch by batch
+        # (no stored D): the same rule, and the same worst vertices as the run
+        # with D stored (the same D, ranked in the same total order).
+        folded = [open(run_profile(meshdiff, mesh_path, fit, os.path.join(work, f"{mesh}.{fit}.folded.t{t}"), t,
+                                   vertex_data=False)[0], "rb").read() for t in (1, 2)]
+        if folded[0] != folded[1]:
+            errors.append(f"{mesh} {fit}: without --vertex-data the JSON differs between --threads 1 and 2")
+        folded_report = json.loads(folded[1])
+        compare_json(meta["profile"], reduced(folded_report), f"{mesh} {fit} (folded)", errors, worst_aggregate)
+        if worst_vertex_lists(folded_report) != worst_vertex_lists(new_report):
+            errors.append(f"{mesh} {fit}: the worst vertices differ between the folded and the stored levels")
 
         columns = read_vertex_columns(paths[1])
         new = stored_vectors(columns)

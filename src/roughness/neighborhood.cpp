@@ -2,6 +2,8 @@
 
 #include "meshdiff/error.h"
 
+#include "roughness/disk_means_batches.h"
+
 #include "core/stage_progress.h"
 #include "geometry/simd.h"
 #include "roughness/morton.h"
@@ -12,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include <omp.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -405,17 +408,42 @@ DiskMeans disk_means(const Mesh& mesh, const Adjacency& adj, const std::vector<d
 DiskMeans disk_means(const MeshData& data, const Adjacency& adj, const std::vector<double>& values,
                      const std::vector<int>& levels, bool with_sizes)
 {
+    const std::size_t n = adj.size();
+    if (values.size() != n || data.mesh().n_vertices() != n)
+        throw InvalidArgumentError("disk_means: values, adjacency and mesh sizes differ");
+    DiskMeans out;
+    out.levels = levels;
+    out.mean.assign(levels.size(), std::vector<double>(n, std::numeric_limits<double>::quiet_NaN()));
+    if (with_sizes) out.size.assign(levels.size(), std::vector<std::uint32_t>(n, 0));
+    detail::disk_means_batches(data, adj, values, levels, with_sizes, [&](const detail::DiskMeansBatch& b) {
+        for (std::size_t li = 0; li < levels.size(); ++li)
+            for (std::size_t k = 0; k < b.count; ++k) {
+                const auto c = b.centres[k];
+                out.mean[li][c] = b.mean[li * b.stride + k];
+                if (with_sizes) out.size[li][c] = b.size[li * b.stride + k];
+            }
+    });
+    return out;
+}
+
+std::size_t detail::disk_mean_batch_count(const std::vector<double>& values)
+{
+    const auto defined =
+        std::size_t(std::count_if(values.begin(), values.end(), [](double v) { return !std::isnan(v); }));
+    return (defined + BatchBfs<kWords>::kBatch - 1) / BatchBfs<kWords>::kBatch;
+}
+
+void detail::disk_means_batches(const MeshData& data, const Adjacency& adj, const std::vector<double>& values,
+                                const std::vector<int>& levels, bool with_sizes,
+                                const std::function<void(const DiskMeansBatch&)>& sink)
+{
     const Mesh& mesh = data.mesh();
     const std::size_t n = adj.size();
     if (values.size() != n || mesh.n_vertices() != n)
         throw InvalidArgumentError("disk_means: values, adjacency and mesh sizes differ");
     for (int l : levels)
         if (l < 1) throw InvalidArgumentError(fmt::format("disk_means: level {} is < 1", l));
-    DiskMeans out;
-    out.levels = levels;
-    out.mean.assign(levels.size(), std::vector<double>(n, std::numeric_limits<double>::quiet_NaN()));
-    if (with_sizes) out.size.assign(levels.size(), std::vector<std::uint32_t>(n, 0));
-    if (levels.empty() || n == 0) return out;
+    if (levels.empty() || n == 0) return;
     const int lmax = *std::max_element(levels.begin(), levels.end());
 
     // Centres with a defined value, in Morton order, cut into batches of kBatch (64 x kWords).
@@ -484,6 +512,13 @@ DiskMeans disk_means(const MeshData& data, const Adjacency& adj, const std::vect
     {
         BatchBfs<kWords> bfs(sadj, svalues, all_defined, word_sums, lmax);
         constexpr std::size_t kBatch = BatchBfs<kWords>::kBatch;
+        std::vector<double> mean(levels.size() * kBatch);
+        std::vector<std::uint32_t> size(with_sizes ? levels.size() * kBatch : 0);
+        DiskMeansBatch batch;
+        batch.worker = omp_get_thread_num();
+        batch.mean = mean.data();
+        batch.size = with_sizes ? size.data() : nullptr;
+        batch.stride = kBatch;
 #pragma omp for schedule(dynamic, 2)
         for (std::ptrdiff_t ib = 0; ib < std::ptrdiff_t(n_batches); ++ib) {
             if (!stage.tick()) continue;
@@ -493,16 +528,19 @@ DiskMeans disk_means(const MeshData& data, const Adjacency& adj, const std::vect
             for (std::size_t li = 0; li < levels.size(); ++li) {
                 const std::size_t base = std::size_t(levels[li]) * kBatch;
                 for (std::size_t k = 0; k < nb; ++k) {
-                    const auto c = centres[first + k];
                     const auto cnt = bfs.count[base + k];
-                    if (cnt > 0) out.mean[li][c] = bfs.sum[base + k] / double(cnt);
-                    if (with_sizes) out.size[li][c] = bfs.size[base + k];
+                    mean[li * kBatch + k] =
+                        cnt > 0 ? bfs.sum[base + k] / double(cnt) : std::numeric_limits<double>::quiet_NaN();
+                    if (with_sizes) size[li * kBatch + k] = bfs.size[base + k];
                 }
             }
+            batch.index = std::size_t(ib);
+            batch.centres = centres.data() + first;
+            batch.count = nb;
+            sink(batch);
         }
     }
     stage.finish();
-    return out;
 }
 
 std::vector<double> global_means(const std::vector<double>& values)

@@ -6,6 +6,9 @@
 #include "meshdiff/roughness/metric_levels.h"
 #include "meshdiff/roughness/neighborhood.h"
 
+#include "roughness/level_stream.h"
+#include "roughness/profile_keeping_h.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -232,35 +235,11 @@ void apply_trim(LevelRoughness& l, const std::vector<double>& D, const ProfileOp
     l.sigma = std::isnan(s) ? 0.0 : s;
 }
 
-// Levels and global level from H on the normalised mesh; fills p.
-void profile_from_H(RoughnessProfile& p, const MeshData& unit, const Adjacency& adj, std::vector<double> H,
-                    std::size_t undefined, const ProfileOptions& options)
+// The global level and the metric levels.
+void global_and_radii(RoughnessProfile& p, const MeshData& unit, const Adjacency& adj, const std::vector<double>& H,
+                      std::size_t undefined, const ProfileOptions& options)
 {
     const std::size_t n = H.size();
-    p.outlier_fraction = options.outlier_fraction;
-    p.trim = options.trim;
-    p.bootstrap = options.bootstrap;
-    p.bootstrap_seed = options.bootstrap_seed;
-    const DiskMeans means = disk_means(unit, adj, H, options.levels);
-    // Levels are independent: one per thread, each result in its own slot.
-    const std::size_t n_levels = options.levels.size();
-    p.levels.resize(n_levels);
-    if (options.keep_vertex_data) p.D.resize(n_levels);
-#pragma omp parallel
-    {
-        std::vector<double> Dl(n);
-#pragma omp for schedule(dynamic, 1)
-        for (std::ptrdiff_t il = 0; il < std::ptrdiff_t(n_levels); ++il) {
-            const auto li = std::size_t(il);
-            for (std::size_t i = 0; i < n; ++i) Dl[i] = H[i] - means.mean[li][i];  // NaN propagates
-            LevelRoughness lr = level_roughness(options.levels[li], Dl, options.outlier_fraction);
-            apply_trim(lr, Dl, options);
-            lr.sigma_interval = bootstrap_interval(Dl, options.trim, options.bootstrap, options.bootstrap_seed);
-            lr.no_neighborhood = (n - undefined) - lr.vertices_used;
-            p.levels[li] = std::move(lr);
-            if (options.keep_vertex_data) p.D[li] = Dl;
-        }
-    }
     std::vector<double> D(n);
     if (options.global) {
         p.has_global = true;
@@ -289,7 +268,54 @@ void profile_from_H(RoughnessProfile& p, const MeshData& unit, const Adjacency& 
             if (options.keep_vertex_data) p.D_radii[k] = D;
         }
     }
-    if (options.keep_vertex_data) p.H = std::move(H);
+}
+
+// Levels and global level from H on the normalised mesh; fills p (and p.H
+// with keep_H, as with keep_vertex_data).
+void profile_from_H(RoughnessProfile& p, const MeshData& unit, const Adjacency& adj, std::vector<double> H,
+                    std::size_t undefined, const ProfileOptions& options, bool keep_H = false)
+{
+    const std::size_t n = H.size();
+    p.outlier_fraction = options.outlier_fraction;
+    p.trim = options.trim;
+    p.bootstrap = options.bootstrap;
+    p.bootstrap_seed = options.bootstrap_seed;
+    const std::size_t n_levels = options.levels.size();
+    p.levels.resize(n_levels);
+    // The ring levels' statistics are folded batch by batch (level_stream.h):
+    // no levels x n means unless D itself is needed (kept, or resampled by
+    // the bootstrap), or the ranked head of |D| the top share and the trim
+    // need is large beside the mesh (it is then ranked from the stored D).
+    // Either way the same sums: the same bits with or without D stored.
+    const auto centres = std::size_t(std::count_if(H.begin(), H.end(), [](double h) { return !std::isnan(h); }));
+    const std::size_t head = std::max({std::size_t(10), detail::head_for(options.outlier_fraction, centres),
+                                       options.trim > 0.0 ? detail::head_for(options.trim, centres) : std::size_t(0)});
+    const std::size_t head_limit = detail::head_limit(n);
+    const bool store_D = options.keep_vertex_data || options.bootstrap > 0 || head > head_limit;
+    if (n_levels > 0) {
+        detail::LevelStream stream(n_levels, detail::disk_mean_batch_count(H), std::min(head, head_limit), H);
+        std::vector<std::vector<double>> D(store_D ? n_levels : 0);
+        for (auto& d : D) d.assign(n, std::numeric_limits<double>::quiet_NaN());
+        detail::disk_means_batches(unit, adj, H, options.levels, false, [&](const detail::DiskMeansBatch& b) {
+            stream.add(b);
+            for (std::size_t li = 0; li < D.size(); ++li)
+                for (std::size_t k = 0; k < b.count; ++k)
+                    D[li][b.centres[k]] = H[b.centres[k]] - b.mean[li * b.stride + k];  // NaN propagates
+        });
+        if (options.keep_vertex_data) p.D.resize(n_levels);
+        for (std::size_t li = 0; li < n_levels; ++li) {
+            detail::LevelSums sums = stream.sums(li);
+            if (head > head_limit) sums.head = detail::ranked_head(D[li], nullptr, head);
+            LevelRoughness& lr = p.levels[li];
+            lr = detail::streamed_level_roughness(options.levels[li], sums, options.outlier_fraction, options.trim);
+            lr.no_neighborhood = (n - undefined) - lr.vertices_used;
+            if (options.bootstrap > 0)
+                lr.sigma_interval = bootstrap_interval(D[li], options.trim, options.bootstrap, options.bootstrap_seed);
+            if (options.keep_vertex_data) p.D[li] = std::move(D[li]);
+        }
+    }
+    global_and_radii(p, unit, adj, H, undefined, options);
+    if (options.keep_vertex_data || keep_H) p.H = std::move(H);
 }
 
 }  // namespace
@@ -315,6 +341,12 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
 
 RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& options, const Normalization& frame)
 {
+    return detail::roughness_profile_keeping_H(mesh, options, frame, false);
+}
+
+RoughnessProfile detail::roughness_profile_keeping_H(const Mesh& mesh, const ProfileOptions& options,
+                                                     const Normalization& frame, bool keep_H)
+{
     validate(options);
     const ProgressScope scope(options.progress ? options.progress : current_progress());
     check_cancelled(current_progress());
@@ -338,7 +370,7 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
     p.curvature_steep = field.steep;
     p.curvature_capped = field.capped;
     p.curvature_capped_vertices = field.capped_vertices;
-    profile_from_H(p, unit_data, adj, std::move(field.H), field.undefined, options);
+    profile_from_H(p, unit_data, adj, std::move(field.H), field.undefined, options, keep_H);
     return p;
 }
 

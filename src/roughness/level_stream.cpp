@@ -1,0 +1,144 @@
+#include "roughness/level_stream.h"
+
+#include "meshdiff/error.h"
+
+#include <omp.h>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace meshdiff::detail {
+
+namespace {
+
+// x ranks before y: larger |D| first, ties by id (the order of level_roughness() and trimmed_rms()).
+bool before(const RankedD& x, const RankedD& y)
+{
+    return x.a != y.a ? x.a > y.a : x.id < y.id;
+}
+
+}  // namespace
+
+std::size_t head_for(double fraction, std::size_t m)
+{
+    return std::size_t(std::ceil(fraction * double(m)));
+}
+
+LevelStream::LevelStream(std::size_t n_levels, std::size_t n_batches, std::size_t capacity,
+                         const std::vector<double>& values, const std::vector<double>* weights)
+    : n_levels_(n_levels),
+      n_batches_(n_batches),
+      capacity_(std::max<std::size_t>(capacity, 10)),
+      values_(values),
+      weights_(weights),
+      parts_(n_levels * n_batches),
+      seen_(n_batches, 0),
+      heads_(std::size_t(std::max(1, omp_get_max_threads())), std::vector<std::vector<RankedD>>(n_levels))
+{}
+
+void LevelStream::add(const DiskMeansBatch& batch)
+{
+    // Out of range only by a caller's mistake; the batch is then left out
+    // and sums() reports it (no throw on a worker thread).
+    if (batch.index >= n_batches_ || std::size_t(batch.worker) >= heads_.size()) return;
+    for (std::size_t li = 0; li < n_levels_; ++li) {
+        Part p;
+        std::vector<RankedD>& heap = heads_[std::size_t(batch.worker)][li];
+        for (std::size_t k = 0; k < batch.count; ++k) {
+            const double mean = batch.mean[li * batch.stride + k];
+            const std::uint32_t c = batch.centres[k];
+            const double d = values_[c] - mean;
+            if (std::isnan(d)) continue;
+            const double w = weights_ ? (*weights_)[c] : 1.0;
+            p.total.add(w * d * d);
+            p.wtotal.add(w);
+            ++p.used;
+            const RankedD x{std::abs(d), c, w};
+            if (heap.size() < capacity_) {
+                heap.push_back(x);
+                std::push_heap(heap.begin(), heap.end(), before);  // the front: the last in rank
+            } else if (before(x, heap.front())) {
+                std::pop_heap(heap.begin(), heap.end(), before);
+                heap.back() = x;
+                std::push_heap(heap.begin(), heap.end(), before);
+            }
+        }
+        parts_[batch.index * n_levels_ + li] = p;
+    }
+    seen_[batch.index] = 1;
+}
+
+LevelSums LevelStream::sums(std::size_t li) const
+{
+    if (std::find(seen_.begin(), seen_.end(), char(0)) != seen_.end())
+        throw InvalidArgumentError("level statistics: a batch of ring means was not folded in");
+    LevelSums s;
+    for (std::size_t b = 0; b < n_batches_; ++b) {  // batch order: the same at any thread count
+        const Part& p = parts_[b * n_levels_ + li];
+        s.total.add(p.total.s);
+        s.total.add(p.total.c);
+        s.wtotal.add(p.wtotal.s);
+        s.wtotal.add(p.wtotal.c);
+        s.used += p.used;
+    }
+    for (const auto& worker : heads_) s.head.insert(s.head.end(), worker[li].begin(), worker[li].end());
+    std::sort(s.head.begin(), s.head.end(), before);
+    if (s.head.size() > capacity_) s.head.resize(capacity_);
+    return s;
+}
+
+std::vector<RankedD> ranked_head(const std::vector<double>& D, const std::vector<double>* weights, std::size_t capacity)
+{
+    std::vector<RankedD> head;
+    for (std::size_t i = 0; i < D.size(); ++i)
+        if (!std::isnan(D[i])) head.push_back({std::abs(D[i]), std::uint32_t(i), weights ? (*weights)[i] : 1.0});
+    const std::size_t m = std::min(capacity, head.size());
+    std::partial_sort(head.begin(), head.begin() + std::ptrdiff_t(m), head.end(), before);
+    head.resize(m);
+    return head;
+}
+
+double streamed_trimmed_rms(const LevelSums& s, double trim, std::size_t* dropped)
+{
+    const std::size_t m = s.used;
+    const std::size_t k = std::min(m, head_for(trim, m));
+    if (dropped) *dropped = k;
+    if (k > s.head.size()) throw InvalidArgumentError("level statistics: the trim reaches beyond the ranked head");
+    if (k == m) return std::numeric_limits<double>::quiet_NaN();
+    // The kept sums: the totals less the dropped head, compensated (the
+    // rounding stays that of the sums, not of their difference).
+    CompensatedSum kept = s.total, wkept = s.wtotal;
+    for (std::size_t j = 0; j < k; ++j) {
+        const RankedD& x = s.head[j];
+        kept.add(-(x.w * x.a * x.a));
+        wkept.add(-x.w);
+    }
+    const double t = std::max(0.0, kept.value()), w = wkept.value();
+    return w > 0.0 ? std::sqrt(t / w) : std::numeric_limits<double>::quiet_NaN();
+}
+
+LevelRoughness streamed_level_roughness(int level, const LevelSums& s, double outlier_fraction, double trim)
+{
+    LevelRoughness r;
+    r.level = level;
+    r.vertices_used = s.used;
+    if (s.used == 0) return r;
+    const double total = s.total.value();
+    r.sigma = std::sqrt(total / double(s.used));
+    if (total > 0.0) {
+        const std::size_t k = std::max<std::size_t>(1, head_for(outlier_fraction, s.used));
+        if (k > s.head.size()) throw InvalidArgumentError("level statistics: the top share reaches beyond the head");
+        CompensatedSum top;
+        for (std::size_t j = 0; j < k; ++j) top.add(s.head[j].a * s.head[j].a);
+        r.top_share = top.value() / total;
+    }
+    const std::size_t worst = std::min<std::size_t>(10, s.head.size());
+    for (std::size_t j = 0; j < worst; ++j) r.worst_vertices.push_back(s.head[j].id);
+    if (trim > 0.0) {
+        const double t = streamed_trimmed_rms(s, trim, &r.trimmed);
+        r.sigma = std::isnan(t) ? 0.0 : t;
+    }
+    return r;
+}
+
+}  // namespace meshdiff::detail
