@@ -33,70 +33,95 @@ void sort_bucket(std::uint64_t* b, std::uint64_t* e)
     }
 }
 
-// The EdgeMap of mesh; with \p per_half_edge false, without edge_of and
-// opposite (unique_edges(), boundary_vertex_mask() and topology_report() need
-// neither).
-EdgeMap build_edge_map(const Mesh& mesh, bool per_half_edge)
+// The half-edges of a mesh sorted by edge: a counting sort on the lower end,
+// then a sort per bucket. Per half-edge (upper end << 33) | (3 f + k) << 1 |
+// (it starts at the lower end): in a bucket, the order of (edge, face,
+// corner). A vertex index is below 2^31 (Face), 3 f + k below 2^32.
+struct SortedHalfEdges
 {
-    const std::size_t n = mesh.n_vertices(), nf = mesh.n_faces();
-    if (3 * std::uint64_t(nf) >= EdgeMap::kNone)
-        throw InvalidMeshError(fmt::format("a mesh of {} faces has too many half-edges for an EdgeMap (at most {})", nf,
-                                           EdgeMap::kNone - 1));
-    // Counting sort by the lower end, then small sorts per bucket.
-    std::vector<std::uint32_t> start(n + 1, 0);
-    for (const Face& t : mesh.faces)
-        for (int k = 0; k < 3; ++k) {
-            const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
-            if (a != b) ++start[std::min(a, b) + 1];
+    std::vector<std::uint32_t> start;  // per lower end, into he
+    std::unique_ptr<std::uint64_t[]> he;
+
+    explicit SortedHalfEdges(const Mesh& mesh)
+    {
+        const std::size_t n = mesh.n_vertices(), nf = mesh.n_faces();
+        if (3 * std::uint64_t(nf) >= EdgeMap::kNone)
+            throw InvalidMeshError(fmt::format("a mesh of {} faces has too many half-edges for an EdgeMap (at most {})",
+                                               nf, EdgeMap::kNone - 1));
+        start.assign(n + 1, 0);
+        for (const Face& t : mesh.faces)
+            for (int k = 0; k < 3; ++k) {
+                const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
+                if (a != b) ++start[std::min(a, b) + 1];
+            }
+        for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+        he.reset(new std::uint64_t[start[n]]);
+        std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+        for (std::size_t f = 0; f < nf; ++f) {
+            const Face& t = mesh.faces[f];
+            for (std::uint32_t k = 0; k < 3; ++k) {
+                const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
+                if (a == b) continue;
+                const std::uint64_t h = 3 * std::uint32_t(f) + k;
+                he[fill[std::min(a, b)]++] = (std::uint64_t(std::max(a, b)) << 33) | (h << 1) | (a < b ? 1 : 0);
+            }
         }
-    for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
-    // Per half-edge (upper end << 33) | (3 f + k) << 1 | (it starts at the
-    // lower end): in a bucket, the order of (edge, face, corner). A vertex
-    // index is below 2^31 (Face), 3 f + k below 2^32.
-    const std::unique_ptr<std::uint64_t[]> he(new std::uint64_t[start[n]]);
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t f = 0; f < nf; ++f) {
-        const Face& t = mesh.faces[f];
-        for (std::uint32_t k = 0; k < 3; ++k) {
-            const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
-            if (a == b) continue;
-            const std::uint64_t h = 3 * std::uint32_t(f) + k;
-            he[fill[std::min(a, b)]++] = (std::uint64_t(std::max(a, b)) << 33) | (h << 1) | (a < b ? 1 : 0);
+        for (std::size_t v = 0; v < n; ++v) sort_bucket(he.get() + start[v], he.get() + start[v + 1]);
+    }
+    std::size_t size() const { return start.back(); }
+    std::uint32_t half_edge(std::size_t i) const { return std::uint32_t(he[i] >> 1); }
+    // Two half-edges in the same direction.
+    bool same_direction(std::size_t i, std::size_t j) const { return !((he[i] ^ he[j]) & 1); }
+
+    // f(a, b, i, j) for every edge (a, b), a < b, in the order (a, b): its
+    // half-edges are [i, j).
+    template <class F>
+    void for_each_edge(F&& f) const
+    {
+        for (std::size_t v = 0; v + 1 < start.size(); ++v) {
+            const std::uint32_t end = start[v + 1];
+            for (std::uint32_t i = start[v], j = i; i < end; i = j) {
+                const std::uint64_t b = he[i] >> 33;
+                for (; j < end && he[j] >> 33 == b; ++j) {}
+                f(std::uint32_t(v), std::uint32_t(b), i, j);
+            }
         }
     }
+};
+
+// The EdgeMap of mesh; with \p per_half_edge false, without edge_of and
+// opposite (unique_edges() and boundary_vertex_mask() need neither).
+EdgeMap build_edge_map(const Mesh& mesh, bool per_half_edge)
+{
+    const SortedHalfEdges s(mesh);
+    const std::size_t nf = mesh.n_faces();
     EdgeMap m;
-    m.half_edge.resize(start[n]);
-    m.edges.reserve(start[n] / 2 + 1);
-    m.offset.reserve(start[n] / 2 + 2);
+    m.half_edge.resize(s.size());
+    m.edges.reserve(s.size() / 2 + 1);
+    m.offset.reserve(s.size() / 2 + 2);
     if (per_half_edge) {
         m.edge_of.assign(3 * nf, EdgeMap::kNone);
         m.opposite.assign(3 * nf, EdgeMap::kNone);
     }
-    for (std::size_t v = 0; v < n; ++v) {
-        const std::uint32_t end = start[v + 1];
-        sort_bucket(he.get() + start[v], he.get() + end);
-        for (std::uint32_t i = start[v], j = i; i < end; i = j) {  // one edge: [i, j)
-            const std::uint64_t b = he[i] >> 33;
-            const auto e = std::uint32_t(m.edges.size());
-            for (; j < end && he[j] >> 33 == b; ++j) {
-                const auto h = std::uint32_t(he[j] >> 1);
-                m.half_edge[j] = h;
-                if (per_half_edge) m.edge_of[h] = e;
-            }
-            m.offset.push_back(i);
-            m.edges.push_back({std::uint32_t(v), std::uint32_t(b), m.half_edge[i] / 3});
-            m.boundary_edges += j - i == 1;
-            m.non_manifold_edges += j - i > 2;
-            if (j - i != 2) continue;
-            if (!((he[i] ^ he[i + 1]) & 1)) {  // two in the same direction
-                ++m.misoriented_edges;
-            } else if (per_half_edge) {
-                m.opposite[m.half_edge[i]] = m.half_edge[i + 1];
-                m.opposite[m.half_edge[i + 1]] = m.half_edge[i];
-            }
+    s.for_each_edge([&](std::uint32_t a, std::uint32_t b, std::uint32_t i, std::uint32_t j) {
+        const auto e = std::uint32_t(m.edges.size());
+        for (std::uint32_t k = i; k < j; ++k) {
+            m.half_edge[k] = s.half_edge(k);
+            if (per_half_edge) m.edge_of[m.half_edge[k]] = e;
         }
-    }
-    m.offset.push_back(start[n]);
+        m.offset.push_back(i);
+        m.edges.push_back({a, b, m.half_edge[i] / 3});
+        m.boundary_edges += j - i == 1;
+        m.non_manifold_edges += j - i > 2;
+        if (j - i != 2) return;
+        if (s.same_direction(i, i + 1)) {
+            ++m.misoriented_edges;
+        } else if (per_half_edge) {
+            m.opposite[m.half_edge[i]] = m.half_edge[i + 1];
+            m.opposite[m.half_edge[i + 1]] = m.half_edge[i];
+        }
+    });
+    m.offset.push_back(std::uint32_t(s.size()));
     return m;
 }
 
@@ -205,16 +230,6 @@ std::vector<char> boundary_vertex_mask(const Mesh& mesh)
 
 namespace {
 
-// The edge counts, and the ends of each edge united in comp.
-void edge_pass(const EdgeMap& m, UnionFind& comp, TopologyReport& r)
-{
-    r.edges = m.size();
-    r.boundary_edges = m.boundary_edges;
-    r.non_manifold_edges = m.non_manifold_edges;
-    r.orientation_conflicts = m.misoriented_edges;
-    for (const Edge& e : m.edges) comp.unite(e.a, e.b);
-}
-
 // Isolated vertices (in no face) and the components of the others.
 void count_components(const Mesh& mesh, UnionFind& comp, TopologyReport& r)
 {
@@ -234,19 +249,27 @@ void count_components(const Mesh& mesh, UnionFind& comp, TopologyReport& r)
 }
 
 // Boundary loops: connected components of the boundary-edge graph.
-void count_boundary_loops(std::size_t n, const EdgeMap& m, TopologyReport& r)
+class BoundaryLoops
 {
-    UnionFind bl(n);
-    std::vector<char> on_boundary(n, 0);
-    for (std::size_t e = 0; e < m.size(); ++e) {
-        if (m.count(e) != 1) continue;
-        const auto a = m.edges[e].a, b = m.edges[e].b;
-        on_boundary[a] = on_boundary[b] = 1;
-        bl.unite(a, b);
+public:
+    explicit BoundaryLoops(std::size_t n) : loops_(n), on_boundary_(n, 0) {}
+    void add(std::uint32_t a, std::uint32_t b)
+    {
+        on_boundary_[a] = on_boundary_[b] = 1;
+        loops_.unite(a, b);
     }
-    for (std::size_t v = 0; v < n; ++v)
-        if (on_boundary[v] && bl.find(std::uint32_t(v)) == v) ++r.boundary_loops;
-}
+    std::size_t count()
+    {
+        std::size_t c = 0;
+        for (std::size_t v = 0; v < on_boundary_.size(); ++v)
+            if (on_boundary_[v] && loops_.find(std::uint32_t(v)) == v) ++c;
+        return c;
+    }
+
+private:
+    UnionFind loops_;
+    std::vector<char> on_boundary_;
+};
 
 // Duplicate faces: same vertex set. The sorted corners of each face,
 // bucketed by the smallest (a counting sort), then the other two sorted
@@ -336,13 +359,24 @@ TopologyReport topology_report(const MeshData& data)
 
     // A Progress (progress.h) can stop the report between its serial steps.
     const Progress* progress = current_progress();
-    const EdgeMap edges = build_edge_map(mesh, false);  // no per-half-edge tables
-    check_cancelled(progress);
+    // One walk over the sorted half-edges, without an EdgeMap (a 2M-face
+    // mesh: 72 MB of edge tables it would hold beside the half-edges).
     UnionFind comp(n);
-    edge_pass(edges, comp, r);
+    {
+        const SortedHalfEdges s(mesh);
+        check_cancelled(progress);
+        BoundaryLoops loops(n);
+        s.for_each_edge([&](std::uint32_t a, std::uint32_t b, std::uint32_t i, std::uint32_t j) {
+            ++r.edges;
+            r.boundary_edges += j - i == 1;
+            r.non_manifold_edges += j - i > 2;
+            r.orientation_conflicts += j - i == 2 && s.same_direction(i, i + 1);
+            comp.unite(a, b);
+            if (j - i == 1) loops.add(a, b);
+        });
+        r.boundary_loops = loops.count();
+    }
     count_components(mesh, comp, r);
-    check_cancelled(progress);
-    count_boundary_loops(n, edges, r);
     check_cancelled(progress);
     count_duplicate_faces(mesh, r);
     check_cancelled(progress);
