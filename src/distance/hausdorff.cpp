@@ -120,21 +120,43 @@ struct Certification
         }
     }
 
-    // A cell per face of A, its corners' distances from \p vq.
-    void set_up_cells(const std::vector<ClosestPoint>& vq)
+    // The first round: a cell per face of A, its corners' distances from
+    // \p vq, bounded, and kept open if its bound exceeds the lower bound plus
+    // the tolerance. In chunks of A's faces, so that only the open cells are
+    // held, not a cell per face (a 2M-face mesh: 256 MB): the lower bound
+    // does not change within the round, so the open cells are those of one
+    // pass over all faces, in the same order.
+    void first_round(const std::vector<ClosestPoint>& vq)
     {
         stage.check();  // the serial set-up is checked between its steps
-        cells = std::vector<Cell>(a.n_faces());
-#pragma omp parallel for schedule(static)
-        for (std::size_t f = 0; f < a.n_faces(); ++f) {
-            Cell& c = cells[f];
-            for (std::size_t k = 0; k < 3; ++k) {
-                const auto v = std::size_t(a.faces[f][k]);
-                c.corner[k] = a.points[v];
-                c.d[k] = vq[v].distance;
-                c.closest[k] = vq[v].face;
+        const double threshold = best.d + tolerance(best.d);
+        constexpr std::size_t kChunk = std::size_t(1) << 16;
+        std::vector<Cell> chunk;
+        for (std::size_t first = 0; first < a.n_faces(); first += kChunk) {
+            const std::size_t m = std::min(kChunk, a.n_faces() - first);
+            chunk.assign(m, Cell{});
+#pragma omp parallel for schedule(dynamic, 256)
+            for (std::size_t i = 0; i < m; ++i) {
+                if (!stage.tick()) continue;
+                Cell& c = chunk[i];
+                const std::size_t f = first + i;
+                for (std::size_t k = 0; k < 3; ++k) {
+                    const auto v = std::size_t(a.faces[f][k]);
+                    c.corner[k] = a.points[v];
+                    c.d[k] = vq[v].distance;
+                    c.closest[k] = vq[v].face;
+                }
+                c.face = std::uint32_t(f);
+                detail::bound_cell(c, threshold, target);
             }
-            c.face = std::uint32_t(f);
+            stage.check();
+            r.bound_evaluations += m;
+            for (const Cell& c : chunk) {
+                if (c.upper <= threshold || c.depth >= kMaxDepth)
+                    upper_done = std::max(upper_done, c.upper);
+                else
+                    cells.push_back(c);
+            }
         }
     }
 
@@ -212,7 +234,6 @@ struct Certification
     // spent.
     void search()
     {
-        bound_and_prune(cells);
         const std::size_t chunk = options.max_round_triangles / 4;
         for (;;) {
             if (cells.empty()) {
@@ -360,8 +381,8 @@ CertifiedHausdorff detail::certified_hausdorff(const MeshData& a_data, const Mes
             fmt::format("certified_hausdorff: {} vertex closest points for {} vertices", vq.size(), a.n_vertices()));
     Certification s(a, b, b_index, options);
     s.set_up_lower_bound(seed, vq);
-    s.set_up_cells(vq);
     s.set_up_target();
+    s.first_round(vq);
     s.search();
     return s.finish();
 }
