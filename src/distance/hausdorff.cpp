@@ -181,7 +181,7 @@ struct Certification
         stage.check();
         target.nbr = detail::edge_neighbours(b);
         stage.check();
-        target.tris = detail::triangles_of(b);
+        target.tris = detail::Triangles(b_index);
     }
 
     // Bounds every cell; keeps those above lower + tolerance in `cells`.

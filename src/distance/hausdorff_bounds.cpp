@@ -12,18 +12,6 @@
 
 namespace meshdiff::detail {
 
-Triangles triangles_of(const Mesh& m)
-{
-    Triangles t(m.n_faces());
-#pragma omp parallel for schedule(static)
-    for (std::size_t f = 0; f < m.n_faces(); ++f) {
-        const Face& v = m.faces[f];
-        t[f] = {m.points[std::size_t(v[0])], m.points[std::size_t(v[1])], m.points[std::size_t(v[2])], false};
-        t[f].thin = is_thin_triangle(t[f].p0, t[f].p1, t[f].p2);
-    }
-    return t;
-}
-
 namespace {
 
 // The squared distances from the \p n points \p pts to triangle t, into
@@ -37,9 +25,9 @@ void squared_distances(const Vec3* pts, int n, const Triangle& t, double* d2)
     }
     PairsX4 in;
     for (int k = 0; k < 4; ++k) {
-        in.a[k] = t.p0.data();
-        in.b[k] = t.p1.data();
-        in.c[k] = t.p2.data();
+        in.a[k] = t.a.data();
+        in.b[k] = t.b.data();
+        in.c[k] = t.c.data();
     }
     double qx[4], qy[4], qz[4];
     for (int i0 = 0; i0 < n; i0 += 4) {

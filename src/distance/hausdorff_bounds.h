@@ -9,6 +9,7 @@
 #include "meshdiff/core/mesh.h"
 #include "meshdiff/geometry/closest_point.h"
 
+#include "geometry/bvh_build.h"
 #include "geometry/point_triangle_kernels.h"
 
 #include <array>
@@ -41,23 +42,26 @@ struct Cell
     double upper = kInf;  // its bound, once evaluated
 };
 
-// B's triangles, copied once for the bounds (closest_point_on_triangle()'s
-// primitives, with the thin-triangle test done once per triangle).
-struct Triangle
+// B's triangles as the bounds read them: the closest-point index's own
+// (closest_point_on_triangle()'s primitives, with the thin-triangle test done
+// once per triangle), by face, in place (a copy was 80 bytes a face).
+using Triangle = Tri;
+class Triangles
 {
-    Vec3 p0, p1, p2;
-    bool thin;
-};
-using Triangles = std::vector<Triangle>;
+public:
+    Triangles() = default;
+    explicit Triangles(const ClosestPointIndex& index) : bvh_(&bvh_of(index)) {}
+    const Triangle& operator[](std::size_t face) const { return bvh_->tris[bvh_->position_of[face]]; }
 
-//! The triangles of the faces of \p m, in face order.
-Triangles triangles_of(const Mesh& m);
+private:
+    const Bvh* bvh_ = nullptr;
+};
 
 //! Squared distance from p to triangle t: bitwise the square of
 //! closest_point_on_triangle()'s distance before its square root.
 inline double squared_distance(const Vec3& p, const Triangle& t)
 {
-    const Vec3 q = t.thin ? thin_triangle_point(p, t.p0, t.p1, t.p2) : triangle_point(p, t.p0, t.p1, t.p2);
+    const Vec3 q = t.thin ? thin_triangle_point(p, t.a, t.b, t.c) : triangle_point(p, t.a, t.b, t.c);
     return (p - q).squaredNorm();
 }
 
@@ -93,7 +97,7 @@ struct BoundsTarget
     std::vector<double> diameter;  //!< longest edge per face
     double longest = 0.0;          //!< longest edge of all faces
     Neighbours nbr;                //!< edge_neighbours(mesh)
-    Triangles tris;                //!< triangles_of(mesh)
+    Triangles tris;                //!< the index's triangles, by face
 };
 
 //! Sets \p c.upper to an upper bound of d(., B) over cell \p c, each step

@@ -464,6 +464,11 @@ void for_blocks(std::size_t n, F&& f)
 }
 }  // namespace
 
+const detail::Bvh& detail::bvh_of(const ClosestPointIndex& index)
+{
+    return *index.impl_;
+}
+
 std::vector<ClosestPoint> ClosestPointIndex::closest_points(const std::vector<Vec3>& queries) const
 {
     std::vector<ClosestPoint> out(queries.size());

@@ -42,6 +42,15 @@ namespace meshdiff {
 //! answer is the same (the bounds only order and prune the search). The index
 //! keeps its own copy of the triangles; the mesh may be destroyed afterwards.
 //! Queries are const and thread-safe.
+class ClosestPointIndex;
+
+namespace detail {
+struct Bvh;
+//! The index's tree and its triangles (src/geometry/bvh_build.h), for the
+//! library's own stages that read them in place (the certification's bounds).
+const Bvh& bvh_of(const ClosestPointIndex& index);
+}  // namespace detail
+
 class ClosestPointIndex
 {
 public:
@@ -103,6 +112,7 @@ public:
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
+    friend const detail::Bvh& detail::bvh_of(const ClosestPointIndex& index);
 };
 
 }  // namespace meshdiff
