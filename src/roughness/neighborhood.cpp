@@ -111,7 +111,6 @@ struct BatchBfs
     {
         const std::size_t n = adj.size();
         marks.assign(n, Marks<W>{});
-        nlist.resize(n + 1);
         sum.resize(std::size_t(lmax + 1) * kBatch);
         count.resize(std::size_t(lmax + 1) * kBatch);
         size.resize(std::size_t(lmax + 1) * kBatch);
@@ -286,11 +285,17 @@ struct BatchBfs
     std::size_t expand()
     {
         std::size_t n_new = 0;
-        std::uint32_t* const nl = nlist.data();
         const std::uint32_t* const off = adj.offset.data();
         const std::uint32_t* const idx = adj.index.data();
         Marks<W>* const mk = marks.data();
         const std::size_t nf = flist.size();
+        // The list is written at n_new once per offer: room for one more
+        // than the frontier's edges (a list of n per worker was 8 MB of a 1M
+        // mesh's two workers, mostly unused).
+        std::size_t offers = 1;
+        for (std::size_t q = 0; q < nf; ++q) offers += off[flist[q] + 1] - off[flist[q]];
+        if (nlist.size() < offers) nlist.resize(offers + offers / 2);
+        std::uint32_t* const nl = nlist.data();
 #if defined(__SSE2__)
         if constexpr (W == 2) {
             // Both words at once; a vertex is new when its next mask was

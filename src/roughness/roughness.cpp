@@ -353,7 +353,7 @@ RoughnessProfile detail::roughness_profile_keeping_H(const Mesh& mesh, const Pro
     RoughnessProfile p;
     p.vertices = mesh.n_vertices();
     p.normalization = frame;
-    const Mesh unit = apply_normalization(mesh, p.normalization);
+    Mesh unit = apply_normalization(mesh, p.normalization);
     check_cancelled(current_progress());  // the serial steps are checked in between
     const Adjacency adj = vertex_adjacency(unit);
     check_ball_work(unit, adj, options.radii);  // before any long work
@@ -365,6 +365,14 @@ RoughnessProfile detail::roughness_profile_keeping_H(const Mesh& mesh, const Pro
         const std::vector<Vec3> normals = vertex_normals(unit_data);
         return mean_curvature(unit, adj, normals, options.curvature);
     }();
+    // The rings read the points, the adjacency and unit_data's box (derived
+    // above, as its degenerate-face mask): the copy of the faces goes before
+    // them (24 MB a 1M mesh), unless the metric levels' vertex areas need it.
+    // unit_data derives nothing more from the mesh after this.
+    if (options.radii.empty()) {
+        (void)unit_data.box();  // derived already by the mask; made sure of
+        std::vector<Face>().swap(unit.faces);
+    }
     p.curvature_undefined = field.undefined;
     p.curvature_widened = field.widened;
     p.curvature_normal_rows_dropped = field.normal_rows_dropped;
