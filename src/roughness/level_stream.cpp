@@ -33,8 +33,20 @@ LevelStream::LevelStream(std::size_t n_levels, std::size_t n_batches, std::size_
       weights_(weights),
       parts_(n_levels * n_batches),
       seen_(n_batches, 0),
-      heads_(std::size_t(std::max(1, omp_get_max_threads())), std::vector<std::vector<RankedD>>(n_levels))
+      heads_(std::size_t(std::max(1, omp_get_max_threads())), std::vector<Head>(n_levels))
 {}
+
+void LevelStream::offer(Head& head, double a, std::uint32_t id) const
+{
+    // Equal to the floor still may rank before a kept one (a lower id).
+    if (a < head.floor) return;
+    head.items.push_back({a, id});
+    if (head.items.size() < capacity_ + capacity_ / 2 + 16) return;
+    auto first = [](const Candidate& x, const Candidate& y) { return x.a != y.a ? x.a > y.a : x.id < y.id; };
+    std::nth_element(head.items.begin(), head.items.begin() + std::ptrdiff_t(capacity_ - 1), head.items.end(), first);
+    head.items.resize(capacity_);
+    head.floor = head.items.back().a;  // the capacity-th in rank
+}
 
 void LevelStream::add(const DiskMeansBatch& batch)
 {
@@ -43,7 +55,7 @@ void LevelStream::add(const DiskMeansBatch& batch)
     if (batch.index >= n_batches_ || std::size_t(batch.worker) >= heads_.size()) return;
     for (std::size_t li = 0; li < n_levels_; ++li) {
         Part p;
-        std::vector<RankedD>& heap = heads_[std::size_t(batch.worker)][li];
+        Head& head = heads_[std::size_t(batch.worker)][li];
         for (std::size_t k = 0; k < batch.count; ++k) {
             const double mean = batch.mean[li * batch.stride + k];
             const std::uint32_t c = batch.centres[k];
@@ -53,15 +65,7 @@ void LevelStream::add(const DiskMeansBatch& batch)
             p.total.add(w * d * d);
             p.wtotal.add(w);
             ++p.used;
-            const RankedD x{std::abs(d), c, w};
-            if (heap.size() < capacity_) {
-                heap.push_back(x);
-                std::push_heap(heap.begin(), heap.end(), before);  // the front: the last in rank
-            } else if (before(x, heap.front())) {
-                std::pop_heap(heap.begin(), heap.end(), before);
-                heap.back() = x;
-                std::push_heap(heap.begin(), heap.end(), before);
-            }
+            offer(head, std::abs(d), c);
         }
         parts_[batch.index * n_levels_ + li] = p;
     }
@@ -81,9 +85,11 @@ LevelSums LevelStream::sums(std::size_t li) const
         s.wtotal.add(p.wtotal.c);
         s.used += p.used;
     }
-    for (const auto& worker : heads_) s.head.insert(s.head.end(), worker[li].begin(), worker[li].end());
-    std::sort(s.head.begin(), s.head.end(), before);
-    if (s.head.size() > capacity_) s.head.resize(capacity_);
+    for (const auto& worker : heads_)
+        for (const Candidate& x : worker[li].items) s.head.push_back({x.a, x.id, weights_ ? (*weights_)[x.id] : 1.0});
+    const std::size_t m = std::min(capacity_, s.head.size());
+    std::partial_sort(s.head.begin(), s.head.begin() + std::ptrdiff_t(m), s.head.end(), before);
+    s.head.resize(m);
     return s;
 }
 
