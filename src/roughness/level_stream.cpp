@@ -104,6 +104,38 @@ std::vector<RankedD> ranked_head(const std::vector<double>& D, const std::vector
     return head;
 }
 
+void fold_levels(const MeshData& data, const Adjacency& adjacency, const std::vector<double>& values,
+                 const std::vector<double>* weights, const std::vector<int>& levels,
+                 std::initializer_list<double> fractions, bool store,
+                 const std::function<void(std::size_t li, const LevelSums& sums, std::vector<double>& D)>& level)
+{
+    if (levels.empty()) return;
+    const std::size_t n = values.size(), n_levels = levels.size();
+    const auto centres =
+        std::size_t(std::count_if(values.begin(), values.end(), [](double v) { return !std::isnan(v); }));
+    std::size_t head = 10;
+    for (const double f : fractions)
+        if (f > 0.0) head = std::max(head, head_for(f, centres));
+    // No levels x n vector of D unless it is asked for, or the head is large
+    // beside the mesh (it is then ranked from D, not folded per worker).
+    const std::size_t limit = head_limit(n);
+    LevelStream stream(n_levels, disk_mean_batch_count(values), std::min(head, limit), values, weights);
+    std::vector<std::vector<double>> D(store || head > limit ? n_levels : 0);
+    for (auto& d : D) d.assign(n, std::numeric_limits<double>::quiet_NaN());
+    disk_means_batches(data, adjacency, values, levels, false, [&](const DiskMeansBatch& b) {
+        stream.add(b);
+        for (std::size_t li = 0; li < D.size(); ++li)
+            for (std::size_t k = 0; k < b.count; ++k)
+                D[li][b.centres[k]] = values[b.centres[k]] - b.mean[li * b.stride + k];  // NaN propagates
+    });
+    std::vector<double> none;
+    for (std::size_t li = 0; li < n_levels; ++li) {
+        LevelSums sums = stream.sums(li);
+        if (head > limit) sums.head = ranked_head(D[li], weights, head);
+        level(li, sums, store ? D[li] : none);
+    }
+}
+
 double streamed_trimmed_rms(const LevelSums& s, double trim, std::size_t* dropped)
 {
     const std::size_t m = s.used;

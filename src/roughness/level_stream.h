@@ -18,6 +18,8 @@
 #include "roughness/disk_means_batches.h"
 
 #include <cstdint>
+#include <functional>
+#include <initializer_list>
 #include <vector>
 
 namespace meshdiff::detail {
@@ -100,6 +102,19 @@ inline std::size_t head_limit(std::size_t n)
 //! \p capacity long: what LevelStream folds, for a head above head_limit().
 std::vector<RankedD> ranked_head(const std::vector<double>& D, const std::vector<double>* weights,
                                  std::size_t capacity);
+
+//! D_L = values[c] - (the mean of the values over N_L(c)) at each of
+//! \p levels, over the centres c with a defined value, folded batch by batch
+//! (weighted by \p weights, 1 without): \p level is then called per level, in
+//! order, with the sums, whose head is long enough for each of \p fractions of
+//! the centres (ceil(f x centres), at least 10), and with D (NaN where
+//! undefined; the callee may move it), empty unless \p store. D is also stored
+//! when the head is longer than head_limit(), and ranked from; either way the
+//! sums are the same to the last bit.
+void fold_levels(const MeshData& data, const Adjacency& adjacency, const std::vector<double>& values,
+                 const std::vector<double>* weights, const std::vector<int>& levels,
+                 std::initializer_list<double> fractions, bool store,
+                 const std::function<void(std::size_t li, const LevelSums& sums, std::vector<double>& D)>& level);
 
 //! sigma, top share and worst vertices from \p s as level_roughness() does,
 //! then the trim as trimmed_rms() (unweighted when \p weighted is false).

@@ -140,30 +140,13 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
                     break;
                 }
     if (!r.levels.empty()) {
-        // Folded batch by batch (level_stream.h): no levels x n means unless
-        // the maps are kept or the trim's head is large beside the mesh; the
-        // same sums either way.
-        const auto centres = std::size_t(std::count_if(F.begin(), F.end(), [](double f) { return !std::isnan(f); }));
-        const std::size_t head = std::max<std::size_t>(10, detail::head_for(trim, centres));
-        const std::size_t head_limit = detail::head_limit(n);
-        const bool store = keep_vertex_data || head > head_limit;
-        detail::LevelStream stream(r.levels.size(), detail::disk_mean_batch_count(F), std::min(head, head_limit), F,
-                                   &area);
-        std::vector<std::vector<double>> D(store ? r.levels.size() : 0);
-        for (auto& d : D) d.assign(n, kNaN);
-        detail::disk_means_batches(unit, adj, F, r.levels, false, [&](const detail::DiskMeansBatch& b) {
-            stream.add(b);
-            for (std::size_t k = 0; k < D.size(); ++k)
-                for (std::size_t j = 0; j < b.count; ++j)
-                    D[k][b.centres[j]] = F[b.centres[j]] - b.mean[k * b.stride + j];  // NaN propagates
-        });
-        for (std::size_t k = 0; k < r.levels.size(); ++k) {
-            detail::LevelSums sums = stream.sums(k);
-            if (head > head_limit) sums.head = detail::ranked_head(D[k], &area, head);
-            r.rms.push_back(sums.used ? detail::streamed_trimmed_rms(sums, trim) : kNaN);
-            r.used.push_back(sums.used);
-            if (keep_vertex_data) r.vertex.push_back(std::move(D[k]));
-        }
+        // Folded batch by batch (level_stream.h): D stored only for the maps.
+        detail::fold_levels(unit, adj, F, &area, r.levels, {trim}, keep_vertex_data,
+                            [&](std::size_t, const detail::LevelSums& sums, std::vector<double>& D) {
+                                r.rms.push_back(sums.used ? detail::streamed_trimmed_rms(sums, trim) : kNaN);
+                                r.used.push_back(sums.used);
+                                if (keep_vertex_data) r.vertex.push_back(std::move(D));
+                            });
     }
     if (parts.global && pa.has_global && pb.has_global) {
         r.has_global = true;

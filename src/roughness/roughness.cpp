@@ -283,37 +283,20 @@ void profile_from_H(RoughnessProfile& p, const MeshData& unit, const Adjacency& 
     const std::size_t n_levels = options.levels.size();
     p.levels.resize(n_levels);
     // The ring levels' statistics are folded batch by batch (level_stream.h):
-    // no levels x n means unless D itself is needed (kept, or resampled by
-    // the bootstrap), or the ranked head of |D| the top share and the trim
-    // need is large beside the mesh (it is then ranked from the stored D).
-    // Either way the same sums: the same bits with or without D stored.
-    const auto centres = std::size_t(std::count_if(H.begin(), H.end(), [](double h) { return !std::isnan(h); }));
-    const std::size_t head = std::max({std::size_t(10), detail::head_for(options.outlier_fraction, centres),
-                                       options.trim > 0.0 ? detail::head_for(options.trim, centres) : std::size_t(0)});
-    const std::size_t head_limit = detail::head_limit(n);
-    const bool store_D = options.keep_vertex_data || options.bootstrap > 0 || head > head_limit;
-    if (n_levels > 0) {
-        detail::LevelStream stream(n_levels, detail::disk_mean_batch_count(H), std::min(head, head_limit), H);
-        std::vector<std::vector<double>> D(store_D ? n_levels : 0);
-        for (auto& d : D) d.assign(n, std::numeric_limits<double>::quiet_NaN());
-        detail::disk_means_batches(unit, adj, H, options.levels, false, [&](const detail::DiskMeansBatch& b) {
-            stream.add(b);
-            for (std::size_t li = 0; li < D.size(); ++li)
-                for (std::size_t k = 0; k < b.count; ++k)
-                    D[li][b.centres[k]] = H[b.centres[k]] - b.mean[li * b.stride + k];  // NaN propagates
-        });
-        if (options.keep_vertex_data) p.D.resize(n_levels);
-        for (std::size_t li = 0; li < n_levels; ++li) {
-            detail::LevelSums sums = stream.sums(li);
-            if (head > head_limit) sums.head = detail::ranked_head(D[li], nullptr, head);
+    // D itself is stored only when kept or resampled by the bootstrap; the
+    // same sums, so the same bits, either way.
+    if (options.keep_vertex_data) p.D.resize(n_levels);
+    detail::fold_levels(
+        unit, adj, H, nullptr, options.levels, {options.outlier_fraction, options.trim},
+        options.keep_vertex_data || options.bootstrap > 0,
+        [&](std::size_t li, const detail::LevelSums& sums, std::vector<double>& D) {
             LevelRoughness& lr = p.levels[li];
             lr = detail::streamed_level_roughness(options.levels[li], sums, options.outlier_fraction, options.trim);
             lr.no_neighborhood = (n - undefined) - lr.vertices_used;
             if (options.bootstrap > 0)
-                lr.sigma_interval = bootstrap_interval(D[li], options.trim, options.bootstrap, options.bootstrap_seed);
-            if (options.keep_vertex_data) p.D[li] = std::move(D[li]);
-        }
-    }
+                lr.sigma_interval = bootstrap_interval(D, options.trim, options.bootstrap, options.bootstrap_seed);
+            if (options.keep_vertex_data) p.D[li] = std::move(D);
+        });
     global_and_radii(p, unit, adj, H, undefined, options);
     if (options.keep_vertex_data || keep_H) p.H = std::move(H);
 }
