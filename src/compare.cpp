@@ -2,6 +2,7 @@
 
 #include "meshdiff/error.h"
 
+#include "distance/two_directions.h"
 #include "roughness/profile_keeping_h.h"
 
 #include <fmt/format.h>
@@ -80,8 +81,10 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
 
 // The two sigma profiles, their distance and, if asked for, the local
 // difference (options checked).
+// The index of the original the local difference builds is left in
+// \p index_a, for the surface distance's backward direction.
 void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, const LoadedMesh& b, const MeshData& b_data,
-                const CompareOptions& options)
+                const CompareOptions& options, std::optional<ClosestPointIndex>& index_a)
 {
     // The local difference needs H per vertex, not D: the profiles keep H
     // only (their ring levels then fold D batch by batch, level_stream.h).
@@ -117,8 +120,7 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, cons
     LocalRoughnessParts rings;
     rings.radii = false;
     {
-        std::optional<ClosestPointIndex> own;
-        const ClosestPointIndex& index = index_of(options.index_original, a_data, own, "original");
+        const ClosestPointIndex& index = index_of(options.index_original, a_data, index_a, "original");
         c.local_roughness = local_roughness_distance(b.mesh, *c.processed_profile, a.mesh, *c.original_profile, index,
                                                      options.local_trim, options.vertex_distances, rings);
     }
@@ -199,14 +201,20 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         c.original_corsini = corsini_profile(a.mesh, co);
         c.processed_corsini = corsini_profile(b.mesh, co);
         c.corsini = corsini_distance(*c.original_corsini, *c.processed_corsini, options.k);
-    } else if (options.roughness) {
-        sigma_half(c, a, a_data, b, b_data, options);
     }
+    // The original's index, built once: by the local difference (when asked
+    // for) and kept for the distances to the original.
+    std::optional<ClosestPointIndex> index_a;
+    if (options.roughness && options.measure != RoughnessMeasure::Corsini)
+        sigma_half(c, a, a_data, b, b_data, options, index_a);
     if (options.distance) {
-        set_distance(c, surface_distance(a.mesh, b.mesh, distance_options(options, &a_data, &b_data)));
+        set_distance(
+            c, detail::two_directions(a.mesh, b.mesh, distance_options(options, &a_data, &b_data), options.keep_samples,
+                                      options.keep_samples, false, detail::kSampleChunk, &index_a));
     } else if (options.vertex_distances) {
-        c.processed_vertex_distance =
-            vertex_distances(b.mesh, a.mesh, ClosestPointIndex(a_data), c.processed_vertex_signed_distance);
+        if (!index_a) index_a.emplace(a_data);
+        c.processed_vertex_distance = vertex_distances(b.mesh, a.mesh, *index_a, c.processed_vertex_signed_distance);
+        index_a.reset();
         c.original_vertex_distance =
             vertex_distances(a.mesh, b.mesh, ClosestPointIndex(b_data), c.original_vertex_signed_distance);
     }

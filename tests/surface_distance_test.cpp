@@ -5,6 +5,7 @@
 #include "meshdiff/studies/shapes.h"
 
 #include "distance/surface_distance_chunks.h"
+#include "distance/two_directions.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -777,5 +778,46 @@ TEST(SurfaceDistance, CallerBuiltIndexesGiveTheSameResultsBitForBit)
         expect_same_vector(own.forward_samples.distances, given.forward_samples.distances);
         o.index_a = &ib;  // an index of the other mesh
         EXPECT_THROW(surface_distance(coarse, fine, o), InvalidArgumentError);
+    }
+}
+
+TEST(SurfaceDistance, AHandedOverIndexOfAGivesTheSameResultsBitForBitAndIsFreed)
+{
+    // compare_meshes() hands the local difference's index of the original to
+    // the surface distance: the backward direction runs first on it and
+    // frees it; the two directions' results are those of the index built
+    // inside, to the last bit.
+    const Mesh coarse = icosphere(0).mesh;
+    const Mesh fine = icosphere(2, 1.05).mesh;
+    SummaryOptions so;
+    so.fscore_thresholds = {0.01, 0.05};
+    so.histogram_bins = 5;
+    HausdorffOptions certify;
+    certify.relative_tolerance = 1e-3;
+    for (const bool keep : {false, true}) {
+        DistanceOptions o = distance_options({}, certify, so);
+        o.vertex_distances = true;
+        o.keep_samples = keep;
+        const SurfaceDistance own = surface_distance(coarse, fine, o);
+        std::optional<ClosestPointIndex> handed;
+        handed.emplace(coarse);
+        const SurfaceDistance given =
+            detail::two_directions(coarse, fine, o, keep, keep, false, detail::kSampleChunk, &handed);
+        EXPECT_FALSE(handed.has_value());  // freed once the backward direction is done
+        expect_every_bit(own, given);
+        expect_same_vector(own.original_vertex_distance, given.original_vertex_distance);
+        expect_same_vector(own.processed_vertex_distance, given.processed_vertex_distance);
+        expect_same_vector(own.processed_vertex_signed_distance, given.processed_vertex_signed_distance);
+        expect_same_vector(own.backward_samples.distances, given.backward_samples.distances);
+        // An empty one is no index: built inside as without.
+        const SurfaceDistance empty =
+            detail::two_directions(coarse, fine, o, keep, keep, false, detail::kSampleChunk, &handed);
+        expect_every_bit(own, empty);
+        // Beside DistanceOptions::index_a it is a caller's mistake.
+        const ClosestPointIndex ia(coarse);
+        o.index_a = &ia;
+        handed.emplace(coarse);
+        EXPECT_THROW(detail::two_directions(coarse, fine, o, keep, keep, false, detail::kSampleChunk, &handed),
+                     InvalidArgumentError);
     }
 }

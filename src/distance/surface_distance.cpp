@@ -253,7 +253,13 @@ struct DirectionTarget
     const ClosestPointIndex* index = nullptr;  // own or the caller's
     std::optional<PointCloudIndex> cloud;
     std::optional<PseudoNormals> normals;
-    std::string unsigned_reason;  // why there is no sign
+    std::future<std::optional<PseudoNormals>> pending;  // the normals while they are made
+    std::string unsigned_reason;                        // why there is no sign
+    // The pseudo-normals, once made.
+    void take_normals()
+    {
+        if (pending.valid()) normals = pending.get();
+    }
 };
 
 // The index of the mesh t.to: the caller's (its face count checked), or built.
@@ -283,12 +289,11 @@ void make_target(const DirectionTask& t, DirectionTarget& g)
     } else {
         // The sign (signed_distance.h): from the closest faces of the same
         // queries. The pseudo-normals (serial) are made on another thread
-        // while the index is built.
-        auto made_normals =
-            std::async(omp_get_max_threads() > 1 && !t.index ? std::launch::async : std::launch::deferred,
-                       [&] { return pseudo_normals(t.to_data, t.to_name, &g.unsigned_reason); });
+        // while the index is built (or, when it was given, while the
+        // vertices' closest points are found): take_normals() waits for them.
+        g.pending = std::async(omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred,
+                               [&t, &g] { return pseudo_normals(t.to_data, t.to_name, &g.unsigned_reason); });
         build_index(t, g);
-        g.normals = made_normals.get();
     }
 }
 
@@ -329,6 +334,7 @@ DirectionResult one_direction(const DirectionTask& t)
     const bool meshes = !t.from_cloud && !t.to_cloud;
     std::vector<ClosestPoint> vq;  // from's vertices: samples and certification (two meshes)
     if (meshes && o.hausdorff) vq = g.index->closest_points(t.from.points);
+    g.take_normals();
     const std::vector<ClosestPoint>* vertex_closest = meshes && o.hausdorff ? &vq : nullptr;
     if (meshes && !t.keep) {
         // The same statistics without keeping the samples (freed before the certification).
@@ -407,7 +413,8 @@ const MeshData& data_of(const Mesh& mesh, const MeshData* given, std::optional<M
 }  // namespace
 
 SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const DistanceOptions& options, bool keep_forward,
-                                       bool keep_backward, bool clouds, std::size_t chunk)
+                                       bool keep_backward, bool clouds, std::size_t chunk,
+                                       std::optional<ClosestPointIndex>* handed_a)
 {
     if (chunk == 0 || chunk % kQueryBlock != 0)
         throw InvalidArgumentError(
@@ -441,16 +448,42 @@ SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const Dista
     std::vector<double> thresholds;  // absolute
     for (double t : options.summary.fscore_thresholds) thresholds.push_back(t * diagonal);
 
+    // An index of A handed over is used by the backward direction, which
+    // then runs first, and freed before the forward one (the two directions
+    // are independent: the order changes no bit).
+    const bool handed = handed_a && handed_a->has_value();
+    if (handed && (cloud_a || options.index_a))
+        throw InvalidArgumentError(
+            "surface_distance: an index of A handed over with DistanceOptions::index_a set "
+            "or A a point cloud");
+    auto forward = [&] {
+        return one_direction({da, db, a, b, cloud_a, cloud_b, "the processed mesh", options, sampling, thresholds,
+                              keep_forward, chunk, cloud_b ? nullptr : options.index_b});
+    };
+    auto backward = [&] {
+        DirectionResult k = one_direction({db, da, b, a, cloud_b, cloud_a, "the original mesh", options, sampling,
+                                           thresholds, keep_backward, chunk,
+                                           handed    ? &**handed_a
+                                           : cloud_a ? nullptr
+                                                     : options.index_a});
+        if (handed) handed_a->reset();
+        return k;
+    };
+    DirectionResult k, f;
+    if (handed) {
+        k = backward();
+        f = forward();
+    } else {
+        f = forward();
+        k = backward();
+    }
+
     SurfaceDistance r;
-    DirectionResult f = one_direction({da, db, a, b, cloud_a, cloud_b, "the processed mesh", options, sampling,
-                                       thresholds, keep_forward, chunk, cloud_b ? nullptr : options.index_b});
     r.forward = std::move(f.stats);
     r.forward_samples = std::move(f.samples);
     r.original_vertex_distance = std::move(f.vertex_distance);
     r.original_vertex_signed_distance = std::move(f.vertex_signed_distance);
     r.forward_hausdorff = std::move(f.certified);
-    DirectionResult k = one_direction({db, da, b, a, cloud_b, cloud_a, "the original mesh", options, sampling,
-                                       thresholds, keep_backward, chunk, cloud_a ? nullptr : options.index_a});
     r.backward = std::move(k.stats);
     r.backward_samples = std::move(k.samples);
     r.processed_vertex_distance = std::move(k.vertex_distance);

@@ -10,6 +10,7 @@
 #include "distance/surface_distance_chunks.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,9 +26,14 @@ namespace meshdiff::detail {
 //! without, every input is a mesh (validate()). The samples of the forward
 //! (backward) direction are kept with \p keep_forward (\p keep_backward);
 //! otherwise, between two meshes, they are made and queried \p chunk at a
-//! time (a positive multiple of kQueryBlock).
+//! time (a positive multiple of kQueryBlock). An index of A the caller built
+//! (\p handed_a, when it holds one; DistanceOptions::index_a then unset) is
+//! handed over: the backward direction runs first on it and frees it, so that
+//! it is not built twice nor held beside B's (compare_meshes(): the local
+//! difference's index of the original).
 SurfaceDistance two_directions(const Mesh& a, const Mesh& b, const DistanceOptions& options, bool keep_forward,
-                               bool keep_backward, bool clouds, std::size_t chunk = kSampleChunk);
+                               bool keep_backward, bool clouds, std::size_t chunk = kSampleChunk,
+                               std::optional<ClosestPointIndex>* handed_a = nullptr);
 
 //! \p r as the deprecated positional overloads return it: the per-vertex
 //! distances under their 0.2 names (a_/b_vertex_distance and the signed
