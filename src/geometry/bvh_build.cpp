@@ -37,6 +37,11 @@ struct Box
         lo = lo.cwiseMin(b.lo);
         hi = hi.cwiseMax(b.hi);
     }
+    void grow(const Vec3& l, const Vec3& h)
+    {
+        lo = lo.cwiseMin(l);
+        hi = hi.cwiseMax(h);
+    }
     double half_area() const
     {
         if (!(hi.x() >= lo.x())) return 0.0;
@@ -85,38 +90,70 @@ struct Part
     std::vector<Task> stack;
 };
 
-// The triangles of the mesh, by face, with their boxes, centroids and areas.
-// Per triangle, independent: in parallel (as the loops after the tree).
-void set_up_triangles(const Mesh& mesh, std::vector<Tri>& tris, std::vector<Box>& boxes, std::vector<Vec3>& centroid,
-                      std::vector<double>& area)
+// What the build reads of a face: its box, centroid and area. Not zeroed
+// when allocated (set_up_faces() writes every one, in parallel).
+struct FaceFacts
+{
+    FaceFacts() {}
+    Vec3 lo, hi, centroid;
+    double area;
+};
+
+// The corner k of face f.
+inline const Vec3& corner(const Mesh& mesh, std::uint32_t f, int k)
+{
+    return mesh.points[std::size_t(mesh.faces[f][k])];
+}
+
+// The facts of every face. Per face, independent: in parallel (as the loops
+// after the tree).
+void set_up_faces(const Mesh& mesh, std::vector<FaceFacts>& facts)
 {
     const std::size_t n = mesh.n_faces();
 #pragma omp parallel for schedule(static)
     for (std::size_t f = 0; f < n; ++f) {
-        const Face& t = mesh.faces[f];
-        Tri& tri = tris[f];
-        tri.a = mesh.points[std::size_t(t[0])];
-        tri.b = mesh.points[std::size_t(t[1])];
-        tri.c = mesh.points[std::size_t(t[2])];
-        tri.face = std::uint32_t(f);
-        tri.thin = detail::is_thin_triangle(tri.a, tri.b, tri.c);
-
-        boxes[f].grow(tri.a);
-        boxes[f].grow(tri.b);
-        boxes[f].grow(tri.c);
-        centroid[f] = (tri.a + tri.b + tri.c) / 3.0;
-        area[f] = 0.5 * (tri.b - tri.a).cross(tri.c - tri.a).norm();
+        const Vec3& a = corner(mesh, std::uint32_t(f), 0);
+        const Vec3& b = corner(mesh, std::uint32_t(f), 1);
+        const Vec3& c = corner(mesh, std::uint32_t(f), 2);
+        Box box;
+        box.grow(a);
+        box.grow(b);
+        box.grow(c);
+        FaceFacts& x = facts[f];
+        x.lo = box.lo;
+        x.hi = box.hi;
+        x.centroid = (a + b + c) / 3.0;
+        x.area = 0.5 * (b - a).cross(c - a).norm();
     }
 }
 
-// The growth of the tree: the per-triangle data it reads, the permutation of
-// the triangles (`order`, by face) it sorts into leaf order, and the progress.
+// The triangles in leaf order (position i holds face order[i]) and their
+// positions by face, in parallel.
+void set_up_triangles(const Mesh& mesh, const std::vector<std::uint32_t>& order, Bvh& out)
+{
+    const std::size_t n = order.size();
+    out.tris.resize(n);
+    out.position_of.resize(n);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t f = order[i];
+        Tri& tri = out.tris[i];
+        tri.a = corner(mesh, f, 0);
+        tri.b = corner(mesh, f, 1);
+        tri.c = corner(mesh, f, 2);
+        tri.face = f;
+        tri.thin = detail::is_thin_triangle(tri.a, tri.b, tri.c);
+        out.position_of[f] = std::uint32_t(i);
+    }
+}
+
+// The growth of the tree: the mesh and the per-face facts it reads, the
+// permutation of the faces (`order`) it sorts into leaf order, and the
+// progress.
 struct Builder
 {
-    const std::vector<Tri>& tris;
-    const std::vector<Box>& boxes;
-    const std::vector<Vec3>& centroid;
-    const std::vector<double>& area;
+    const Mesh& mesh;
+    const std::vector<FaceFacts>& facts;
     std::vector<std::uint32_t>& order;
     StageProgress& stage;
 
@@ -132,16 +169,13 @@ struct Builder
 bool Builder::fit_obb(std::uint32_t begin, std::uint32_t end, Obb& out) const
 {
     Vec3 mean = Vec3::Zero();
-    for (std::uint32_t i = begin; i < end; ++i) {
-        const Tri& t = tris[order[i]];
-        mean += t.a + t.b + t.c;
-    }
+    for (std::uint32_t i = begin; i < end; ++i)
+        mean += corner(mesh, order[i], 0) + corner(mesh, order[i], 1) + corner(mesh, order[i], 2);
     mean /= 3.0 * double(end - begin);
     Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
     for (std::uint32_t i = begin; i < end; ++i) {
-        const Tri& t = tris[order[i]];
-        for (const Vec3* q : {&t.a, &t.b, &t.c}) {
-            const Vec3 d = *q - mean;
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 d = corner(mesh, order[i], k) - mean;
             cov += d * d.transpose();
         }
     }
@@ -158,9 +192,9 @@ bool Builder::fit_obb(std::uint32_t begin, std::uint32_t end, Obb& out) const
     const std::array<Vec3, 3> ax{a0, a1, a2};
     Vec3 lo = Vec3::Constant(kInf), hi = Vec3::Constant(-kInf);
     for (std::uint32_t i = begin; i < end; ++i) {
-        const Tri& t = tris[order[i]];
-        for (const Vec3* q : {&t.a, &t.b, &t.c}) {
-            const Vec3 s(ax[0].dot(*q), ax[1].dot(*q), ax[2].dot(*q));
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& q = corner(mesh, order[i], k);
+            const Vec3 s(ax[0].dot(q), ax[1].dot(q), ax[2].dot(q));
             lo = lo.cwiseMin(s);
             hi = hi.cwiseMax(s);
         }
@@ -199,13 +233,13 @@ std::uint32_t Builder::split(const Task task, const Box& cbox)
         // others to kBins - 1 (the finite case is untouched).
         const double scale = kBins / ext[axis];
         auto bin_of = [&](std::uint32_t f) {
-            const double x = (centroid[f][axis] - cbox.lo[axis]) * scale;
+            const double x = (facts[f].centroid[axis] - cbox.lo[axis]) * scale;
             if (!(x >= 0.0)) return 0;
             return x < double(kBins) ? std::min(kBins - 1, int(x)) : kBins - 1;
         };
         for (std::uint32_t i = task.begin; i < task.end; ++i) {
             const int b = bin_of(order[i]);
-            bin_box[std::size_t(b)].grow(boxes[order[i]]);
+            bin_box[std::size_t(b)].grow(facts[order[i]].lo, facts[order[i]].hi);
             ++bin_count[std::size_t(b)];
         }
         std::array<double, kBins> right_cost{};
@@ -239,8 +273,8 @@ std::uint32_t Builder::split(const Task task, const Box& cbox)
         } else {
             std::nth_element(order.begin() + task.begin, order.begin() + mid, order.begin() + task.end,
                              [&](std::uint32_t x, std::uint32_t y) {
-                                 return centroid[x][axis] < centroid[y][axis] ||
-                                        (centroid[x][axis] == centroid[y][axis] && x < y);
+                                 const double cx = facts[x].centroid[axis], cy = facts[y].centroid[axis];
+                                 return cx < cy || (cx == cy && x < y);
                              });
         }
     }
@@ -253,8 +287,9 @@ void Builder::process(const Task task, Part& out)
 {
     Box box, cbox;
     for (std::uint32_t i = task.begin; i < task.end; ++i) {
-        box.grow(boxes[order[i]]);
-        cbox.grow(centroid[order[i]]);
+        const FaceFacts& x = facts[order[i]];
+        box.grow(x.lo, x.hi);
+        cbox.grow(x.centroid);
     }
     Node& node = out.nodes[task.node];
     for (int k = 0; k < 3; ++k) {
@@ -263,7 +298,7 @@ void Builder::process(const Task task, Part& out)
     }
     const std::uint32_t count = task.end - task.begin;
     double tri_area = 0.0;
-    for (std::uint32_t i = task.begin; i < task.end; ++i) tri_area += area[order[i]];
+    for (std::uint32_t i = task.begin; i < task.end; ++i) tri_area += facts[order[i]].area;
     if (box.half_area() > kObbTryRatio * tri_area) {
         Obb obb;
         if (fit_obb(task.begin, task.end, obb)) {
@@ -462,36 +497,12 @@ struct Collapse
     }
 };
 
-// The tables of `out` from the grown tree and the permutation `order` of the
-// triangles into leaf order: the triangles in that order, the 4-wide tree
-// with its oriented boxes, and the parent, leaf and position tables.
-void make_tables(Part& tree, const std::vector<std::uint32_t>& order, Bvh& out)
+// The tables of `out` from the grown tree (its triangles already in leaf
+// order): the 4-wide tree with its oriented boxes, and the parent and leaf
+// tables.
+void make_tables(Part& tree, Bvh& out)
 {
-    const std::size_t n = order.size();
-    // Into leaf order in place, cycle by cycle (a copy held both orders at
-    // once: 160 MB a 2M-face mesh): position i takes the triangle at
-    // position order[i], which is still unmoved when the cycle reaches it.
-    {
-        std::vector<bool> placed(n, false);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (placed[i]) continue;
-            const Tri first = out.tris[i];
-            for (std::size_t at = i;;) {
-                const std::size_t from = order[at];
-                placed[at] = true;
-                if (from == i) {
-                    out.tris[at] = first;
-                    break;
-                }
-                out.tris[at] = out.tris[from];
-                at = from;
-            }
-        }
-    }
-    out.position_of.assign(n, 0);
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) out.position_of[out.tris[i].face] = std::uint32_t(i);
-
+    const std::size_t n = out.tris.size();
     const std::vector<Node>& bin = tree.nodes;
     std::vector<std::uint32_t> bin_obb(tree.obbs.empty() ? 0 : bin.size(), 0);
     for (const auto& [node, slot] : tree.obb_of) {
@@ -529,14 +540,11 @@ void build_bvh(const Mesh& mesh, Bvh& out)
     // Progress: the triangles placed in leaves. The tree is grown outside
     // OpenMP regions (its check() may throw Cancelled).
     StageProgress stage("index", n);
-    out.tris.resize(n);
-    std::vector<Box> boxes(n);
-    std::vector<Vec3> centroid(n);
-    std::vector<double> area(n);
-    set_up_triangles(mesh, out.tris, boxes, centroid, area);
+    std::vector<FaceFacts> facts(n);
+    set_up_faces(mesh, facts);
     std::vector<std::uint32_t> order(n);
     std::iota(order.begin(), order.end(), 0u);
-    Builder builder{out.tris, boxes, centroid, area, order, stage};
+    Builder builder{mesh, facts, order, stage};
 
     Part tree;
     tree.nodes.reserve(node_estimate(n));
@@ -548,11 +556,13 @@ void build_bvh(const Mesh& mesh, Bvh& out)
     } else {
         builder.grow(tree);
     }
-    // The build's own arrays are done with: freed before the tables.
-    std::vector<Box>().swap(boxes);
-    std::vector<Vec3>().swap(centroid);
-    std::vector<double>().swap(area);
-    make_tables(tree, order, out);
+    // The facts are done with: freed before the triangles are made, in leaf
+    // order (they are not held beside them, nor permuted: 160 MB each for a
+    // 2M-face mesh).
+    std::vector<FaceFacts>().swap(facts);
+    set_up_triangles(mesh, order, out);
+    std::vector<std::uint32_t>().swap(order);
+    make_tables(tree, out);
     stage.finish();
 }
 
