@@ -71,6 +71,35 @@ TEST(ReadMesh, BinaryPlyObjAndDroppedUnreferencedVertices)
     EXPECT_EQ(bunny.mesh.n_vertices(), 1887u);
 }
 
+TEST(ReadMesh, BinaryPlyScalarsFollowTheVerticesKeptWithAndWithoutUnreferencedOnes)
+{
+    // Every vertex used: the file's numbering and values as they are (the
+    // body mapped, nothing copied); vertex 0 unused: it and its value dropped,
+    // the rest renumbered.
+    const Shape s = icosphere(1);
+    const fs::path all = temp_dir() / "all_used.ply";
+    write_ply(all, s.mesh, {{"H", s.exact_H}});
+    const LoadedMesh a = read_mesh(all);
+    EXPECT_EQ(a.input.unreferenced_vertices, 0u);
+    EXPECT_TRUE(a.mesh.points == s.mesh.points);
+    EXPECT_EQ(a.mesh.faces, s.mesh.faces);
+    EXPECT_EQ(vertex_scalar(a, "H").values, s.exact_H);
+
+    Mesh m = s.mesh;
+    m.points.insert(m.points.begin(), Vec3(9, 9, 9));
+    for (Face& f : m.faces)
+        for (int& v : f) ++v;
+    std::vector<double> h = s.exact_H;
+    h.insert(h.begin(), 42.0);
+    const fs::path one = temp_dir() / "one_unused.ply";
+    write_ply(one, m, {{"H", h}});
+    const LoadedMesh b = read_mesh(one);
+    EXPECT_EQ(b.input.unreferenced_vertices, 1u);
+    EXPECT_TRUE(b.mesh.points == s.mesh.points);
+    EXPECT_EQ(b.mesh.faces, s.mesh.faces);
+    EXPECT_EQ(vertex_scalar(b, "H").values, s.exact_H);
+}
+
 TEST(ReadMesh, OffWithPolygonsAndStlRoundTrip)
 {
     const auto off = write_text("quad.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n9 9 9\n4 0 1 2 3\n3 0 2 1\n");

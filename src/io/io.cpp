@@ -175,12 +175,18 @@ LoadedMesh read_any(const std::filesystem::path& path, bool allow_cloud)
     for (std::size_t i = 0; i < remap.size(); ++i)
         if (remap[i] == 0) remap[i] = next++;
     out.input.unreferenced_vertices = remap.size() - std::size_t(next);
+    out.mesh.faces = std::move(faces);
+    if (out.input.unreferenced_vertices == 0) {
+        // Every vertex is used: the numbering stays, nothing is copied.
+        out.mesh.points = std::move(soup.points);
+        out.vertex_scalars = std::move(scalars);
+        return out;
+    }
     out.mesh.points.reserve(std::size_t(next));
     for (std::size_t i = 0; i < remap.size(); ++i)
         if (remap[i] >= 0) out.mesh.points.push_back(soup.points[i]);
-    for (auto& t : faces)
+    for (auto& t : out.mesh.faces)
         for (auto& v : t) v = remap[std::size_t(v)];
-    out.mesh.faces = std::move(faces);
     for (auto& sc : scalars) {
         VertexScalar kept{sc.name, {}};
         kept.values.reserve(out.mesh.points.size());

@@ -6,11 +6,18 @@
 
 #include <fmt/format.h>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <sstream>
 #include <utility>
 
@@ -103,18 +110,30 @@ public:
         end_ = in_.tellg();
         in_.seekg(start);
         if (format_ != Format::Ascii) {
-            // The whole body at once: one read instead of millions of small ones.
-            body_.resize(end_ > start ? std::size_t(end_ - start) : 0);
-            in_.read(body_.data(), std::streamsize(body_.size()));
-            body_.resize(std::size_t(in_.gcount()));
+            // The whole body at once: mapped (its pages all at once, not
+            // copied), or else one read instead of millions of small ones
+            // into a buffer that is not zeroed first.
+            const std::size_t want = end_ > start ? std::size_t(end_ - start) : 0;
+            if (!map_body(std::size_t(start), want)) {
+                buffer_.reset(new char[want]);
+                in_.read(buffer_.get(), std::streamsize(want));
+                size_ = std::size_t(in_.gcount());
+                body_ = buffer_.get();
+            }
             pos_ = 0;
         }
     }
+    ~Source()
+    {
+        if (map_) ::munmap(map_, map_size_);
+    }
+    Source(const Source&) = delete;
+    Source& operator=(const Source&) = delete;
 
     //! Bytes of the body not read yet.
     std::uint64_t bytes_left()
     {
-        if (format_ != Format::Ascii) return body_.size() - pos_;
+        if (format_ != Format::Ascii) return size_ - pos_;
         const auto at = in_.tellg();
         return at >= 0 && end_ > at ? std::uint64_t(end_ - at) : 0;
     }
@@ -123,11 +142,11 @@ public:
     void expect_end()
     {
         if (format_ != Format::Ascii) {
-            if (pos_ < body_.size())
+            if (pos_ < size_)
                 throw IoError(
                     fmt::format("{}: {} bytes after the last element the PLY header declares (a wrong "
                                 "count?)",
-                                path_, body_.size() - pos_));
+                                path_, size_ - pos_));
             return;
         }
         std::string tok;
@@ -140,8 +159,8 @@ public:
     {
         if (format_ == Format::Ascii) return ascii_value();
         const std::size_t n = type_size(t);
-        if (body_.size() - pos_ < n) throw IoError(fmt::format("{}: binary PLY ends early (truncated file?)", path_));
-        const auto* buf = reinterpret_cast<const unsigned char*>(body_.data() + pos_);
+        if (size_ - pos_ < n) throw IoError(fmt::format("{}: binary PLY ends early (truncated file?)", path_));
+        const auto* buf = reinterpret_cast<const unsigned char*>(body_ + pos_);
         pos_ += n;
         if (format_ == Format::BinaryLE && kHostLittleEndian) {
             switch (t) {
@@ -198,6 +217,27 @@ public:
     }
 
 private:
+    // Maps the file and points body_ at its bytes [start, start + want) (as
+    // many as the file still has); false if it cannot be mapped.
+    bool map_body(std::size_t start, std::size_t want)
+    {
+        if (want == 0) return false;
+        const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+        if (fd < 0) return false;
+        struct stat st;
+        void* m = MAP_FAILED;
+        if (::fstat(fd, &st) == 0 && std::size_t(st.st_size) > start) {
+            map_size_ = std::size_t(st.st_size);
+            m = ::mmap(nullptr, map_size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+        }
+        ::close(fd);
+        if (m == MAP_FAILED) return false;
+        map_ = m;
+        body_ = static_cast<const char*>(m) + start;
+        size_ = std::min(want, map_size_ - start);
+        return true;
+    }
+
     double ascii_value()
     {
         std::string tok;
@@ -213,7 +253,11 @@ private:
     std::ifstream& in_;
     Format format_;
     std::streampos end_ = 0;
-    std::string body_;
+    std::unique_ptr<char[]> buffer_;  // the body read, when not mapped
+    void* map_ = nullptr;             // the file mapped
+    std::size_t map_size_ = 0;
+    const char* body_ = nullptr;
+    std::size_t size_ = 0;
     std::size_t pos_ = 0;
 };
 
@@ -376,7 +420,11 @@ void read_element(const std::string& path, Source& src, Format format, const Ele
     for (const auto& p : e.props)
         min_bytes += format == Format::Ascii ? 2 : type_size(p.is_list ? p.count_type : p.type);
     check_count(path, e.count, min_bytes, src.bytes_left(), fmt::format("{} elements", quote(e.name)));
-    if (e.name == "vertex") soup.points.reserve(std::size_t(e.count));
+    if (e.name == "vertex") {
+        soup.points.reserve(std::size_t(e.count));
+        for (const int slot : s.scalar_slot)
+            if (slot >= 0) soup.scalar_values[std::size_t(slot)].reserve(std::size_t(e.count));
+    }
     if (e.name == "face") soup.polygons.reserve(std::size_t(e.count));
     read_rows(path, src, e, s, soup);
 }
