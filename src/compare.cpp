@@ -3,6 +3,7 @@
 #include "meshdiff/error.h"
 
 #include "distance/two_directions.h"
+#include "roughness/local_roughness_closest.h"
 #include "roughness/profile_keeping_h.h"
 
 #include <fmt/format.h>
@@ -81,10 +82,11 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
 
 // The two sigma profiles, their distance and, if asked for, the local
 // difference (options checked).
-// The index of the original the local difference builds is left in
-// \p index_a, for the surface distance's backward direction.
+// The index of the original the local difference builds, and the closest
+// points of the processed mesh's vertices on it, are left in \p handed for
+// the surface distance's backward direction.
 void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, const LoadedMesh& b, const MeshData& b_data,
-                const CompareOptions& options, std::optional<ClosestPointIndex>& index_a)
+                const CompareOptions& options, detail::HandedToDistance& handed)
 {
     // The local difference needs H per vertex, not D: the profiles keep H
     // only (their ring levels then fold D batch by batch, level_stream.h).
@@ -120,9 +122,10 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, cons
     LocalRoughnessParts rings;
     rings.radii = false;
     {
-        const ClosestPointIndex& index = index_of(options.index_original, a_data, index_a, "original");
-        c.local_roughness = local_roughness_distance(b.mesh, *c.processed_profile, a.mesh, *c.original_profile, index,
-                                                     options.local_trim, options.vertex_distances, rings);
+        const ClosestPointIndex& index = index_of(options.index_original, a_data, handed.index_a, "original");
+        c.local_roughness = detail::local_roughness_distance(
+            b.mesh, *c.processed_profile, a.mesh, *c.original_profile, index, options.local_trim,
+            options.vertex_distances, rings, options.distance && options.hausdorff ? &handed.b_vertices_on_a : nullptr);
     }
     if (!options.profile.radii.empty()) {
         LocalRoughnessParts radii;
@@ -202,19 +205,21 @@ Comparison compare_meshes(const LoadedMesh& a, const LoadedMesh& b, const Compar
         c.processed_corsini = corsini_profile(b.mesh, co);
         c.corsini = corsini_distance(*c.original_corsini, *c.processed_corsini, options.k);
     }
-    // The original's index, built once: by the local difference (when asked
-    // for) and kept for the distances to the original.
-    std::optional<ClosestPointIndex> index_a;
+    // The original's index and the closest points of the processed mesh's
+    // vertices on it, found once: by the local difference (when asked for),
+    // and handed to the distances to the original.
+    detail::HandedToDistance handed;
     if (options.roughness && options.measure != RoughnessMeasure::Corsini)
-        sigma_half(c, a, a_data, b, b_data, options, index_a);
+        sigma_half(c, a, a_data, b, b_data, options, handed);
     if (options.distance) {
         set_distance(
             c, detail::two_directions(a.mesh, b.mesh, distance_options(options, &a_data, &b_data), options.keep_samples,
-                                      options.keep_samples, false, detail::kSampleChunk, &index_a));
+                                      options.keep_samples, false, detail::kSampleChunk, &handed));
     } else if (options.vertex_distances) {
-        if (!index_a) index_a.emplace(a_data);
-        c.processed_vertex_distance = vertex_distances(b.mesh, a.mesh, *index_a, c.processed_vertex_signed_distance);
-        index_a.reset();
+        if (!handed.index_a) handed.index_a.emplace(a_data);
+        c.processed_vertex_distance =
+            vertex_distances(b.mesh, a.mesh, *handed.index_a, c.processed_vertex_signed_distance);
+        handed.index_a.reset();
         c.original_vertex_distance =
             vertex_distances(a.mesh, b.mesh, ClosestPointIndex(b_data), c.original_vertex_signed_distance);
     }

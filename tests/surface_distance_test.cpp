@@ -781,12 +781,13 @@ TEST(SurfaceDistance, CallerBuiltIndexesGiveTheSameResultsBitForBit)
     }
 }
 
-TEST(SurfaceDistance, AHandedOverIndexOfAGivesTheSameResultsBitForBitAndIsFreed)
+TEST(SurfaceDistance, WhatIsHandedOverGivesTheSameResultsBitForBitAndIsFreed)
 {
-    // compare_meshes() hands the local difference's index of the original to
-    // the surface distance: the backward direction runs first on it and
-    // frees it; the two directions' results are those of the index built
-    // inside, to the last bit.
+    // compare_meshes() hands the local difference's index of the original,
+    // and the closest points of the processed mesh's vertices on it, to the
+    // surface distance: the backward direction runs first on them and frees
+    // them; the results are those of a surface distance that makes its own,
+    // to the last bit.
     const Mesh coarse = icosphere(0).mesh;
     const Mesh fine = icosphere(2, 1.05).mesh;
     SummaryOptions so;
@@ -799,24 +800,33 @@ TEST(SurfaceDistance, AHandedOverIndexOfAGivesTheSameResultsBitForBitAndIsFreed)
         o.vertex_distances = true;
         o.keep_samples = keep;
         const SurfaceDistance own = surface_distance(coarse, fine, o);
-        std::optional<ClosestPointIndex> handed;
-        handed.emplace(coarse);
-        const SurfaceDistance given =
-            detail::two_directions(coarse, fine, o, keep, keep, false, detail::kSampleChunk, &handed);
-        EXPECT_FALSE(handed.has_value());  // freed once the backward direction is done
-        expect_every_bit(own, given);
-        expect_same_vector(own.original_vertex_distance, given.original_vertex_distance);
-        expect_same_vector(own.processed_vertex_distance, given.processed_vertex_distance);
-        expect_same_vector(own.processed_vertex_signed_distance, given.processed_vertex_signed_distance);
-        expect_same_vector(own.backward_samples.distances, given.backward_samples.distances);
-        // An empty one is no index: built inside as without.
-        const SurfaceDistance empty =
-            detail::two_directions(coarse, fine, o, keep, keep, false, detail::kSampleChunk, &handed);
-        expect_every_bit(own, empty);
-        // Beside DistanceOptions::index_a it is a caller's mistake.
+        auto check = [&](const SurfaceDistance& given) {
+            expect_every_bit(own, given);
+            ASSERT_TRUE(own.backward_hausdorff && given.backward_hausdorff);
+            EXPECT_TRUE(same_bits(own.backward_hausdorff->lower, given.backward_hausdorff->lower));
+            EXPECT_TRUE(same_bits(own.backward_hausdorff->upper, given.backward_hausdorff->upper));
+            expect_same_vector(own.original_vertex_distance, given.original_vertex_distance);
+            expect_same_vector(own.processed_vertex_distance, given.processed_vertex_distance);
+            expect_same_vector(own.processed_vertex_signed_distance, given.processed_vertex_signed_distance);
+            expect_same_vector(own.backward_samples.distances, given.backward_samples.distances);
+        };
+        detail::HandedToDistance handed;
+        handed.index_a.emplace(coarse);
+        handed.b_vertices_on_a = handed.index_a->closest_points(fine.points);
+        check(detail::two_directions(coarse, fine, o, keep, keep, false, detail::kSampleChunk, &handed));
+        EXPECT_FALSE(handed.index_a.has_value());  // freed once the backward direction is done
+        EXPECT_TRUE(handed.b_vertices_on_a.empty());
+        // Each alone, and nothing (an empty hand): as without.
+        handed.index_a.emplace(coarse);
+        check(detail::two_directions(coarse, fine, o, keep, keep, false, detail::kSampleChunk, &handed));
+        handed.b_vertices_on_a = ClosestPointIndex(coarse).closest_points(fine.points);
+        check(detail::two_directions(coarse, fine, o, keep, keep, false, detail::kSampleChunk, &handed));
+        EXPECT_TRUE(handed.b_vertices_on_a.empty());
+        check(detail::two_directions(coarse, fine, o, keep, keep, false, detail::kSampleChunk, &handed));
+        // An index beside DistanceOptions::index_a is a caller's mistake.
         const ClosestPointIndex ia(coarse);
         o.index_a = &ia;
-        handed.emplace(coarse);
+        handed.index_a.emplace(coarse);
         EXPECT_THROW(detail::two_directions(coarse, fine, o, keep, keep, false, detail::kSampleChunk, &handed),
                      InvalidArgumentError);
     }

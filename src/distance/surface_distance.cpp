@@ -228,11 +228,12 @@ struct DirectionTask
     bool to_cloud;
     const char* to_name;  // names `to` in the reason for no sign
     const DistanceOptions& options;
-    const SamplingOptions& sampling;        // with the default budget set
-    const std::vector<double>& thresholds;  // the F-score thresholds, absolute
-    bool keep;                              // keep the samples
-    std::size_t chunk;                      // samples made and queried at a time when not kept
-    const ClosestPointIndex* index;         // of `to`, built by the caller; null: build one
+    const SamplingOptions& sampling;                        // with the default budget set
+    const std::vector<double>& thresholds;                  // the F-score thresholds, absolute
+    bool keep;                                              // keep the samples
+    std::size_t chunk;                                      // samples made and queried at a time when not kept
+    const ClosestPointIndex* index;                         // of `to`, built by the caller; null: build one
+    std::vector<ClosestPoint>* vertices_closest = nullptr;  // of from's vertices on `to`, if the caller has them
 };
 
 // What one direction gives back.
@@ -333,7 +334,12 @@ DirectionResult one_direction(const DirectionTask& t)
     make_target(t, g);
     const bool meshes = !t.from_cloud && !t.to_cloud;
     std::vector<ClosestPoint> vq;  // from's vertices: samples and certification (two meshes)
-    if (meshes && o.hausdorff) vq = g.index->closest_points(t.from.points);
+    if (meshes && o.hausdorff) {
+        if (t.vertices_closest && t.vertices_closest->size() == t.from.points.size())
+            vq = std::exchange(*t.vertices_closest, {});
+        else
+            vq = g.index->closest_points(t.from.points);
+    }
     g.take_normals();
     const std::vector<ClosestPoint>* vertex_closest = meshes && o.hausdorff ? &vq : nullptr;
     if (meshes && !t.keep) {
@@ -413,8 +419,7 @@ const MeshData& data_of(const Mesh& mesh, const MeshData* given, std::optional<M
 }  // namespace
 
 SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const DistanceOptions& options, bool keep_forward,
-                                       bool keep_backward, bool clouds, std::size_t chunk,
-                                       std::optional<ClosestPointIndex>* handed_a)
+                                       bool keep_backward, bool clouds, std::size_t chunk, HandedToDistance* handed)
 {
     if (chunk == 0 || chunk % kQueryBlock != 0)
         throw InvalidArgumentError(
@@ -451,8 +456,8 @@ SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const Dista
     // An index of A handed over is used by the backward direction, which
     // then runs first, and freed before the forward one (the two directions
     // are independent: the order changes no bit).
-    const bool handed = handed_a && handed_a->has_value();
-    if (handed && (cloud_a || options.index_a))
+    const bool handed_a = handed && handed->index_a.has_value();
+    if (handed_a && (cloud_a || options.index_a))
         throw InvalidArgumentError(
             "surface_distance: an index of A handed over with DistanceOptions::index_a set "
             "or A a point cloud");
@@ -461,16 +466,31 @@ SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const Dista
                               keep_forward, chunk, cloud_b ? nullptr : options.index_b});
     };
     auto backward = [&] {
-        DirectionResult k = one_direction({db, da, b, a, cloud_b, cloud_a, "the original mesh", options, sampling,
-                                           thresholds, keep_backward, chunk,
-                                           handed    ? &**handed_a
-                                           : cloud_a ? nullptr
-                                                     : options.index_a});
-        if (handed) handed_a->reset();
+        DirectionTask t{db,
+                        da,
+                        b,
+                        a,
+                        cloud_b,
+                        cloud_a,
+                        "the original mesh",
+                        options,
+                        sampling,
+                        thresholds,
+                        keep_backward,
+                        chunk,
+                        handed_a  ? &*handed->index_a
+                        : cloud_a ? nullptr
+                                  : options.index_a};
+        if (handed && !cloud_a && !cloud_b) t.vertices_closest = &handed->b_vertices_on_a;
+        DirectionResult k = one_direction(t);
+        if (handed) {
+            handed->index_a.reset();
+            handed->b_vertices_on_a = {};
+        }
         return k;
     };
     DirectionResult k, f;
-    if (handed) {
+    if (handed_a) {
         k = backward();
         f = forward();
     } else {

@@ -16,6 +16,21 @@
 
 namespace meshdiff::detail {
 
+//! What a caller of two_directions() already has of the backward direction
+//! (compare_meshes(): the local difference's), handed over so that it is not
+//! made twice nor held beside B's index: an index of A (when it holds one;
+//! DistanceOptions::index_a then unset), on which the backward direction runs
+//! first, and the closest points of B's vertices on A (when of B's vertex
+//! count: those of an index of A, ClosestPointIndex::closest_points()), which
+//! the certification of that direction uses. Each is freed once used. The
+//! results are those without, to the last bit: the two directions are
+//! independent, and a closest point does not depend on the index.
+struct HandedToDistance
+{
+    std::optional<ClosestPointIndex> index_a;
+    std::vector<ClosestPoint> b_vertices_on_a;
+};
+
 //! Both directions of a surface distance: checks the options and both inputs,
 //! sets the default budget (10 x max(#faces A, #faces B), a cloud's points
 //! counted as faces), the reference diagonal and the absolute F-score
@@ -26,14 +41,11 @@ namespace meshdiff::detail {
 //! without, every input is a mesh (validate()). The samples of the forward
 //! (backward) direction are kept with \p keep_forward (\p keep_backward);
 //! otherwise, between two meshes, they are made and queried \p chunk at a
-//! time (a positive multiple of kQueryBlock). An index of A the caller built
-//! (\p handed_a, when it holds one; DistanceOptions::index_a then unset) is
-//! handed over: the backward direction runs first on it and frees it, so that
-//! it is not built twice nor held beside B's (compare_meshes(): the local
-//! difference's index of the original).
+//! time (a positive multiple of kQueryBlock). What the caller hands over
+//! (\p handed) is used and freed (see HandedToDistance).
 SurfaceDistance two_directions(const Mesh& a, const Mesh& b, const DistanceOptions& options, bool keep_forward,
                                bool keep_backward, bool clouds, std::size_t chunk = kSampleChunk,
-                               std::optional<ClosestPointIndex>* handed_a = nullptr);
+                               HandedToDistance* handed = nullptr);
 
 //! \p r as the deprecated positional overloads return it: the per-vertex
 //! distances under their 0.2 names (a_/b_vertex_distance and the signed

@@ -6,6 +6,7 @@
 #include "meshdiff/roughness/neighborhood.h"
 
 #include "roughness/level_stream.h"
+#include "roughness/local_roughness_closest.h"
 
 #include <fmt/format.h>
 
@@ -27,9 +28,12 @@ struct Anchor
     Vec3 w = Vec3::Zero();
 };
 
-std::vector<Anchor> anchors(const Mesh& other, const Mesh& mesh, const ClosestPointIndex& index)
+// The anchors of mesh's vertices on other; their closest points moved to
+// \p closest when given.
+std::vector<Anchor> anchors(const Mesh& other, const Mesh& mesh, const ClosestPointIndex& index,
+                            std::vector<ClosestPoint>* closest)
 {
-    const std::vector<ClosestPoint> cp = index.closest_points(mesh.points);
+    std::vector<ClosestPoint> cp = index.closest_points(mesh.points);
     std::vector<Anchor> out(cp.size());
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t ij = 0; ij < std::ptrdiff_t(cp.size()); ++ij) {
@@ -39,6 +43,7 @@ std::vector<Anchor> anchors(const Mesh& other, const Mesh& mesh, const ClosestPo
         out[j].w = barycentric(cp[j].point, other.points[std::size_t(f[0])], other.points[std::size_t(f[1])],
                                other.points[std::size_t(f[2])]);
     }
+    if (closest) *closest = std::move(cp);
     return out;
 }
 
@@ -105,6 +110,14 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
                                                 const RoughnessProfile& pb, const ClosestPointIndex& index, double trim,
                                                 bool keep_vertex_data, LocalRoughnessParts parts)
 {
+    return detail::local_roughness_distance(mesh, pa, other, pb, index, trim, keep_vertex_data, parts, nullptr);
+}
+
+LocalRoughnessDistance detail::local_roughness_distance(const Mesh& mesh, const RoughnessProfile& pa, const Mesh& other,
+                                                        const RoughnessProfile& pb, const ClosestPointIndex& index,
+                                                        double trim, bool keep_vertex_data, LocalRoughnessParts parts,
+                                                        std::vector<ClosestPoint>* closest)
+{
     if (pa.H.size() != mesh.n_vertices() || pb.H.size() != other.n_vertices())
         throw InvalidArgumentError("local roughness: a profile has no per-vertex H (keep_vertex_data)");
     if (pa.vertices != mesh.n_vertices() || pb.vertices != other.n_vertices())
@@ -119,7 +132,7 @@ LocalRoughnessDistance local_roughness_distance(const Mesh& mesh, const Roughnes
     r.trim = trim;
     const std::size_t n = mesh.n_vertices();
     // F(i) = H(i) - H'(cp(i)): the change of H, carried to the vertices of mesh.
-    const std::vector<Anchor> at = anchors(other, mesh, index);
+    const std::vector<Anchor> at = anchors(other, mesh, index, closest);
     std::vector<double> F(n, kNaN);
     for (std::size_t i = 0; i < n; ++i) {
         if (std::isnan(pa.H[i])) continue;
