@@ -5,6 +5,7 @@
 #include "meshdiff/error.h"
 
 #include "core/compensated_sum.h"
+#include "geometry/bvh_build.h"
 #include "geometry/point_triangle_kernels.h"
 
 #include <fmt/format.h>
@@ -226,11 +227,12 @@ std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::str
     return n;
 }
 
-int distance_sign(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p, std::uint32_t face)
+namespace {
+
+// distance_sign() from the closest feature \p c of face's triangle.
+int sign_at(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p, std::uint32_t face, const ClosestFeature& c)
 {
     const Face& t = mesh.faces[face];
-    const ClosestFeature c = closest_feature(p, mesh.points[std::size_t(t[0])], mesh.points[std::size_t(t[1])],
-                                             mesh.points[std::size_t(t[2])]);
     const Vec3 d = p - c.point;
     if (d.isZero(0.0)) return 0;
     const Vec3& nf = normals.face[face];
@@ -239,6 +241,16 @@ int distance_sign(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p,
                          ? d.dot(nf + normals.face[normals.opposite[3 * std::size_t(face) + c.index] / 3])
                          : d.dot(normals.vertex[std::size_t(t[c.index])]);
     return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
+}
+
+}  // namespace
+
+int distance_sign(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p, std::uint32_t face)
+{
+    const Face& t = mesh.faces[face];
+    return sign_at(mesh, normals, p, face,
+                   closest_feature(p, mesh.points[std::size_t(t[0])], mesh.points[std::size_t(t[1])],
+                                   mesh.points[std::size_t(t[2])]));
 }
 
 std::vector<double> signed_distances(const Mesh& mesh, const PseudoNormals& normals, const Vec3* queries,
@@ -258,8 +270,20 @@ std::vector<double> signed_distances(const Mesh& mesh, const PseudoNormals& norm
 void signed_query(const Mesh& mesh, const ClosestPointIndex& index, const PseudoNormals& normals, const Vec3* queries,
                   std::size_t n, double* distances, std::int8_t* signs)
 {
+    // The feature from the index's copy of the triangle, which the query has
+    // just read (the same corners, in the same order, and the same thinness
+    // as closest_feature() finds from the mesh): no second fetch of the face
+    // and its corners.
+    const detail::Bvh& bvh = detail::bvh_of(index);
     index.distances(queries, n, distances, [&](std::size_t i, const ClosestPoint& c) {
-        signs[i] = std::int8_t(c.distance > 0.0 ? distance_sign(mesh, normals, queries[i], c.face) : 0);
+        if (!(c.distance > 0.0)) {
+            signs[i] = 0;
+            return;
+        }
+        const detail::Tri& t = bvh.tris[bvh.position_of[c.face]];
+        const Vec3& p = queries[i];
+        signs[i] = std::int8_t(sign_at(mesh, normals, p, c.face,
+                                       t.thin ? thin_feature(p, t.a, t.b, t.c) : face_feature(p, t.a, t.b, t.c)));
     });
 }
 
