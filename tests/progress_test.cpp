@@ -200,11 +200,14 @@ TEST(Progress, CompareReportsEveryStageToTheEnd)
     // The vertices' distances (for the certification) and the other samples',
     // and the closest points of the local roughness difference: of the
     // processed mesh's vertices (ring levels) and, with radii, of the
-    // original's.
+    // original's. The processed mesh's vertices are searched once: the local
+    // difference's closest points serve the backward direction's vertex
+    // samples (detail::HandedToDistance).
     ASSERT_TRUE(c.local_roughness);
     ASSERT_FALSE(c.local_roughness->radii.empty());
-    EXPECT_EQ(samples_seen, c.distance->forward.n_samples() + c.distance->backward.n_samples() +
-                                c.local_roughness->vertices + c.local_roughness->vertices_radii);
+    EXPECT_EQ(c.distance->backward.n_vertex, c.local_roughness->vertices);
+    EXPECT_EQ(samples_seen,
+              c.distance->forward.n_samples() + c.distance->backward.n_samples() + c.local_roughness->vertices_radii);
     EXPECT_EQ(c.options.progress, nullptr);  // not kept in the result
     ASSERT_TRUE(c.distance && c.distance->forward_hausdorff);
     EXPECT_TRUE(c.distance->forward_hausdorff->certified);
