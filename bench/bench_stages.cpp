@@ -1,0 +1,85 @@
+// Benchmark of two stages every comparison starts with: reading a mesh file
+// and building the closest-point index of the mesh read.
+//
+// Usage: meshdiff_bench_stages [--runs N] MESH ...
+//
+// For each mesh: the wall time of each of N runs (default 5) of read_mesh()
+// and of ClosestPointIndex's construction, and their medians, with the
+// process's peak resident memory so far. The machine is noisy: compare
+// medians of builds alternated in one run (docs/performance.md), not single
+// runs.
+#include "bench_common.h"
+
+#include "meshdiff/core/mesh_data.h"
+#include "meshdiff/geometry/closest_point.h"
+#include "meshdiff/io/io.h"
+
+#include <fmt/format.h>
+#include <omp.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace meshdiff;
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string list(const std::vector<double>& v)
+{
+    std::string s;
+    for (double x : v) s += fmt::format("{}{:.3f}", s.empty() ? "" : " ", x);
+    return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    int runs = 5;
+    std::vector<std::string> meshes;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--runs" && i + 1 < argc) {
+            runs = std::max(1, std::atoi(argv[++i]));
+        } else if (a == "--help" || a == "-h" || (!a.empty() && a[0] == '-')) {
+            fmt::print(stderr, "usage: meshdiff_bench_stages [--runs N] MESH ...\n");
+            return a == "--help" || a == "-h" ? 0 : 2;
+        } else {
+            meshes.push_back(a);
+        }
+    }
+    if (meshes.empty()) {
+        fmt::print(stderr, "usage: meshdiff_bench_stages [--runs N] MESH ...\n");
+        return 2;
+    }
+    fmt::print("threads {}\n", omp_get_max_threads());
+    for (const std::string& path : meshes) {
+        std::vector<double> read_s, index_s;
+        std::size_t nv = 0, nf = 0;
+        for (int k = 0; k < runs; ++k) {
+            auto t0 = std::chrono::steady_clock::now();
+            const LoadedMesh m = read_mesh(path);
+            read_s.push_back(seconds_since(t0));
+            nv = m.mesh.n_vertices();
+            nf = m.mesh.n_faces();
+            const MeshData data(m.mesh);
+            t0 = std::chrono::steady_clock::now();
+            {
+                const ClosestPointIndex index(data);
+                index_s.push_back(seconds_since(t0));
+            }
+        }
+        fmt::print("{}: {} vertices, {} faces\n", path, nv, nf);
+        fmt::print("  read   median {:.3f} s (runs: {})\n", timing::median(read_s), list(read_s));
+        fmt::print("  index  median {:.3f} s (runs: {})\n", timing::median(index_s), list(index_s));
+        fmt::print("  peak_rss_mib {:.0f}\n", timing::peak_rss_mib());
+    }
+    return 0;
+}
