@@ -21,6 +21,10 @@
 #include <sstream>
 #include <utility>
 
+#ifndef MAP_POPULATE
+#define MAP_POPULATE 0  // Linux's: the pages read ahead at once; elsewhere faulted in as read
+#endif
+
 namespace meshdiff::detail {
 
 namespace {
