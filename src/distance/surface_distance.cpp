@@ -254,8 +254,11 @@ struct DirectionTarget
     const ClosestPointIndex* index = nullptr;  // own or the caller's
     std::optional<PointCloudIndex> cloud;
     std::optional<PseudoNormals> normals;
-    std::future<std::optional<PseudoNormals>> pending;  // the normals while they are made
-    std::string unsigned_reason;                        // why there is no sign
+    std::string unsigned_reason;  // why there is no sign
+    // The normals while they are made, by a task that writes unsigned_reason:
+    // declared last, so destroyed (waiting for the task) first when a
+    // direction ends early on an exception.
+    std::future<std::optional<PseudoNormals>> pending;
     // The pseudo-normals, once made.
     void take_normals()
     {
