@@ -119,6 +119,17 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, cons
             throw InvalidArgumentError(fmt::format("CompareOptions: index_{0} is not an index of the {0} mesh", name));
         return *given;
     };
+    // The radii first: their index of the processed mesh is freed before the
+    // original's is built for the ring levels and kept in \p handed.
+    std::optional<LocalRoughnessDistance> on_original;
+    if (!options.profile.radii.empty()) {
+        LocalRoughnessParts radii;
+        radii.levels = radii.global = false;
+        std::optional<ClosestPointIndex> own;
+        const ClosestPointIndex& index = index_of(options.index_processed, b_data, own, "processed");
+        on_original = local_roughness_distance(a.mesh, *c.original_profile, b.mesh, *c.processed_profile, index,
+                                               options.local_trim, false, radii);
+    }
     LocalRoughnessParts rings;
     rings.radii = false;
     {
@@ -127,16 +138,10 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, cons
             b.mesh, *c.processed_profile, a.mesh, *c.original_profile, index, options.local_trim,
             options.vertex_distances, rings, options.distance && options.hausdorff ? &handed.b_vertices_on_a : nullptr);
     }
-    if (!options.profile.radii.empty()) {
-        LocalRoughnessParts radii;
-        radii.levels = radii.global = false;
-        std::optional<ClosestPointIndex> own;
-        const ClosestPointIndex& index = index_of(options.index_processed, b_data, own, "processed");
-        const LocalRoughnessDistance on_original = local_roughness_distance(
-            a.mesh, *c.original_profile, b.mesh, *c.processed_profile, index, options.local_trim, false, radii);
-        c.local_roughness->radii = on_original.radii;
-        c.local_roughness->rms_radii = on_original.rms_radii;
-        c.local_roughness->vertices_radii = on_original.vertices_radii;
+    if (on_original) {
+        c.local_roughness->radii = std::move(on_original->radii);
+        c.local_roughness->rms_radii = std::move(on_original->rms_radii);
+        c.local_roughness->vertices_radii = on_original->vertices_radii;
     }
     if (!options.profile.keep_vertex_data)
         for (RoughnessProfile* p : {&*c.original_profile, &*c.processed_profile}) {
