@@ -77,7 +77,8 @@ struct CompareOptions
     //! one original with many processed meshes: the surface distance and the
     //! local roughness difference query them instead of building their own.
     //! Each must index that very mesh and outlive the call; the results are
-    //! the same bit for bit. nullptr (the default): built per call.
+    //! the same bit for bit. nullptr (the default): built per call (the
+    //! original's once, for the local difference and the distances).
     const ClosestPointIndex* index_original = nullptr;
     const ClosestPointIndex* index_processed = nullptr;
 };
