@@ -754,19 +754,32 @@ TEST(SurfaceDistance, ChunkedSamplesGiveTheKeptSamplesStatisticsBitForBit)
                  InvalidArgumentError);
 }
 
-TEST(SurfaceDistance, CallerBuiltIndexesGiveTheSameResultsBitForBit)
+namespace {
+
+// Every part of a surface distance a caller can ask for: F-scores, a
+// histogram, certified Hausdorff bounds, per-vertex distances, and the
+// samples kept (\p keep) or folded chunk by chunk.
+DistanceOptions everything_options(bool keep)
 {
-    const Mesh coarse = icosphere(0).mesh;
-    const Mesh fine = icosphere(2, 1.05).mesh;
     SummaryOptions so;
     so.fscore_thresholds = {0.01, 0.05};
     so.histogram_bins = 5;
     HausdorffOptions certify;
     certify.relative_tolerance = 1e-3;
+    DistanceOptions o = distance_options({}, certify, so);
+    o.vertex_distances = true;
+    o.keep_samples = keep;
+    return o;
+}
+
+}  // namespace
+
+TEST(SurfaceDistance, CallerBuiltIndexesGiveTheSameResultsBitForBit)
+{
+    const Mesh coarse = icosphere(0).mesh;
+    const Mesh fine = icosphere(2, 1.05).mesh;
     for (const bool keep : {false, true}) {
-        DistanceOptions o = distance_options({}, certify, so);
-        o.vertex_distances = true;
-        o.keep_samples = keep;
+        DistanceOptions o = everything_options(keep);
         const SurfaceDistance own = surface_distance(coarse, fine, o);
         const ClosestPointIndex ia(coarse), ib(fine);
         o.index_a = &ia;
@@ -790,15 +803,8 @@ TEST(SurfaceDistance, WhatIsHandedOverGivesTheSameResultsBitForBitAndIsFreed)
     // to the last bit.
     const Mesh coarse = icosphere(0).mesh;
     const Mesh fine = icosphere(2, 1.05).mesh;
-    SummaryOptions so;
-    so.fscore_thresholds = {0.01, 0.05};
-    so.histogram_bins = 5;
-    HausdorffOptions certify;
-    certify.relative_tolerance = 1e-3;
     for (const bool keep : {false, true}) {
-        DistanceOptions o = distance_options({}, certify, so);
-        o.vertex_distances = true;
-        o.keep_samples = keep;
+        DistanceOptions o = everything_options(keep);
         const SurfaceDistance own = surface_distance(coarse, fine, o);
         auto check = [&](const SurfaceDistance& given) {
             expect_every_bit(own, given);
