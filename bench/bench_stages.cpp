@@ -1,17 +1,22 @@
-// Benchmark of two stages every comparison starts with: reading a mesh file
-// and building the closest-point index of the mesh read.
+// Benchmark of the stages every profile and comparison starts with: reading a
+// mesh file, the profile's work before its curvature fits (the normalised
+// copy, the vertex adjacency, the derived data and the vertex normals), and
+// building the closest-point index of the mesh read.
 //
 // Usage: meshdiff_bench_stages [--runs N] MESH ...
 //
-// For each mesh: the wall time of each of N runs (default 5) of read_mesh()
-// and of ClosestPointIndex's construction, and their medians, with the
-// process's peak resident memory so far. The machine is noisy: compare
-// medians of builds alternated in one run (docs/performance.md), not single
-// runs.
+// For each mesh: the wall time of each of N runs (default 5) of read_mesh(),
+// of each step of the profile's preamble and of ClosestPointIndex's
+// construction, and their medians, with the process's peak resident memory
+// so far. The machine is noisy: compare medians of builds alternated in one
+// run (docs/performance.md), not single runs.
 #include "bench_common.h"
 
 #include "meshdiff/core/mesh_data.h"
+#include "meshdiff/core/topology.h"
 #include "meshdiff/geometry/closest_point.h"
+#include "meshdiff/geometry/normalize.h"
+#include "meshdiff/geometry/normals.h"
 #include "meshdiff/io/io.h"
 
 #include <fmt/format.h>
@@ -61,7 +66,7 @@ int main(int argc, char** argv)
     }
     fmt::print("threads {}\n", omp_get_max_threads());
     for (const std::string& path : meshes) {
-        std::vector<double> read_s, index_s;
+        std::vector<double> read_s, normalise_s, adjacency_s, normals_s, index_s;
         std::size_t nv = 0, nf = 0;
         for (int k = 0; k < runs; ++k) {
             auto t0 = std::chrono::steady_clock::now();
@@ -69,6 +74,18 @@ int main(int argc, char** argv)
             read_s.push_back(seconds_since(t0));
             nv = m.mesh.n_vertices();
             nf = m.mesh.n_faces();
+            t0 = std::chrono::steady_clock::now();
+            {
+                const Mesh unit = apply_normalization(m.mesh, unit_normalization(m.mesh));
+                normalise_s.push_back(seconds_since(t0));
+                t0 = std::chrono::steady_clock::now();
+                const Adjacency adj = vertex_adjacency(unit);
+                adjacency_s.push_back(seconds_since(t0));
+                t0 = std::chrono::steady_clock::now();
+                const MeshData unit_data(unit);
+                const std::vector<Vec3> normals = vertex_normals(unit_data);
+                normals_s.push_back(seconds_since(t0));
+            }
             const MeshData data(m.mesh);
             t0 = std::chrono::steady_clock::now();
             {
@@ -77,8 +94,11 @@ int main(int argc, char** argv)
             }
         }
         fmt::print("{}: {} vertices, {} faces\n", path, nv, nf);
-        fmt::print("  read   median {:.3f} s (runs: {})\n", timing::median(read_s), list(read_s));
-        fmt::print("  index  median {:.3f} s (runs: {})\n", timing::median(index_s), list(index_s));
+        fmt::print("  read      median {:.3f} s (runs: {})\n", timing::median(read_s), list(read_s));
+        fmt::print("  normalise median {:.3f} s (runs: {})\n", timing::median(normalise_s), list(normalise_s));
+        fmt::print("  adjacency median {:.3f} s (runs: {})\n", timing::median(adjacency_s), list(adjacency_s));
+        fmt::print("  normals   median {:.3f} s (runs: {})\n", timing::median(normals_s), list(normals_s));
+        fmt::print("  index     median {:.3f} s (runs: {})\n", timing::median(index_s), list(index_s));
         fmt::print("  peak_rss_mib {:.0f}\n", timing::peak_rss_mib());
     }
     return 0;

@@ -1,9 +1,12 @@
 #include "meshdiff/geometry/normals.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include "support/data.h"
 
+#include "meshdiff/core/tolerances.h"
+#include "meshdiff/error.h"
 #include "meshdiff/io/io.h"
 #include "meshdiff/studies/shapes.h"
 
@@ -37,7 +40,64 @@ void add_fan(Mesh& mesh, const Vec3& u, const Vec3& v, const std::vector<double>
         mesh.faces.push_back({0, first + k, first + (k + 1) % n});
 }
 
+// The definition as a loop over the faces (the sums at each vertex in face
+// order), for a bit-for-bit check of the per-vertex loop.
+std::vector<Vec3> normals_by_faces(const Mesh& mesh)
+{
+    const MeshData data(mesh);
+    std::vector<Vec3> sum(mesh.n_vertices(), Vec3::Zero());
+    std::vector<double> weight(mesh.n_vertices(), 0.0);
+    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+        if (data.degenerate_faces()[f]) continue;
+        const Face& t = mesh.faces[f];
+        const Vec3 n = face_cross(mesh, f).normalized();
+        for (int k = 0; k < 3; ++k) {
+            const Vec3& p = mesh.points[std::size_t(t[k])];
+            const Vec3 e1 = mesh.points[std::size_t(t[(k + 1) % 3])] - p;
+            const Vec3 e2 = mesh.points[std::size_t(t[(k + 2) % 3])] - p;
+            const double a = angle(e1, e2);
+            sum[std::size_t(t[k])] += a * n;
+            weight[std::size_t(t[k])] += a;
+        }
+    }
+    for (std::size_t v = 0; v < sum.size(); ++v) {
+        const double len = sum[v].norm();
+        sum[v] = len > kMinNormalRatio * weight[v] && len > 0.0 ? Vec3(sum[v] / len) : Vec3(Vec3::Zero());
+    }
+    return sum;
+}
+
 }  // namespace
+
+TEST(VertexNormals, EqualTheLoopOverTheFacesBitForBitAtAnyThreadCount)
+{
+    // bunny_res4 has duplicate faces, bunny_res3 is a scan's mesh; the
+    // icosphere gets the degenerate faces of the test below.
+    Mesh sliver = icosphere(2).mesh;
+    const Face t = sliver.faces[0];
+    sliver.points.push_back(sliver.points[std::size_t(t[0])] + 1e-7 * Vec3(1, 0, 0));
+    sliver.faces.push_back({t[0], t[1], std::int32_t(sliver.n_vertices()) - 1});
+    sliver.faces.push_back({t[0], t[0], t[1]});
+    const int saved = omp_get_max_threads();
+    for (const Mesh& m :
+         {read_mesh(data("bunny_res4_ascii.ply")).mesh, read_mesh(data("bunny_res3.ply")).mesh, sliver}) {
+        const std::vector<Vec3> want = normals_by_faces(m);
+        for (int threads : {1, 3}) {
+            omp_set_num_threads(threads);
+            const MeshData d(m);
+            const std::vector<Vec3> given = vertex_normals(d, vertex_faces(m)), derived = vertex_normals(d);
+            for (std::size_t v = 0; v < want.size(); ++v) {
+                ASSERT_EQ(given[v], want[v]) << "vertex " << v << ", " << threads << " threads";
+                ASSERT_EQ(derived[v], want[v]) << "vertex " << v << ", " << threads << " threads";
+            }
+        }
+    }
+    omp_set_num_threads(saved);
+    Mesh fewer = sliver;
+    fewer.points.pop_back();
+    fewer.faces.resize(fewer.faces.size() - 2);
+    EXPECT_THROW(vertex_normals(MeshData(fewer), vertex_faces(sliver)), InvalidArgumentError);
+}
 
 TEST(VertexNormals, OutwardOnTheSphereAndZeroWhereFacesCancel)
 {

@@ -1,7 +1,9 @@
 #include "meshdiff/core/topology.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
+#include "meshdiff/error.h"
 #include "meshdiff/io/io.h"
 #include "meshdiff/studies/shapes.h"
 
@@ -10,6 +12,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -256,6 +259,72 @@ TEST(Adjacency, SortedUniqueNeighboursOnTheTorus)
     }
     const Adjacency vf = vertex_faces(s.mesh);
     for (std::size_t v = 0; v < vf.size(); ++v) EXPECT_EQ(vf.degree(v), 6u);
+}
+
+// Brute force: per vertex, the set of the other ends of the face edges it is
+// an end of (an edge whose two ends are equal is none).
+std::vector<std::vector<std::uint32_t>> brute_force_neighbours(const Mesh& mesh)
+{
+    std::vector<std::set<std::uint32_t>> sets(mesh.n_vertices());
+    for (const Face& t : mesh.faces)
+        for (int k = 0; k < 3; ++k) {
+            const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
+            if (a == b) continue;
+            sets[a].insert(b);
+            sets[b].insert(a);
+        }
+    std::vector<std::vector<std::uint32_t>> rows;
+    for (const auto& s : sets) rows.emplace_back(s.begin(), s.end());
+    return rows;
+}
+
+void expect_adjacency(const Adjacency& a, const std::vector<std::vector<std::uint32_t>>& want)
+{
+    ASSERT_EQ(a.size(), want.size());
+    ASSERT_EQ(a.offset.back(), a.index.size());
+    for (std::size_t v = 0; v < want.size(); ++v)
+        EXPECT_EQ(std::vector<std::uint32_t>(a.begin(v), a.end(v)), want[v]) << "vertex " << v;
+}
+
+TEST(Adjacency, EqualsTheBruteForceWithDuplicateRepeatedCornerAndNonManifoldFaces)
+{
+    // bunny_res4: 40 duplicate faces; the small mesh: a face that repeats a
+    // corner, one with all corners equal, an edge of three faces, an isolated
+    // vertex (5) and a hub of 300 faces (vertex 6, past a small row's sort).
+    Mesh small;
+    small.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
+                    Vec3(1, 1, 1), Vec3(2, 2, 2), Vec3(3, 0, 0)};
+    small.faces = {{3, 1, 3}, {0, 1, 2}, {0, 2, 3}, {2, 1, 0}, {4, 4, 4}, {0, 1, 4}};
+    for (std::int32_t k = 0; k < 300; ++k) {
+        small.points.push_back(Vec3(3 + std::cos(k * 0.02), std::sin(k * 0.02), 0));
+        small.points.push_back(Vec3(3 + std::cos(k * 0.02 + 0.01), std::sin(k * 0.02 + 0.01), 0));
+        const auto a = std::int32_t(small.points.size()) - 2;
+        small.faces.push_back({6, a + 1, a});  // rows out of order: the row of 6 is sorted here
+    }
+    for (const Mesh& m : {read_mesh(data("bunny_res4_ascii.ply")).mesh, small}) {
+        const auto want = brute_force_neighbours(m);
+        expect_adjacency(vertex_adjacency(m), want);
+        expect_adjacency(vertex_adjacency(m, vertex_faces(m)), want);
+    }
+    EXPECT_EQ(vertex_adjacency(small).degree(6), 600u);
+    EXPECT_EQ(vertex_adjacency(small).degree(5), 0u);
+    Mesh other = small;
+    other.points.pop_back();  // the incidence of a mesh with one more vertex is refused
+    EXPECT_THROW(vertex_adjacency(other, vertex_faces(small)), InvalidArgumentError);
+}
+
+TEST(Adjacency, IsTheSameForAnyThreadCount)
+{
+    const Mesh m = read_mesh(data("bunny_res3.ply")).mesh;
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const Adjacency one = vertex_adjacency(m);
+    omp_set_num_threads(3);  // rows cut differently between the threads
+    const Adjacency three = vertex_adjacency(m);
+    omp_set_num_threads(saved);
+    EXPECT_EQ(one.offset, three.offset);
+    EXPECT_EQ(one.index, three.index);
+    expect_adjacency(one, brute_force_neighbours(m));
 }
 
 TEST(UniqueEdges, EqualBruteForceOnAMeshWithDuplicateFaces)

@@ -165,26 +165,12 @@ Adjacency build_csr(std::size_t n, ForEachEntry&& for_each_entry, bool dedupe)
 
 }  // namespace
 
-Adjacency vertex_adjacency(const Mesh& mesh)
-{
-    return build_csr(
-        mesh.n_vertices(),
-        [&](auto&& emit) {
-            for (const Face& t : mesh.faces)
-                for (int k = 0; k < 3; ++k) {
-                    const auto a = std::uint32_t(t[k]);
-                    const auto b = std::uint32_t(t[(k + 1) % 3]);
-                    if (a == b) continue;
-                    emit(a, b);
-                    emit(b, a);
-                }
-        },
-        true);
-}
+namespace {
 
-Adjacency vertex_faces(const Mesh& mesh)
+// vertex_faces() without the note in the derivation log: a table made and
+// freed inside one call, not a datum derived from the mesh.
+Adjacency incidence(const Mesh& mesh)
 {
-    detail::note_derivation(detail::Derived::VertexFaces, mesh);
     // Faces are visited in order, so each row comes out ascending.
     return build_csr(
         mesh.n_vertices(),
@@ -193,6 +179,64 @@ Adjacency vertex_faces(const Mesh& mesh)
                 for (auto v : mesh.faces[f]) emit(std::uint32_t(v), std::uint32_t(f));
         },
         false);
+}
+
+// The other corners of the faces of v, ascending and each once, in \p out.
+// In a triangle every two corners share an edge, so these are the ends of
+// v's edges (a face that repeats a corner gives the corners that differ).
+void neighbours_of(std::size_t v, const Mesh& mesh, const Adjacency& vertex_faces, std::vector<std::uint32_t>& out)
+{
+    out.clear();
+    for (const std::uint32_t* f = vertex_faces.begin(v); f != vertex_faces.end(v); ++f)
+        for (auto w : mesh.faces[*f])
+            if (std::size_t(w) != v) out.push_back(std::uint32_t(w));
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+}  // namespace
+
+Adjacency vertex_adjacency(const Mesh& mesh)
+{
+    return vertex_adjacency(mesh, incidence(mesh));
+}
+
+Adjacency vertex_adjacency(const Mesh& mesh, const Adjacency& vertex_faces)
+{
+    // Two passes over the vertices, in parallel: the row lengths, then the
+    // rows; no table of every half-edge (48 MB for 2M faces).
+    const std::size_t n = mesh.n_vertices();
+    if (vertex_faces.size() != n)
+        throw InvalidArgumentError("vertex_adjacency: the vertex-face incidence is not this mesh's");
+    Adjacency adj;
+    adj.offset.assign(n + 1, 0);
+#pragma omp parallel
+    {
+        std::vector<std::uint32_t> row;
+#pragma omp for schedule(static, 4096)
+        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+            neighbours_of(std::size_t(v), mesh, vertex_faces, row);
+            adj.offset[std::size_t(v) + 1] = std::uint32_t(row.size());
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) adj.offset[i + 1] += adj.offset[i];
+    adj.index.resize(adj.offset[n]);
+#pragma omp parallel
+    {
+        std::vector<std::uint32_t> row;
+#pragma omp for schedule(static, 4096)
+        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+            neighbours_of(std::size_t(v), mesh, vertex_faces, row);
+            std::copy(row.begin(), row.end(), adj.index.begin() + adj.offset[std::size_t(v)]);
+        }
+    }
+    return adj;
+}
+
+Adjacency vertex_faces(const Mesh& mesh)
+{
+    detail::note_derivation(detail::Derived::VertexFaces, mesh);
+    return incidence(mesh);
 }
 
 std::vector<char> degenerate_face_mask(const Mesh& mesh)

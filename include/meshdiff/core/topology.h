@@ -41,6 +41,11 @@ struct Adjacency
 //! edges; edges shared by several faces appear once).
 Adjacency vertex_adjacency(const Mesh& mesh);
 
+//! The same, from the mesh's vertex-face incidence (vertex_faces(mesh), or
+//! MeshData::vertex_faces()) when the caller has it. Throws
+//! InvalidArgumentError when \p vertex_faces has not one row per vertex.
+Adjacency vertex_adjacency(const Mesh& mesh, const Adjacency& vertex_faces);
+
 //! An undirected edge a < b and the lowest-numbered face that has it.
 struct Edge
 {

@@ -18,7 +18,13 @@ namespace meshdiff {
 //! length of the sum is below 1e-6 times the sum of the angle weights), gets
 //! the zero vector: callers treat it as "no normal".
 std::vector<Vec3> vertex_normals(const Mesh& mesh);
-//! The same from \p data, the derived data of the mesh (its degenerate faces).
+//! The same from \p data, the derived data of the mesh (its degenerate faces
+//! and vertex-face incidence, derived there if not yet).
 std::vector<Vec3> vertex_normals(const MeshData& data);
+//! The same from \p data's degenerate faces and \p vertex_faces, the mesh's
+//! vertex-face incidence (vertex_faces(data.mesh())), when the caller has it
+//! and would rather not keep it in \p data. Throws InvalidArgumentError when
+//! it has not one row per vertex.
+std::vector<Vec3> vertex_normals(const MeshData& data, const Adjacency& vertex_faces);
 
 }  // namespace meshdiff
