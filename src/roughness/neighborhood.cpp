@@ -454,7 +454,7 @@ void detail::disk_means_batches(const MeshData& data, const Adjacency& adj, cons
     // Centres with a defined value, in Morton order, cut into batches of kBatch (64 x kWords).
     std::vector<std::uint32_t> centres;
     centres.reserve(n);
-    const std::vector<std::uint32_t> morton = detail::morton_order(mesh, data.box());
+    std::vector<std::uint32_t> morton = detail::morton_order(mesh, data.box());
     for (auto v : clustered_order(morton, adj, values, BatchBfs<kWords>::kBatch)) centres.push_back(v);
     const std::size_t n_batches = (centres.size() + BatchBfs<kWords>::kBatch - 1) / BatchBfs<kWords>::kBatch;
     const bool all_defined = centres.size() == n;
@@ -483,12 +483,11 @@ void detail::disk_means_batches(const MeshData& data, const Adjacency& adj, cons
         return far;
     };
     const std::size_t far_input = far_neighbours(nullptr);
-    std::vector<std::uint32_t> order, rank;
+    std::vector<std::uint32_t> rank;
     bool renumber = false;
     if (far_input > adj.index.size() / 8) {
-        order = morton;
         rank.resize(n);
-        for (std::size_t i = 0; i < n; ++i) rank[order[i]] = std::uint32_t(i);
+        for (std::size_t i = 0; i < n; ++i) rank[morton[i]] = std::uint32_t(i);
         renumber = far_input > 2 * far_neighbours(rank.data());
     }
     Adjacency padj;
@@ -499,7 +498,7 @@ void detail::disk_means_batches(const MeshData& data, const Adjacency& adj, cons
         padj.index.resize(adj.index.size());
         pvalues.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
-            const std::uint32_t o = order[i];
+            const std::uint32_t o = morton[i];
             pvalues[i] = values[o];
             padj.offset[i + 1] = padj.offset[i] + std::uint32_t(adj.degree(o));
             std::uint32_t* to = padj.index.data() + padj.offset[i];
@@ -508,6 +507,10 @@ void detail::disk_means_batches(const MeshData& data, const Adjacency& adj, cons
         pcentres.resize(centres.size());
         for (std::size_t i = 0; i < centres.size(); ++i) pcentres[i] = rank[centres[i]];
     }
+    // The orders are not read by the search: freed before its workspaces are
+    // made (8 MB a 1M mesh).
+    std::vector<std::uint32_t>().swap(morton);
+    std::vector<std::uint32_t>().swap(rank);
     const Adjacency& sadj = renumber ? padj : adj;
     const std::vector<double>& svalues = renumber ? pvalues : values;
     const std::vector<std::uint32_t>& scentres = renumber ? pcentres : centres;
