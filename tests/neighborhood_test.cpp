@@ -9,6 +9,7 @@
 #include "meshdiff/studies/shapes.h"
 
 #include "geometry/simd.h"
+#include "roughness/level_stream.h"
 
 #include <omp.h>
 
@@ -424,4 +425,38 @@ TEST(DiskMeans, VectorSumsAreTheScalarSumsBitForBit)
             }
         }
     }
+}
+
+// The ranked head (the largest |D| first, ties by vertex id, NaN left out)
+// against a full sort: ties at the capacity's boundary, NaN, every capacity
+// from none to more than the defined values, with and without weights.
+TEST(RankedHead, EqualsAFullSortWithTiesNaNAndEveryCapacity)
+{
+    std::mt19937 rng(5);
+    std::uniform_int_distribution<int> level(-6, 6);
+    std::vector<double> D(300), w(300);
+    for (std::size_t i = 0; i < D.size(); ++i) {
+        D[i] = i % 7 == 3 ? std::numeric_limits<double>::quiet_NaN() : 0.25 * level(rng);  // many ties, +-0
+        w[i] = 1.0 + double(i % 5);
+    }
+    std::vector<std::uint32_t> ids;
+    for (std::size_t i = 0; i < D.size(); ++i)
+        if (!std::isnan(D[i])) ids.push_back(std::uint32_t(i));
+    std::sort(ids.begin(), ids.end(), [&](std::uint32_t x, std::uint32_t y) {
+        const double ax = std::abs(D[x]), ay = std::abs(D[y]);
+        return ax != ay ? ax > ay : x < y;
+    });
+    const std::vector<double>* none = nullptr;
+    for (const std::vector<double>* weights : {none, static_cast<const std::vector<double>*>(&w)})
+        for (std::size_t capacity = 0; capacity <= ids.size() + 2; ++capacity) {
+            const std::vector<detail::RankedD> head = detail::ranked_head(D, weights, capacity);
+            ASSERT_EQ(head.size(), std::min(capacity, ids.size())) << capacity;
+            for (std::size_t j = 0; j < head.size(); ++j) {
+                ASSERT_EQ(head[j].id, ids[j]) << "capacity " << capacity << ", rank " << j;
+                ASSERT_EQ(head[j].a, std::abs(D[ids[j]]));
+                ASSERT_EQ(head[j].w, weights ? w[ids[j]] : 1.0);
+            }
+        }
+    EXPECT_TRUE(
+        detail::ranked_head(std::vector<double>(4, std::numeric_limits<double>::quiet_NaN()), nullptr, 3).empty());
 }
