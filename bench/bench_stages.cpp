@@ -1,6 +1,7 @@
 // Benchmark of the stages every profile and comparison starts with: reading a
 // mesh file, the profile's work before its curvature fits (the normalised
-// copy, the vertex adjacency, the derived data and the vertex normals), and
+// copy, the vertex adjacency, the derived data and the vertex normals), the
+// topology report, the edge map and the pseudo-normals of a comparison, and
 // building the closest-point index of the mesh read.
 //
 // Usage: meshdiff_bench_stages [--runs N] MESH ...
@@ -14,6 +15,7 @@
 
 #include "meshdiff/core/mesh_data.h"
 #include "meshdiff/core/topology.h"
+#include "meshdiff/distance/signed_distance.h"
 #include "meshdiff/geometry/closest_point.h"
 #include "meshdiff/geometry/normalize.h"
 #include "meshdiff/geometry/normals.h"
@@ -66,7 +68,7 @@ int main(int argc, char** argv)
     }
     fmt::print("threads {}\n", omp_get_max_threads());
     for (const std::string& path : meshes) {
-        std::vector<double> read_s, normalise_s, adjacency_s, normals_s, index_s;
+        std::vector<double> read_s, normalise_s, adjacency_s, normals_s, topology_s, edges_s, pseudo_s, index_s;
         std::size_t nv = 0, nf = 0;
         for (int k = 0; k < runs; ++k) {
             auto t0 = std::chrono::steady_clock::now();
@@ -87,6 +89,18 @@ int main(int argc, char** argv)
                 normals_s.push_back(seconds_since(t0));
             }
             const MeshData data(m.mesh);
+            {
+                t0 = std::chrono::steady_clock::now();
+                (void)topology_report(data);
+                topology_s.push_back(seconds_since(t0));
+                t0 = std::chrono::steady_clock::now();
+                (void)edge_map(data);
+                edges_s.push_back(seconds_since(t0));
+                t0 = std::chrono::steady_clock::now();
+                std::string why;
+                (void)pseudo_normals(data, "mesh", &why);
+                pseudo_s.push_back(seconds_since(t0));
+            }
             t0 = std::chrono::steady_clock::now();
             {
                 const ClosestPointIndex index(data);
@@ -98,6 +112,9 @@ int main(int argc, char** argv)
         fmt::print("  normalise median {:.3f} s (runs: {})\n", timing::median(normalise_s), list(normalise_s));
         fmt::print("  adjacency median {:.3f} s (runs: {})\n", timing::median(adjacency_s), list(adjacency_s));
         fmt::print("  normals   median {:.3f} s (runs: {})\n", timing::median(normals_s), list(normals_s));
+        fmt::print("  topology  median {:.3f} s (runs: {})\n", timing::median(topology_s), list(topology_s));
+        fmt::print("  edges     median {:.3f} s (runs: {})\n", timing::median(edges_s), list(edges_s));
+        fmt::print("  pseudo-normals median {:.3f} s (runs: {})\n", timing::median(pseudo_s), list(pseudo_s));
         fmt::print("  index     median {:.3f} s (runs: {})\n", timing::median(index_s), list(index_s));
         fmt::print("  peak_rss_mib {:.0f}\n", timing::peak_rss_mib());
     }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include "meshdiff/core/mesh_data.h"
 #include "meshdiff/error.h"
 #include "meshdiff/io/io.h"
 #include "meshdiff/studies/shapes.h"
@@ -56,7 +57,25 @@ void expect_same_edges(const std::vector<Edge>& got, const std::vector<Edge>& wa
 // Brute force against EdgeMap: every half-edge 3 f + k with distinct ends,
 // grouped by its sorted pair of ends (in ascending order of h); opposite
 // where a group has two half-edges starting at different vertices.
+void expect_edge_map_is_brute_force(const Mesh& mesh, const EdgeMap& m);
+
+// The map from the mesh, and from its derived data (the half-edges grouped
+// one vertex at a time, in parallel) at 1 and 3 threads.
 void expect_edge_map_is_brute_force(const Mesh& mesh)
+{
+    expect_edge_map_is_brute_force(mesh, edge_map(mesh));
+    const int saved = omp_get_max_threads();
+    for (int threads : {1, 3}) {
+        SCOPED_TRACE(threads);
+        omp_set_num_threads(threads);
+        const MeshData data(mesh);
+        expect_edge_map_is_brute_force(mesh, edge_map(data));
+        expect_same_edges(unique_edges(data), brute_force_edges(mesh));
+    }
+    omp_set_num_threads(saved);
+}
+
+void expect_edge_map_is_brute_force(const Mesh& mesh, const EdgeMap& m)
 {
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> groups;
     for (std::uint32_t h = 0; h < 3 * mesh.n_faces(); ++h) {
@@ -64,7 +83,6 @@ void expect_edge_map_is_brute_force(const Mesh& mesh)
         if (a > b) std::swap(a, b);
         if (a != b) groups[{a, b}].push_back(h);
     }
-    const EdgeMap m = edge_map(mesh);
     expect_same_edges(m.edges, brute_force_edges(mesh));
     ASSERT_EQ(m.size(), groups.size());
     ASSERT_EQ(m.offset.size(), m.size() + 1);

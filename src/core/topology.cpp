@@ -42,12 +42,19 @@ struct SortedHalfEdges
     std::vector<std::uint32_t> start;  // per lower end, into he
     std::unique_ptr<std::uint64_t[]> he;
 
-    explicit SortedHalfEdges(const Mesh& mesh)
+    // With \p vertex_faces (the mesh's vertex-face incidence), the buckets
+    // are found and sorted one vertex at a time, in parallel; the same
+    // buckets (the keys are distinct, so sorted they are the same).
+    explicit SortedHalfEdges(const Mesh& mesh, const Adjacency* vertex_faces = nullptr)
     {
         const std::size_t n = mesh.n_vertices(), nf = mesh.n_faces();
         if (3 * std::uint64_t(nf) >= EdgeMap::kNone)
             throw InvalidMeshError(fmt::format("a mesh of {} faces has too many half-edges for an EdgeMap (at most {})",
                                                nf, EdgeMap::kNone - 1));
+        if (vertex_faces) {
+            by_vertex(mesh, *vertex_faces);
+            return;
+        }
         start.assign(n + 1, 0);
         for (const Face& t : mesh.faces)
             for (int k = 0; k < 3; ++k) {
@@ -68,10 +75,60 @@ struct SortedHalfEdges
         }
         for (std::size_t v = 0; v < n; ++v) sort_bucket(he.get() + start[v], he.get() + start[v + 1]);
     }
-    std::size_t size() const { return start.back(); }
-    std::uint32_t half_edge(std::size_t i) const { return std::uint32_t(he[i] >> 1); }
+    // The half-edges whose lower end is v, each once: f(key).
+    template <class F>
+    static void bucket_of(std::size_t v, const Mesh& mesh, const Adjacency& vertex_faces, F&& f)
+    {
+        std::uint32_t previous = EdgeMap::kNone;
+        for (const std::uint32_t* it = vertex_faces.begin(v); it != vertex_faces.end(v); ++it) {
+            if (*it == previous) continue;  // a face that repeats v: its row lists it at each corner
+            previous = *it;
+            const Face& t = mesh.faces[*it];
+            for (std::uint32_t k = 0; k < 3; ++k) {
+                const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
+                if (a == b || std::min(a, b) != v) continue;
+                const std::uint64_t h = 3 * std::uint64_t(*it) + k;
+                f((std::uint64_t(std::max(a, b)) << 33) | (h << 1) | (a < b ? 1 : 0));
+            }
+        }
+    }
+
+    void by_vertex(const Mesh& mesh, const Adjacency& vertex_faces)
+    {
+        const std::size_t n = mesh.n_vertices();
+        if (vertex_faces.size() != n)
+            throw InvalidArgumentError("edge map: the vertex-face incidence is not this mesh's");
+        start.assign(n + 1, 0);
+#pragma omp parallel for schedule(static, 4096)
+        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+            std::uint32_t count = 0;
+            bucket_of(std::size_t(v), mesh, vertex_faces, [&](std::uint64_t) { ++count; });
+            start[std::size_t(v) + 1] = count;
+        }
+        for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+        he.reset(new std::uint64_t[start[n]]);
+#pragma omp parallel for schedule(static, 4096)
+        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+            std::uint64_t* const b = he.get() + start[std::size_t(v)];
+            std::uint64_t* e = b;
+            bucket_of(std::size_t(v), mesh, vertex_faces, [&](std::uint64_t key) { *e++ = key; });
+            sort_bucket(b, e);
+        }
+    }
+
+    std::size_t size() const
+    {
+        return start.back();
+    }
+    std::uint32_t half_edge(std::size_t i) const
+    {
+        return std::uint32_t(he[i] >> 1);
+    }
     // Two half-edges in the same direction.
-    bool same_direction(std::size_t i, std::size_t j) const { return !((he[i] ^ he[j]) & 1); }
+    bool same_direction(std::size_t i, std::size_t j) const
+    {
+        return !((he[i] ^ he[j]) & 1);
+    }
 
     // f(a, b, i, j) for every edge (a, b), a < b, in the order (a, b): its
     // half-edges are [i, j).
@@ -91,9 +148,9 @@ struct SortedHalfEdges
 
 // The EdgeMap of mesh; with \p per_half_edge false, without edge_of and
 // opposite (unique_edges() and boundary_vertex_mask() need neither).
-EdgeMap build_edge_map(const Mesh& mesh, bool per_half_edge)
+EdgeMap build_edge_map(const Mesh& mesh, bool per_half_edge, const Adjacency* vertex_faces = nullptr)
 {
-    const SortedHalfEdges s(mesh);
+    const SortedHalfEdges s(mesh, vertex_faces);
     const std::size_t nf = mesh.n_faces();
     EdgeMap m;
     m.half_edge.resize(s.size());
@@ -130,6 +187,11 @@ EdgeMap build_edge_map(const Mesh& mesh, bool per_half_edge)
 EdgeMap edge_map(const Mesh& mesh)
 {
     return build_edge_map(mesh, true);
+}
+
+EdgeMap edge_map(const MeshData& data)
+{
+    return build_edge_map(data.mesh(), true, &data.vertex_faces());
 }
 
 namespace {
@@ -260,6 +322,12 @@ std::vector<char> degenerate_face_mask(const Mesh& mesh, const BoundingBox& box)
 std::vector<Edge> unique_edges(const Mesh& mesh)
 {
     EdgeMap m = build_edge_map(mesh, false);
+    return std::move(m.edges);
+}
+
+std::vector<Edge> unique_edges(const MeshData& data)
+{
+    EdgeMap m = build_edge_map(data.mesh(), false, &data.vertex_faces());
     return std::move(m.edges);
 }
 

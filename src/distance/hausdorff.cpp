@@ -82,10 +82,11 @@ void validate_inputs(const MeshData& a, const MeshData& b, const ClosestPointInd
 // parts, until every cell is closed or the budget is spent.
 struct Certification
 {
-    Certification(const Mesh& mesh_a, const Mesh& mesh_b, const ClosestPointIndex& index_b,
+    Certification(const Mesh& mesh_a, const MeshData& data_b, const ClosestPointIndex& index_b,
                   const HausdorffOptions& opts)
         : a(mesh_a),
-          b(mesh_b),
+          b(data_b.mesh()),
+          b_data(data_b),
           b_index(index_b),
           options(opts),
           floor(kHausdorffRoundingFloor * std::max(largest_coordinate(a), largest_coordinate(b))),
@@ -179,7 +180,7 @@ struct Certification
         target.longest = *std::max_element(diameter_b.begin(), diameter_b.end());
         target.diameter = std::move(diameter_b);
         stage.check();
-        target.nbr = detail::edge_neighbours(b);
+        target.nbr = detail::edge_neighbours(b_data);
         stage.check();
         target.tris = detail::Triangles(b_index);
     }
@@ -345,6 +346,7 @@ struct Certification
 
     const Mesh& a;
     const Mesh& b;
+    const MeshData& b_data;
     const ClosestPointIndex& b_index;
     const HausdorffOptions& options;
     const double floor;
@@ -375,11 +377,10 @@ CertifiedHausdorff detail::certified_hausdorff(const MeshData& a_data, const Mes
 {
     validate_inputs(a_data, b_data, b_index, options);
     const Mesh& a = a_data.mesh();
-    const Mesh& b = b_data.mesh();
     if (vq.size() != a.n_vertices())
         throw InvalidArgumentError(
             fmt::format("certified_hausdorff: {} vertex closest points for {} vertices", vq.size(), a.n_vertices()));
-    Certification s(a, b, b_index, options);
+    Certification s(a, b_data, b_index, options);
     s.set_up_lower_bound(seed, vq);
     s.set_up_target();
     s.first_round(vq);

@@ -220,9 +220,10 @@ double piece_bound(const Piece& q, std::uint32_t t, int depth, double goal, cons
 
 // Each half-edge of an edge with two or more points at the face of the next
 // one, the last at the first's (EdgeMap order: by face, then corner).
-Neighbours edge_neighbours(const Mesh& m)
+Neighbours edge_neighbours(const MeshData& data)
 {
-    const EdgeMap edges = edge_map(m);
+    const Mesh& m = data.mesh();
+    const EdgeMap edges = edge_map(data);
     Neighbours nbr(m.n_faces(), {kNone, kNone, kNone});
     for (std::size_t e = 0; e < edges.size(); ++e) {
         const std::size_t count = edges.count(e);

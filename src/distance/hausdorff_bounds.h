@@ -7,6 +7,7 @@
 #pragma once
 
 #include "meshdiff/core/mesh.h"
+#include "meshdiff/core/mesh_data.h"
 #include "meshdiff/geometry/closest_point.h"
 
 #include "geometry/bvh_build.h"
@@ -78,7 +79,7 @@ using Neighbours = std::vector<std::array<std::uint32_t, 3>>;
 //! boundary edge or a collapsed one; around a non-manifold edge the faces are
 //! linked in a cycle, in EdgeMap order, so every one is reachable): the graph
 //! of the descents.
-Neighbours edge_neighbours(const Mesh& m);
+Neighbours edge_neighbours(const MeshData& m);
 
 //! Local descent over B's faces: face \p t of B is at distance \p d from
 //! \p p; moves \p t to a neighbour closer to p (and \p d to its exact

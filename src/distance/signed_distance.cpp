@@ -124,7 +124,7 @@ SignFacts sign_facts(const MeshData& data)
     const std::size_t nf = mesh.n_faces();
     const std::vector<char>& degenerate = data.degenerate_faces();
     r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
-    EdgeMap edges = edge_map(mesh);
+    EdgeMap edges = edge_map(data);
     r.boundary_edges = edges.boundary_edges;
     r.non_manifold_edges = edges.non_manifold_edges;
     r.orientation_conflicts = edges.misoriented_edges;

@@ -131,7 +131,7 @@ SamplePlan plan_samples(const MeshData& data, const SamplingOptions& options)
 
     // Edges: density sqrt(face density) per unit length, with carry-over.
     if (options.edges) {
-        plan.edges = unique_edges(mesh);
+        plan.edges = unique_edges(data);
         const auto& edges = plan.edges;
         check_cancelled(current_progress());
         std::vector<double> len(edges.size());

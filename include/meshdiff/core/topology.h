@@ -57,6 +57,12 @@ struct Edge
 //! unless their two ends coincide. (edge_map(mesh).edges, without the rest.)
 std::vector<Edge> unique_edges(const Mesh& mesh);
 
+class MeshData;
+
+//! The same from \p data's mesh, with its vertex-face incidence (derived there
+//! if not yet): the half-edges are grouped one vertex at a time, in parallel.
+std::vector<Edge> unique_edges(const MeshData& data);
+
 //! The half-edges of a mesh grouped by undirected edge: the one edge table of
 //! meshdiff (topology report, edge sampling, dihedral angles, the descents of
 //! the certified Hausdorff distance, the pseudo-normals of signed distances).
@@ -95,6 +101,10 @@ struct EdgeMap
 //! of their edge, then a sort per vertex (a hub of degree D costs D log D).
 //! Throws InvalidMeshError when 3 x faces does not fit below EdgeMap::kNone.
 EdgeMap edge_map(const Mesh& mesh);
+
+//! The same from \p data's mesh, with its vertex-face incidence (derived there
+//! if not yet): the half-edges are grouped one vertex at a time, in parallel.
+EdgeMap edge_map(const MeshData& data);
 
 //! Mean length over the edges of \p adj (vertex_adjacency() of \p mesh), each
 //! edge counted once; 0 without edges.
