@@ -5,6 +5,7 @@
 #include <omp.h>
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <limits>
 
@@ -16,6 +17,18 @@ namespace {
 bool before(const RankedD& x, const RankedD& y)
 {
     return x.a != y.a ? x.a > y.a : x.id < y.id;
+}
+
+// Keeps the first \p m of \p v in rank, in rank order: a selection, then a
+// sort of those (a partial sort's heap was 2-3 times slower for a head of
+// 50,000 of 100,000). before() is a total order (ids differ): the same head.
+void rank_first(std::vector<RankedD>& v, std::size_t m)
+{
+    if (m < v.size()) {
+        std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(m), v.end(), before);
+        v.resize(m);
+    }
+    std::sort(v.begin(), v.end(), before);
 }
 
 }  // namespace
@@ -88,9 +101,7 @@ LevelSums LevelStream::sums(std::size_t li) const
     }
     for (const auto& worker : heads_)
         for (const Candidate& x : worker[li].items) s.head.push_back({x.a, x.id, weights_ ? (*weights_)[x.id] : 1.0});
-    const std::size_t m = std::min(capacity_, s.head.size());
-    std::partial_sort(s.head.begin(), s.head.begin() + std::ptrdiff_t(m), s.head.end(), before);
-    s.head.resize(m);
+    rank_first(s.head, capacity_);
     return s;
 }
 
@@ -117,9 +128,7 @@ std::vector<RankedD> ranked_head(const std::vector<double>& D, const std::vector
     for (std::size_t i = 0; i < D.size(); ++i)
         if (!std::isnan(D[i]) && std::abs(D[i]) >= floor)
             head.push_back({std::abs(D[i]), std::uint32_t(i), weights ? (*weights)[i] : 1.0});
-    const std::size_t m = std::min(capacity, head.size());
-    std::partial_sort(head.begin(), head.begin() + std::ptrdiff_t(m), head.end(), before);
-    head.resize(m);
+    rank_first(head, capacity);
     return head;
 }
 
@@ -147,11 +156,27 @@ void fold_levels(const MeshData& data, const Adjacency& adjacency, const std::ve
             for (std::size_t k = 0; k < b.count; ++k)
                 D[li][b.centres[k]] = values[b.centres[k]] - b.mean[li * b.stride + k];  // NaN propagates
     });
+    // Each level's sums and ranked head at once, in parallel (a head of 5 %
+    // of a 1M mesh's vertices is ranked in 10 ms per level); the callback
+    // then sees them in level order.
+    std::vector<LevelSums> sums(n_levels);
+    std::vector<std::exception_ptr> failed(n_levels);  // nothing may leave an OpenMP loop by a throw
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t li = 0; li < std::ptrdiff_t(n_levels); ++li) {
+        const auto l = std::size_t(li);
+        try {
+            sums[l] = stream.sums(l);
+            if (head > limit) sums[l].head = ranked_head(D[l], weights, head);
+        } catch (...) {
+            failed[l] = std::current_exception();
+        }
+    }
+    for (const std::exception_ptr& e : failed)
+        if (e) std::rethrow_exception(e);
     std::vector<double> none;
     for (std::size_t li = 0; li < n_levels; ++li) {
-        LevelSums sums = stream.sums(li);
-        if (head > limit) sums.head = ranked_head(D[li], weights, head);
-        level(li, sums, store ? D[li] : none);
+        level(li, sums[li], store ? D[li] : none);
+        sums[li] = LevelSums();
     }
 }
 
