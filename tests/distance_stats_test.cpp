@@ -8,10 +8,12 @@
 #include "distance/distance_accumulators.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <set>
 #include <string>
@@ -60,6 +62,57 @@ TEST(DistanceStats, NearestRankIsTheSortedElementAtCeilOfQnOver1000)
             below = p.per_mille;
         }
     }
+}
+
+// The grouped selection against a sort: exact zeros and ties, values over
+// many binades and within one group, denormals and infinity, one value; a
+// negative value or -0 takes the sorting path, a NaN is refused; at 1 and 3
+// threads.
+TEST(DistanceStats, NearestRanksEqualTheSortedElementsAndLeaveTheValues)
+{
+    std::mt19937 rng(3);
+    std::vector<std::vector<double>> cases;
+    for (const std::size_t n : {1u, 2u, 7u, 1001u, 100000u}) cases.push_back(random_distances(n, n));
+    std::vector<double> wide(20000), ties(5000, 0.0), narrow(30000);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (double& x : wide) x = std::ldexp(u(rng), int(u(rng) * 60) - 40);
+    for (std::size_t i = 0; i < ties.size(); i += 3) ties[i] = 0.5;
+    for (double& x : narrow) x = 1.0 + 1e-3 * u(rng);  // one group of the top 16 bits
+    wide[7] = std::numeric_limits<double>::denorm_min();
+    wide[9] = std::numeric_limits<double>::infinity();
+    cases.insert(cases.end(), {wide, ties, narrow});
+    std::vector<double> negative = wide, minus_zero = ties, nan = narrow;
+    negative[3] = -2.0;
+    minus_zero[4] = -0.0;
+    nan[5] = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<unsigned> per_mille = {0, 1, 500, 950, 990, 999, 1000};
+    const int saved = omp_get_max_threads();
+    for (int threads : {1, 3}) {
+        omp_set_num_threads(threads);
+        for (const std::vector<double>& v : cases) {
+            std::vector<double> sorted = v;
+            std::sort(sorted.begin(), sorted.end());
+            const std::vector<double> got = nearest_ranks(v, per_mille);
+            for (std::size_t j = 0; j < per_mille.size(); ++j) {
+                std::vector<double> w = v;
+                EXPECT_EQ(got[j], nearest_rank(w, per_mille[j])) << v.size() << " " << per_mille[j];
+                const std::size_t rank = std::max<std::size_t>(1, (per_mille[j] * v.size() + 999) / 1000);
+                EXPECT_EQ(got[j], sorted[rank - 1]) << v.size() << " " << per_mille[j];
+            }
+        }
+        for (const std::vector<double>* v : {&negative, &minus_zero}) {
+            const std::vector<double> before = *v;
+            std::vector<double> sorted = *v;
+            std::sort(sorted.begin(), sorted.end());
+            const std::vector<double> got = nearest_ranks(*v, {500, 1000});
+            EXPECT_EQ(got[0], sorted[(500 * v->size() + 999) / 1000 - 1]);
+            EXPECT_EQ(got[1], sorted.back());
+            EXPECT_EQ(std::memcmp(v->data(), before.data(), v->size() * sizeof(double)), 0);  // left as it was
+        }
+        EXPECT_THROW(nearest_ranks(nan, {0}), InvalidArgumentError);  // no rank, not a wrong one
+    }
+    omp_set_num_threads(saved);
+    EXPECT_THROW(nearest_ranks({}, {500}), InvalidArgumentError);
 }
 
 TEST(DistanceStats, PercentilesAscendAndStatFieldsAreDistinct)

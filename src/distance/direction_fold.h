@@ -50,11 +50,10 @@ public:
     }
 
     // The statistics of the n samples whose distances are \p distances (in
-    // sample order; partially sorted here), the histogram in \p bins bins
+    // sample order), the histogram in \p bins bins
     // (none for 0), the area shares below the thresholds in \p within.
     DistanceStats finish(std::vector<double>& distances, std::size_t bins, std::vector<double>& within)
     {
-        // The histogram first: the percentiles sort the distances in place.
         Histogram histogram;
         if (bins > 0) histogram = distance_histogram(distances, bins);
         DistanceStats s = stats_.finish(distances);

@@ -45,10 +45,9 @@ public:
     }
 
     //! The statistics of the samples added, whose distances are \p distances
-    //! (the same, in sample order; partially sorted here for the
-    //! percentiles). The sample counts and the other parts are left to the
-    //! caller.
-    DistanceStats finish(std::vector<double>& distances) const
+    //! (the same, in sample order). The sample counts and the other parts are
+    //! left to the caller.
+    DistanceStats finish(const std::vector<double>& distances) const
     {
         DistanceStats s = s_;
         const auto n = double(distances.size());
@@ -57,11 +56,10 @@ public:
         CompensatedSum dev;
         for (double d : distances) dev.add((d - s.mean) * (d - s.mean));
         s.stddev = std::sqrt(dev.value() / n);
-        unsigned below = 0;
-        for (const PercentileField& q : kPercentiles) {
-            s.*q.field = nearest_rank(distances, q.per_mille, below);
-            below = q.per_mille;
-        }
+        std::vector<unsigned> per_mille;
+        for (const PercentileField& q : kPercentiles) per_mille.push_back(q.per_mille);
+        const std::vector<double> p = nearest_ranks(distances, per_mille);
+        for (std::size_t j = 0; j < per_mille.size(); ++j) s.*kPercentiles[j].field = p[j];
         return s;
     }
 

@@ -149,6 +149,14 @@ inline constexpr PercentileField kPercentiles[] = {
 //! \p v must not be empty.
 double nearest_rank(std::vector<double>& v, unsigned q, unsigned below = 0);
 
+//! The nearest-rank percentiles of \p per_mille of \p v (the same values as
+//! nearest_rank()), \p v unchanged. Values that are neither negative nor NaN
+//! (distances) are counted by the top 16 bits of their binary form, in
+//! parallel, and only the few values in the groups of the ranks are then
+//! selected from; otherwise a copy of \p v is partially sorted. Throws
+//! InvalidArgumentError when \p v is empty or holds a NaN.
+std::vector<double> nearest_ranks(const std::vector<double>& v, const std::vector<unsigned>& per_mille);
+
 //! Options of the summary metrics of a surface distance (METHOD.md section 6).
 struct SummaryOptions
 {
