@@ -135,13 +135,18 @@ struct SortedHalfEdges
     template <class F>
     void for_each_edge(F&& f) const
     {
-        for (std::size_t v = 0; v + 1 < start.size(); ++v) {
-            const std::uint32_t end = start[v + 1];
-            for (std::uint32_t i = start[v], j = i; i < end; i = j) {
-                const std::uint64_t b = he[i] >> 33;
-                for (; j < end && he[j] >> 33 == b; ++j) {}
-                f(std::uint32_t(v), std::uint32_t(b), i, j);
-            }
+        for (std::size_t v = 0; v + 1 < start.size(); ++v) for_each_edge_of(v, f);
+    }
+
+    // The same for the edges whose lower end is v.
+    template <class F>
+    void for_each_edge_of(std::size_t v, F&& f) const
+    {
+        const std::uint32_t end = start[v + 1];
+        for (std::uint32_t i = start[v], j = i; i < end; i = j) {
+            const std::uint64_t b = he[i] >> 33;
+            for (; j < end && he[j] >> 33 == b; ++j) {}
+            f(std::uint32_t(v), std::uint32_t(b), i, j);
         }
     }
 };
@@ -151,34 +156,54 @@ struct SortedHalfEdges
 EdgeMap build_edge_map(const Mesh& mesh, bool per_half_edge, const Adjacency* vertex_faces = nullptr)
 {
     const SortedHalfEdges s(mesh, vertex_faces);
-    const std::size_t nf = mesh.n_faces();
+    const std::size_t n = mesh.n_vertices(), nf = mesh.n_faces();
+    // The edges are numbered in (a, b) order: those of the lower ends before
+    // v come first. Counted, then written, one lower end at a time in
+    // parallel (the same map as a walk over all of them).
+    std::vector<std::uint32_t> first(n + 1, 0);
+#pragma omp parallel for schedule(static, 4096)
+    for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+        std::uint32_t count = 0;
+        s.for_each_edge_of(std::size_t(v),
+                           [&](std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t) { ++count; });
+        first[std::size_t(v) + 1] = count;
+    }
+    for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
     EdgeMap m;
     m.half_edge.resize(s.size());
-    m.edges.reserve(s.size() / 2 + 1);
-    m.offset.reserve(s.size() / 2 + 2);
+    m.edges.resize(first[n]);
+    m.offset.resize(std::size_t(first[n]) + 1);
+    m.offset.back() = std::uint32_t(s.size());
     if (per_half_edge) {
         m.edge_of.assign(3 * nf, EdgeMap::kNone);
         m.opposite.assign(3 * nf, EdgeMap::kNone);
     }
-    s.for_each_edge([&](std::uint32_t a, std::uint32_t b, std::uint32_t i, std::uint32_t j) {
-        const auto e = std::uint32_t(m.edges.size());
-        for (std::uint32_t k = i; k < j; ++k) {
-            m.half_edge[k] = s.half_edge(k);
-            if (per_half_edge) m.edge_of[m.half_edge[k]] = e;
-        }
-        m.offset.push_back(i);
-        m.edges.push_back({a, b, m.half_edge[i] / 3});
-        m.boundary_edges += j - i == 1;
-        m.non_manifold_edges += j - i > 2;
-        if (j - i != 2) return;
-        if (s.same_direction(i, i + 1)) {
-            ++m.misoriented_edges;
-        } else if (per_half_edge) {
-            m.opposite[m.half_edge[i]] = m.half_edge[i + 1];
-            m.opposite[m.half_edge[i + 1]] = m.half_edge[i];
-        }
-    });
-    m.offset.push_back(std::uint32_t(s.size()));
+    std::size_t boundary = 0, non_manifold = 0, misoriented = 0;
+#pragma omp parallel for schedule(static, 4096) reduction(+ : boundary, non_manifold, misoriented)
+    for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+        std::uint32_t e = first[std::size_t(v)];
+        s.for_each_edge_of(std::size_t(v), [&](std::uint32_t a, std::uint32_t b, std::uint32_t i, std::uint32_t j) {
+            for (std::uint32_t k = i; k < j; ++k) {
+                m.half_edge[k] = s.half_edge(k);
+                if (per_half_edge) m.edge_of[m.half_edge[k]] = e;
+            }
+            m.offset[e] = i;
+            m.edges[e] = {a, b, m.half_edge[i] / 3};
+            ++e;
+            boundary += j - i == 1;
+            non_manifold += j - i > 2;
+            if (j - i != 2) return;
+            if (s.same_direction(i, i + 1)) {
+                ++misoriented;
+            } else if (per_half_edge) {
+                m.opposite[m.half_edge[i]] = m.half_edge[i + 1];
+                m.opposite[m.half_edge[i + 1]] = m.half_edge[i];
+            }
+        });
+    }
+    m.boundary_edges = boundary;
+    m.non_manifold_edges = non_manifold;
+    m.misoriented_edges = misoriented;
     return m;
 }
 
