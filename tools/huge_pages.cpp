@@ -8,7 +8,7 @@
 // pages are "madvise" (Debian's default) each aligned 2 MiB of it is one
 // fault, not 512. The same blocks, the same bytes: only how the kernel backs
 // them changes. 2 x 1M compare: page faults 975K -> 75K, 25.4 -> 19.8 s;
-// docs/performance.md, "Issue 30, huge pages".
+// docs/performance.md, "Issue 30, huge pages, one heap and the serial steps".
 //
 // Only the executable replaces operator new (the library and the Python
 // module leave the allocator to their host program), and not under the

@@ -34,7 +34,7 @@ int main(int argc, char** argv)
     // -> 210 MB; 2 x 1M compare 885 -> 806 MB; default compare of igea and its
     // 10 % decimation 2 % slower (more page faults), the others unchanged:
     // the workers allocate outside their loops. docs/performance.md, "Issue
-    // 30, one heap".
+    // 30, huge pages, one heap and the serial steps".
     mallopt(M_ARENA_MAX, 1);
 #endif
     std::vector<std::string> args(argv, argv + argc);
