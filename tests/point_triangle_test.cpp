@@ -1,5 +1,6 @@
 #include "meshdiff/geometry/point_triangle.h"
 
+#include "meshdiff/distance/signed_distance.h"
 #include "meshdiff/studies/shapes.h"
 
 #include "geometry/point_triangle_kernels.h"
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -155,6 +157,7 @@ TEST(PointTriangleX4, LanesAreTheScalarClosestPointsBitForBit)
     std::uniform_int_distribution<int> kind(0, 9);
     auto vec = [&] { return Vec3(u(rng), u(rng), u(rng)); };
     std::size_t compared = 0;
+    std::array<std::size_t, 7> regions{};
     for (int round = 0; round < 200000; ++round) {
         Vec3 a[4], b[4], c[4], p[4];
         const bool one_point = round % 2 == 0;
@@ -200,10 +203,21 @@ TEST(PointTriangleX4, LanesAreTheScalarClosestPointsBitForBit)
             in.c[k] = c[k].data();
         }
         double d2[4], qx[4], qy[4], qz[4];
-        detail::closest_points_x4(in, d2, qx, qy, qz);
+        const unsigned masks = detail::closest_points_x4(in, d2, qx, qy, qz);
         for (int k = 0; k < 4; ++k) {
             if (detail::is_thin_triangle(a[k], b[k], c[k])) continue;  // never given to the kernel
             const Vec3 q = detail::triangle_point(p[k], a[k], b[k], c[k]);
+            // The lane's region is the one closest_feature() finds (the signs use it).
+            const ClosestFeature f = closest_feature(p[k], a[k], b[k], c[k]);
+            ASSERT_EQ(std::memcmp(&q[0], &f.point[0], 3 * sizeof(double)), 0) << round << " lane " << k;
+            const unsigned r = detail::lane_region(masks, unsigned(k));
+            ++regions[r];
+            const unsigned expected =
+                f.kind == FeatureKind::Interior ? detail::kRegionInterior
+                : f.kind == FeatureKind::Vertex
+                    ? std::array<unsigned, 3>{detail::kRegionA, detail::kRegionB, detail::kRegionC}[f.index]
+                    : std::array<unsigned, 3>{detail::kRegionAB, detail::kRegionBC, detail::kRegionAC}[f.index];
+            ASSERT_EQ(r, expected) << round << " lane " << k;
             const double e2 = (p[k] - q).squaredNorm();
             ASSERT_EQ(std::memcmp(&e2, &d2[k], sizeof(double)), 0) << round << " lane " << k;
             ASSERT_EQ(std::memcmp(&q[0], &qx[k], sizeof(double)), 0) << round << " lane " << k;
@@ -213,4 +227,5 @@ TEST(PointTriangleX4, LanesAreTheScalarClosestPointsBitForBit)
         }
     }
     EXPECT_GT(compared, 600000u);
+    for (unsigned r = detail::kRegionA; r <= detail::kRegionInterior; ++r) EXPECT_GT(regions[r], 1000u) << r;
 }

@@ -7,6 +7,7 @@
 #include "core/compensated_sum.h"
 #include "geometry/bvh_build.h"
 #include "geometry/point_triangle_kernels.h"
+#include "geometry/point_triangle_x4.h"
 
 #include <fmt/format.h>
 
@@ -84,6 +85,28 @@ ClosestFeature face_feature(const Vec3& p, const Vec3& a, const Vec3& b, const V
 
     const Vec3 n = ab.cross(ac);
     return feature(p - (n.dot(ap) / n.squaredNorm()) * n, FeatureKind::Interior, 0);
+}
+
+// The feature of region r (detail::kRegionA ..., point_triangle_x4.h) at
+// point q: the numbering of face_feature().
+ClosestFeature kernel_feature(const Vec3& q, unsigned r)
+{
+    switch (r) {
+        case detail::kRegionA:
+            return feature(q, FeatureKind::Vertex, 0);
+        case detail::kRegionB:
+            return feature(q, FeatureKind::Vertex, 1);
+        case detail::kRegionAB:
+            return feature(q, FeatureKind::Edge, 0);
+        case detail::kRegionC:
+            return feature(q, FeatureKind::Vertex, 2);
+        case detail::kRegionAC:
+            return feature(q, FeatureKind::Edge, 2);
+        case detail::kRegionBC:
+            return feature(q, FeatureKind::Edge, 1);
+        default:
+            return feature(q, FeatureKind::Interior, 0);
+    }
 }
 
 // Angle between u and v, stable for small and large angles.
@@ -274,16 +297,23 @@ void signed_query(const Mesh& mesh, const ClosestPointIndex& index, const Pseudo
     // just read (the same corners, in the same order, and the same thinness
     // as closest_feature() finds from the mesh): no second fetch of the face
     // and its corners.
+    // Where the four-lane kernel chose the closest point, its Voronoi region
+    // comes with it (the same tests, the same point as face_feature()'s).
     const detail::Bvh& bvh = detail::bvh_of(index);
-    index.distances(queries, n, distances, [&](std::size_t i, const ClosestPoint& c) {
+    detail::distances_with_regions(index, queries, n, distances, [&](std::size_t i, const ClosestPoint& c, unsigned r) {
         if (!(c.distance > 0.0)) {
             signs[i] = 0;
             return;
         }
-        const detail::Tri& t = bvh.tris[bvh.position_of[c.face]];
         const Vec3& p = queries[i];
-        signs[i] = std::int8_t(sign_at(mesh, normals, p, c.face,
-                                       t.thin ? thin_feature(p, t.a, t.b, t.c) : face_feature(p, t.a, t.b, t.c)));
+        ClosestFeature f;
+        if (r == detail::kRegionUnknown) {
+            const detail::Tri& t = bvh.tris[bvh.position_of[c.face]];
+            f = t.thin ? thin_feature(p, t.a, t.b, t.c) : face_feature(p, t.a, t.b, t.c);
+        } else {
+            f = kernel_feature(c.point, r);
+        }
+        signs[i] = std::int8_t(sign_at(mesh, normals, p, c.face, f));
     });
 }
 

@@ -155,36 +155,44 @@ struct ClosestPointIndex::Impl : detail::Bvh
     // Lexicographic minimum of (squared distance, face) over all triangles;
     // `hint` (a position in `tris`, or kNoFace) only changes the search order:
     // the search starts in the hint's leaf and climbs towards the root.
-    ClosestPoint query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const
+    // `region`, if given: the Voronoi region of the closest point's triangle
+    // it lies in (detail::kRegionA ..., geometry/point_triangle_x4.h), or
+    // kRegionUnknown where that triangle was not given to the four-lane kernel.
+    ClosestPoint query(const Vec3& p, std::uint32_t hint, std::uint32_t* hit, unsigned* region = nullptr) const
     {
 #if MESHDIFF_HAVE_AVX512_KERNELS
-        if (detail::use_avx2()) return query_avx2(p, hint, hit);
+        if (detail::use_avx2()) return query_avx2(p, hint, hit, region);
 #endif
-        return search<false>(p, hint, hit);
+        return search<false>(p, hint, hit, region);
     }
 #if MESHDIFF_HAVE_AVX512_KERNELS
     // The query compiled for AVX2 (not FMA: the same roundings), the box
     // tests and the leaves' triangles four at once.
-    __attribute__((target("avx2"))) ClosestPoint query_avx2(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const
+    __attribute__((target("avx2"))) ClosestPoint query_avx2(const Vec3& p, std::uint32_t hint, std::uint32_t* hit,
+                                                            unsigned* region) const
     {
-        return search<true>(p, hint, hit);
+        return search<true>(p, hint, hit, region);
     }
 #endif
     template <bool kAvx2>
-    __attribute__((always_inline)) inline ClosestPoint search(const Vec3& p, std::uint32_t hint,
-                                                              std::uint32_t* hit) const;
+    __attribute__((always_inline)) inline ClosestPoint search(const Vec3& p, std::uint32_t hint, std::uint32_t* hit,
+                                                              unsigned* region) const;
     // Smallest over triangles of the largest squared distance from the corners
     // c to the triangle, stopping at the first value <= good2.
     double hull_query(const std::array<Vec3, 3>& c, double good2, std::uint32_t* face) const;
 };
 
 template <bool kAvx2>
-inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t hint, std::uint32_t* hit) const
+inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t hint, std::uint32_t* hit,
+                                                    unsigned* region) const
 {
     double best_d2 = kInf;
     std::uint32_t best_face = kNoFace;
     std::uint32_t best_pos = kNoFace;
     Vec3 best_point = Vec3::Zero();
+    // The best's region: lane best_lane of the kernel's masks best_masks
+    // (best_lane 4: not from the kernel).
+    unsigned best_masks = 0, best_lane = 4;
     auto offer = [&](double d2, std::uint32_t pos, const Vec3& q) MESHDIFF_INLINE {
         const std::uint32_t face = tris[pos].face;
         if (d2 < best_d2 || (d2 == best_d2 && face < best_face)) {
@@ -192,11 +200,13 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
             best_face = face;
             best_pos = pos;
             best_point = q;
+            return true;
         }
+        return false;
     };
     auto consider = [&](std::uint32_t pos) MESHDIFF_INLINE {
         const Vec3 q = tri_point(p, tris[pos]);
-        offer((p - q).squaredNorm(), pos, q);
+        if (offer((p - q).squaredNorm(), pos, q)) best_lane = 4;
     };
     // A leaf's triangles: with AVX2, up to four at once (bitwise the same
     // values, geometry/point_triangle_x4.h); thin ones one by one.
@@ -215,12 +225,14 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
             in.c[k] = t.c.data();
         }
         double d2[4], qx[4], qy[4], qz[4];
-        detail::closest_points_x4(in, d2, qx, qy, qz);
+        const unsigned masks = detail::closest_points_x4(in, d2, qx, qy, qz);
         for (std::uint32_t i = 0; i < count; ++i) {
-            if (tris[first + i].thin)
+            if (tris[first + i].thin) {
                 consider(first + i);
-            else
-                offer(d2[i], first + i, Vec3(qx[i], qy[i], qz[i]));
+            } else if (offer(d2[i], first + i, Vec3(qx[i], qy[i], qz[i]))) {
+                best_masks = masks;
+                best_lane = i;
+            }
         }
     };
 
@@ -290,6 +302,7 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
         }
     }
     if (hit) *hit = best_pos;
+    if (region) *region = best_lane < 4 ? detail::lane_region(best_masks, best_lane) : detail::kRegionUnknown;
     ClosestPoint r;
     r.distance = std::sqrt(best_d2);
     r.point = best_point;
@@ -507,6 +520,20 @@ void ClosestPointIndex::distances(const Vec3* queries, std::size_t n, double* ou
         const ClosestPoint c = impl.query(queries[i], hint, &hit);
         out[i] = c.distance;
         visit(i, c);
+        return hit;
+    });
+}
+
+void detail::distances_with_regions(const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
+                                    const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit)
+{
+    const ClosestPointIndex::Impl& impl = *index.impl_;
+    for_blocks(n, [&](std::size_t i, std::uint32_t hint) {
+        std::uint32_t hit = kNoFace;
+        unsigned region = kRegionUnknown;
+        const ClosestPoint c = impl.query(queries[i], hint, &hit, &region);
+        out[i] = c.distance;
+        visit(i, c, region);
         return hit;
     });
 }

@@ -78,7 +78,7 @@ MESHDIFF_AVX2 inline V dot(const V3& u, const V3& v)
 
 // detail::triangle_point(), lane by lane: the same expressions, the region
 // tests in the same order (a lane takes the first region whose test holds).
-MESHDIFF_AVX2 void closest_points_x4(const PairsX4& in, double d2[4], double qx[4], double qy[4], double qz[4])
+MESHDIFF_AVX2 unsigned closest_points_x4(const PairsX4& in, double d2[4], double qx[4], double qy[4], double qz[4])
 {
     const V3 p{lanes(in.p, 0), lanes(in.p, 1), lanes(in.p, 2)};
     const V3 a{lanes(in.a, 0), lanes(in.a, 1), lanes(in.a, 2)};
@@ -125,12 +125,20 @@ MESHDIFF_AVX2 void closest_points_x4(const PairsX4& in, double d2[4], double qx[
     _mm256_storeu_pd(qx, q.x);
     _mm256_storeu_pd(qy, q.y);
     _mm256_storeu_pd(qz, q.z);
+    return unsigned(_mm256_movemask_pd(in_a)) | unsigned(_mm256_movemask_pd(in_b)) << (4 * kRegionB) |
+           unsigned(_mm256_movemask_pd(in_ab)) << (4 * kRegionAB) |
+           unsigned(_mm256_movemask_pd(in_c)) << (4 * kRegionC) |
+           unsigned(_mm256_movemask_pd(in_ac)) << (4 * kRegionAC) |
+           unsigned(_mm256_movemask_pd(in_bc)) << (4 * kRegionBC);
 }
 
 }  // namespace meshdiff::detail
 
 #else
 namespace meshdiff::detail {
-void closest_points_x4(const PairsX4&, double*, double*, double*, double*) {}
+unsigned closest_points_x4(const PairsX4&, double*, double*, double*, double*)
+{
+    return 0;
+}
 }  // namespace meshdiff::detail
 #endif

@@ -22,9 +22,35 @@ struct PairsX4
     const double* c[4];
 };
 
+//! The Voronoi regions of a triangle (a, b, c), in the order in which
+//! detail::triangle_point() tests them: corner a, corner b, edge ab, corner c,
+//! edge ac, edge bc, then the face's interior.
+enum : unsigned
+{
+    kRegionA,
+    kRegionB,
+    kRegionAB,
+    kRegionC,
+    kRegionAC,
+    kRegionBC,
+    kRegionInterior,
+    kRegionUnknown  //!< not known (a thin triangle, or a query without the kernel)
+};
+
 //! Lane k: the closest point q[k] of triangle (a[k], b[k], c[k]) to p[k] and
-//! its squared distance d2[k]. Only where use_avx2() (compiled on x86-64 with
-//! GCC or Clang; elsewhere never called).
-void closest_points_x4(const PairsX4& in, double d2[4], double qx[4], double qy[4], double qz[4]);
+//! its squared distance d2[k]. Returns the lanes' regions, 4 bits per region
+//! from kRegionA to kRegionBC (bit 4 r + k: lane k lies in region r; a lane in
+//! none lies in the interior); see lane_region(). Only where use_avx2()
+//! (compiled on x86-64 with GCC or Clang; elsewhere never called).
+unsigned closest_points_x4(const PairsX4& in, double d2[4], double qx[4], double qy[4], double qz[4]);
+
+//! Lane \p lane's region (kRegionA .. kRegionInterior) from the masks
+//! closest_points_x4() returned.
+inline unsigned lane_region(unsigned masks, unsigned lane)
+{
+    for (unsigned r = kRegionA; r < kRegionInterior; ++r)
+        if ((masks >> (4 * r + lane)) & 1u) return r;
+    return kRegionInterior;
+}
 
 }  // namespace meshdiff::detail

@@ -49,6 +49,13 @@ struct Bvh;
 //! The index's tree and its triangles (src/geometry/bvh_build.h), for the
 //! library's own stages that read them in place (the certification's bounds).
 const Bvh& bvh_of(const ClosestPointIndex& index);
+//! ClosestPointIndex::distances() with visit(i, closest point, region): the
+//! Voronoi region of the closest point's triangle the point lies in, as
+//! src/geometry/point_triangle_x4.h numbers them (kRegionUnknown where the
+//! triangle was tested alone: a thin one, or a machine without AVX2). For the
+//! signs (signed_distance.cpp), which then need not find the region again.
+void distances_with_regions(const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
+                            const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit);
 }  // namespace detail
 
 class ClosestPointIndex
@@ -113,6 +120,9 @@ private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
     friend const detail::Bvh& detail::bvh_of(const ClosestPointIndex& index);
+    friend void detail::distances_with_regions(
+        const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
+        const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit);
 };
 
 }  // namespace meshdiff
