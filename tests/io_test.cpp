@@ -7,9 +7,16 @@
 #include "meshdiff/error.h"
 #include "meshdiff/studies/shapes.h"
 
+#include <fmt/format.h>
+
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <random>
+#include <string>
+#include <vector>
 
 using namespace meshdiff;
 using meshdiff::test::data;
@@ -172,4 +179,133 @@ TEST(ReadMesh, RepeatedCornersAreDroppedAndCounted)
     const LoadedMesh m = read_mesh(p);
     EXPECT_EQ(m.input.repeated_index_faces, 1u);
     EXPECT_EQ(m.mesh.n_faces(), 2u);
+}
+
+namespace {
+
+// A PLY of n vertices (float x y z, uchar q, short s) and the given polygons
+// (list uchar `index_type`), as ASCII (row by row, the reference), binary
+// little- or big-endian (whose triangle-only files are read in parallel).
+std::string ply_bytes(const std::string& format, const std::vector<std::array<float, 3>>& xyz,
+                      const std::vector<std::vector<std::int64_t>>& polygons, const std::string& index_type)
+{
+    std::string out = "ply\nformat " + format + " 1.0\nelement vertex " + std::to_string(xyz.size()) +
+                      "\nproperty float x\nproperty uchar q\nproperty float y\nproperty float z\nproperty short s\n"
+                      "element face " +
+                      std::to_string(polygons.size()) + "\nproperty list uchar " + index_type +
+                      " vertex_indices\nend_header\n";
+    const bool ascii = format == "ascii", big = format == "binary_big_endian";
+    auto put = [&](const void* v, std::size_t n) {
+        const auto* b = static_cast<const char*>(v);
+        for (std::size_t i = 0; i < n; ++i) out += b[big ? n - 1 - i : i];
+    };
+    for (std::size_t i = 0; i < xyz.size(); ++i) {
+        const auto q = std::uint8_t(i % 251);
+        const auto s = std::int16_t(int(i % 60000) - 30000);
+        if (ascii) {
+            out += fmt::format("{:.17g} {} {:.17g} {:.17g} {}\n", double(xyz[i][0]), q, double(xyz[i][1]),
+                               double(xyz[i][2]), s);
+            continue;
+        }
+        put(&xyz[i][0], 4);
+        put(&q, 1);
+        put(&xyz[i][1], 4);
+        put(&xyz[i][2], 4);
+        put(&s, 2);
+    }
+    for (const auto& poly : polygons) {
+        const auto n = std::uint8_t(poly.size());
+        if (ascii) {
+            out += std::to_string(poly.size());
+            for (const auto v : poly) out += " " + std::to_string(v);
+            out += "\n";
+            continue;
+        }
+        put(&n, 1);
+        for (const auto v : poly) {
+            if (index_type == "uint") {
+                const auto u = std::uint32_t(v);
+                put(&u, 4);
+            } else {
+                const auto k = std::int32_t(v);
+                put(&k, 4);
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+// Binary rows of fixed size and triangle lists are read in parallel (each row
+// from its own offset); anything else falls back to the row-by-row reading.
+// Either way: the same mesh, scalars, counts and first error as the ASCII file.
+TEST(ReadMesh, BinaryPlyRowsReadInParallelEqualTheRowByRowReading)
+{
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<float> u(-5.0f, 5.0f);
+    const std::size_t nv = 20000;
+    std::vector<std::array<float, 3>> xyz(nv);
+    for (auto& p : xyz) p = {u(rng), u(rng), u(rng)};
+    std::uniform_int_distribution<std::int64_t> vertex(0, std::int64_t(nv) - 1);
+    std::vector<std::vector<std::int64_t>> triangles(40000);
+    for (auto& t : triangles) {
+        do {
+            t = {vertex(rng), vertex(rng), vertex(rng)};
+        } while (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]);
+    }
+    struct Case
+    {
+        std::string name;
+        std::vector<std::vector<std::int64_t>> polygons;
+        std::string index_type = "int";
+    };
+    std::vector<Case> cases;
+    cases.push_back({"triangles", triangles});
+    cases.push_back({"uint", triangles, "uint"});
+    cases.push_back({"quad", triangles});  // one quad in the middle: row by row
+    cases.back().polygons[23456] = {1, 2, 3, 4};
+    cases.push_back({"repeated", triangles});  // one triangle repeating a corner: dropped and counted
+    cases.back().polygons[30001] = {5, 6, 5};
+    cases.push_back({"unused", triangles});  // vertex 0 unused: renumbered
+    for (auto& t : cases.back().polygons)
+        for (auto& v : t)
+            if (v == 0) v = 1;
+    cases.back().polygons[0] = {2, 1, 3};
+    for (const Case& c : cases) {
+        const LoadedMesh ref = read_mesh(write_text(c.name + "_ascii.ply", ply_bytes("ascii", xyz, c.polygons, "int")));
+        for (const std::string format : {"binary_little_endian", "binary_big_endian"}) {
+            const LoadedMesh m =
+                read_mesh(write_text(c.name + "_" + format + ".ply", ply_bytes(format, xyz, c.polygons, c.index_type)));
+            EXPECT_EQ(m.mesh.points, ref.mesh.points) << c.name << " " << format;
+            EXPECT_EQ(m.mesh.faces, ref.mesh.faces) << c.name << " " << format;
+            ASSERT_EQ(m.vertex_scalars.size(), 2u);
+            for (std::size_t k = 0; k < 2; ++k) {
+                EXPECT_EQ(m.vertex_scalars[k].name, ref.vertex_scalars[k].name);
+                EXPECT_EQ(m.vertex_scalars[k].values, ref.vertex_scalars[k].values) << c.name << " " << format;
+            }
+            EXPECT_EQ(m.input.file_faces, ref.input.file_faces);
+            EXPECT_EQ(m.input.polygons_triangulated, ref.input.polygons_triangulated);
+            EXPECT_EQ(m.input.repeated_index_faces, ref.input.repeated_index_faces);
+            EXPECT_EQ(m.input.unreferenced_vertices, ref.input.unreferenced_vertices);
+        }
+    }
+    EXPECT_EQ(read_mesh(write_text("q.ply", ply_bytes("binary_little_endian", xyz, cases[2].polygons, "int")))
+                  .input.polygons_triangulated,
+              1u);
+
+    // The first bad index is named, whichever thread meets it first.
+    auto bad = triangles;
+    bad[31000] = {1, 2, std::int64_t(nv)};
+    bad[9000] = {1, -4, 2};
+    for (const std::string format : {"ascii", "binary_little_endian", "binary_big_endian"}) {
+        const std::string msg = error_of<InvalidMeshError>(write_text("bad.ply", ply_bytes(format, xyz, bad, "int")));
+        EXPECT_NE(msg.find("face 9000 refers to vertex -4"), std::string::npos) << format << ": " << msg;
+    }
+    // An unsigned index beyond an int: the row-by-row reader's error.
+    auto huge = triangles;
+    huge[12345] = {1, 2, 3000000000};
+    const std::string h =
+        error_of<IoError>(write_text("huge.ply", ply_bytes("binary_little_endian", xyz, huge, "uint")));
+    EXPECT_NE(h.find("face 12345 has index 3000000000"), std::string::npos) << h;
 }

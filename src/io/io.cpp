@@ -77,6 +77,31 @@ namespace {
 
 // read_mesh() and read_mesh_or_cloud(): with \p allow_cloud, a file with
 // vertices and no faces is a point cloud.
+// A list of triangles only (a reader's uniform list), every corner in
+// [0, nv) and no triangle repeating one: \p faces gets them, in parallel.
+// Otherwise false and \p faces stays empty: the loop of read_any() reports
+// the first bad face and drops the others, in order, as for any list.
+bool fine_triangles(const detail::PolygonList& polygons, std::int64_t nv, std::vector<Face>& faces)
+{
+    if (polygons.uniform() != 3) return false;
+    const auto n = std::int64_t(polygons.size());
+    bool fine = true;
+#pragma omp parallel for schedule(static) reduction(&& : fine)
+    for (std::int64_t f = 0; f < n; ++f) {
+        const auto t = polygons[std::size_t(f)];
+        const int a = t[0], b = t[1], c = t[2];
+        if (a < 0 || a >= nv || b < 0 || b >= nv || c < 0 || c >= nv || a == b || b == c || a == c) fine = false;
+    }
+    if (!fine || n == 0) return false;
+    faces.resize(std::size_t(n));
+#pragma omp parallel for schedule(static)
+    for (std::int64_t f = 0; f < n; ++f) {
+        const auto t = polygons[std::size_t(f)];
+        faces[std::size_t(f)] = {t[0], t[1], t[2]};
+    }
+    return true;
+}
+
 LoadedMesh read_any(const std::filesystem::path& path, bool allow_cloud)
 {
     const std::string name = path.string();
@@ -149,9 +174,15 @@ LoadedMesh read_any(const std::filesystem::path& path, bool allow_cloud)
 
     // Triangulate, drop faces with a repeated corner, mark used vertices.
     std::vector<Face> faces;
-    faces.reserve(soup.polygons.size());
     std::vector<std::int32_t> remap(soup.points.size(), -1);
-    for (std::size_t f = 0; f < soup.polygons.size(); ++f) {
+    const bool all_fine = fine_triangles(soup.polygons, nv, faces);
+    if (all_fine) {
+        for (const Face& t : faces)
+            for (auto v : t) remap[std::size_t(v)] = 0;
+    } else {
+        faces.reserve(soup.polygons.size());
+    }
+    for (std::size_t f = all_fine ? soup.polygons.size() : 0; f < soup.polygons.size(); ++f) {
         const auto& poly = soup.polygons[f];
         if (poly.size() < 3) throw InvalidMeshError(fmt::format("{}: face {} has {} corners", name, f, poly.size()));
         for (int v : poly)

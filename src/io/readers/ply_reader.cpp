@@ -104,6 +104,63 @@ enum class Format
     BinaryBE
 };
 
+// A binary value of type t at buf, little- or big-endian, as a double.
+inline double decode(Type t, const unsigned char* buf, bool little)
+{
+    if (little && kHostLittleEndian) {
+        switch (t) {
+            case Type::Float32: {
+                float f;
+                std::memcpy(&f, buf, 4);
+                return double(f);
+            }
+            case Type::Float64: {
+                double d;
+                std::memcpy(&d, buf, 8);
+                return d;
+            }
+            case Type::Int32: {
+                std::int32_t i;
+                std::memcpy(&i, buf, 4);
+                return double(i);
+            }
+            case Type::UInt8:
+                return double(buf[0]);
+            default:
+                break;
+        }
+    }
+    const std::size_t n = type_size(t);
+    std::uint64_t bits = 0;
+    for (std::size_t i = 0; i < n; ++i) bits |= std::uint64_t(buf[little ? i : n - 1 - i]) << (8 * i);
+    switch (t) {
+        case Type::Int8:
+            return double(std::int8_t(bits));
+        case Type::UInt8:
+            return double(std::uint8_t(bits));
+        case Type::Int16:
+            return double(std::int16_t(bits));
+        case Type::UInt16:
+            return double(std::uint16_t(bits));
+        case Type::Int32:
+            return double(std::int32_t(bits));
+        case Type::UInt32:
+            return double(std::uint32_t(bits));
+        case Type::Float32: {
+            const auto b32 = std::uint32_t(bits);
+            float f;
+            std::memcpy(&f, &b32, 4);
+            return double(f);
+        }
+        case Type::Float64: {
+            double d;
+            std::memcpy(&d, &bits, 8);
+            return d;
+        }
+    }
+    return 0.0;
+}
+
 class Source
 {
 public:
@@ -166,59 +223,13 @@ public:
         if (size_ - pos_ < n) throw IoError(fmt::format("{}: binary PLY ends early (truncated file?)", path_));
         const auto* buf = reinterpret_cast<const unsigned char*>(body_ + pos_);
         pos_ += n;
-        if (format_ == Format::BinaryLE && kHostLittleEndian) {
-            switch (t) {
-                case Type::Float32: {
-                    float f;
-                    std::memcpy(&f, buf, 4);
-                    return double(f);
-                }
-                case Type::Float64: {
-                    double d;
-                    std::memcpy(&d, buf, 8);
-                    return d;
-                }
-                case Type::Int32: {
-                    std::int32_t i;
-                    std::memcpy(&i, buf, 4);
-                    return double(i);
-                }
-                case Type::UInt8:
-                    return double(buf[0]);
-                default:
-                    break;
-            }
-        }
-        const bool little = format_ == Format::BinaryLE;
-        std::uint64_t bits = 0;
-        for (std::size_t i = 0; i < n; ++i) bits |= std::uint64_t(buf[little ? i : n - 1 - i]) << (8 * i);
-        switch (t) {
-            case Type::Int8:
-                return double(std::int8_t(bits));
-            case Type::UInt8:
-                return double(std::uint8_t(bits));
-            case Type::Int16:
-                return double(std::int16_t(bits));
-            case Type::UInt16:
-                return double(std::uint16_t(bits));
-            case Type::Int32:
-                return double(std::int32_t(bits));
-            case Type::UInt32:
-                return double(std::uint32_t(bits));
-            case Type::Float32: {
-                const auto b32 = std::uint32_t(bits);
-                float f;
-                std::memcpy(&f, &b32, 4);
-                return double(f);
-            }
-            case Type::Float64: {
-                double d;
-                std::memcpy(&d, &bits, 8);
-                return d;
-            }
-        }
-        return 0.0;
+        return decode(t, buf, format_ == Format::BinaryLE);
     }
+
+    //! Binary bodies: the bytes not read yet (bytes_left() of them), and
+    //! skipping \p n of them (at most bytes_left()).
+    const unsigned char* here() const { return reinterpret_cast<const unsigned char*>(body_ + pos_); }
+    void skip(std::size_t n) { pos_ += n; }
 
 private:
     // Maps the file and points body_ at its bytes [start, start + want) (as
@@ -409,6 +420,82 @@ void read_rows(const std::string& path, Source& src, const Element& e, const Slo
     }
 }
 
+// Binary rows of fixed size read in parallel, each row from its own offset:
+// the same values as read_rows() (decode() as Source::value()), or false
+// (nothing read, nothing consumed) where the fast path does not apply or a
+// row is not what it assumes, so that read_rows() reads it and reports the
+// first problem as before.
+//
+// A vertex element without list properties: rows of the sum of the
+// properties' sizes.
+bool read_vertex_rows_parallel(Source& src, Format format, const Element& e, const Slots& s, PlySoup& soup)
+{
+    if (format == Format::Ascii || e.name != "vertex") return false;
+    std::size_t row = 0;
+    std::vector<std::size_t> at;
+    for (const auto& p : e.props) {
+        if (p.is_list) return false;
+        at.push_back(row);
+        row += type_size(p.type);
+    }
+    const std::uint64_t n = e.count;
+    if (n == 0 || src.bytes_left() / row < n) return false;
+    const bool little = format == Format::BinaryLE;
+    const unsigned char* body = src.here();
+    soup.points.resize(std::size_t(n));  // not zeroed (Eigen): written below
+    for (const int slot : s.scalar_slot)
+        if (slot >= 0) soup.scalar_values[std::size_t(slot)].resize(std::size_t(n));
+    const auto m = std::int64_t(n);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < m; ++i) {
+        const unsigned char* r = body + std::size_t(i) * row;
+        for (std::size_t k = 0; k < e.props.size(); ++k) {
+            const double v = decode(e.props[k].type, r + at[k], little);
+            if (int(k) == s.ix) soup.points[std::size_t(i)][0] = v;
+            if (int(k) == s.iy) soup.points[std::size_t(i)][1] = v;
+            if (int(k) == s.iz) soup.points[std::size_t(i)][2] = v;
+            if (s.scalar_slot[k] >= 0) soup.scalar_values[std::size_t(s.scalar_slot[k])][std::size_t(i)] = v;
+        }
+    }
+    src.skip(std::size_t(n) * row);
+    return true;
+}
+
+// A face element whose one property is its corner list, of an 8-bit count
+// and 32-bit indices, every count 3: rows of 13 bytes, triangles.
+bool read_triangle_rows_parallel(Source& src, Format format, const Element& e, const Slots& s, PlySoup& soup)
+{
+    if (format == Format::Ascii || e.name != "face" || e.props.size() != 1 || s.iface != 0) return false;
+    const Property& p = e.props[0];
+    if (!p.is_list || type_size(p.count_type) != 1 || (p.type != Type::Int32 && p.type != Type::UInt32)) return false;
+    constexpr std::size_t row = 13;
+    const std::uint64_t n = e.count;
+    if (n == 0 || src.bytes_left() / row < n) return false;
+    const bool little = format == Format::BinaryLE;
+    const unsigned char* body = src.here();
+    const auto m = std::int64_t(n);
+    CornerArray corners(3 * std::size_t(n));  // not zeroed: every one is written
+    // Any row that is not a triangle of indices an int holds: the serial path.
+    bool triangles = true;
+#pragma omp parallel for schedule(static) reduction(&& : triangles)
+    for (std::int64_t i = 0; i < m; ++i) {
+        const unsigned char* r = body + std::size_t(i) * row;
+        if (decode(p.count_type, r, little) != 3.0) {
+            triangles = false;
+            continue;
+        }
+        for (std::size_t j = 0; j < 3; ++j) {
+            const double v = decode(p.type, r + 1 + 4 * j, little);
+            if (!(v <= 2147483647.0)) triangles = false;  // an unsigned index beyond int
+            corners[3 * std::size_t(i) + j] = int(std::min(v, 2147483647.0));
+        }
+    }
+    if (!triangles) return false;
+    soup.polygons.assign_uniform(std::move(corners), 3);
+    src.skip(std::size_t(n) * row);
+    return true;
+}
+
 // Checks element e against the header and the bytes left, then reads it.
 void read_element(const std::string& path, Source& src, Format format, const Element& e, PlySoup& soup)
 {
@@ -424,6 +511,8 @@ void read_element(const std::string& path, Source& src, Format format, const Ele
     for (const auto& p : e.props)
         min_bytes += format == Format::Ascii ? 2 : type_size(p.is_list ? p.count_type : p.type);
     check_count(path, e.count, min_bytes, src.bytes_left(), fmt::format("{} elements", quote(e.name)));
+    if (read_vertex_rows_parallel(src, format, e, s, soup) || read_triangle_rows_parallel(src, format, e, s, soup))
+        return;
     if (e.name == "vertex") {
         soup.points.reserve(std::size_t(e.count));
         for (const int slot : s.scalar_slot)

@@ -5,9 +5,40 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace meshdiff::detail {
+
+//! An allocator whose vectors leave new ints unset (resize() does not zero
+//! what is written next anyway: the 2M-face readers' corners, 24 MB).
+template <class T>
+struct UnsetAllocator : std::allocator<T>
+{
+    template <class U>
+    struct rebind
+    {
+        using other = UnsetAllocator<U>;
+    };
+    UnsetAllocator() = default;
+    template <class U>
+    UnsetAllocator(const UnsetAllocator<U>&) noexcept
+    {}
+    template <class U>
+    void construct(U* p) noexcept
+    {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... A>
+    void construct(U* p, A&&... a)
+    {
+        ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+    }
+};
+
+//! Corner indices, not zeroed when resized.
+using CornerArray = std::vector<int, UnsetAllocator<int>>;
 
 //! Polygons of corner indices (0-based, not yet checked against the vertex
 //! count), each a contiguous run of one array.
@@ -25,9 +56,23 @@ public:
         int operator[](std::size_t k) const { return first[k]; }
     };
 
-    std::size_t size() const { return start_.size() - 1; }
+    std::size_t size() const { return uniform_ ? corners_.size() / uniform_ : start_.size() - 1; }
     bool empty() const { return size() == 0; }
-    Polygon operator[](std::size_t i) const { return {corners_.data() + start_[i], corners_.data() + start_[i + 1]}; }
+    Polygon operator[](std::size_t i) const
+    {
+        if (uniform_) return {corners_.data() + uniform_ * i, corners_.data() + uniform_ * (i + 1)};
+        return {corners_.data() + start_[i], corners_.data() + start_[i + 1]};
+    }
+    //! The corners per polygon when all have as many (assign_uniform()), else 0.
+    std::size_t uniform() const { return uniform_; }
+    //! The list becomes corners.size() / \p each polygons of \p each (> 0)
+    //! corners (no offset per polygon); it must be empty.
+    void assign_uniform(CornerArray&& corners, std::size_t each)
+    {
+        corners_ = std::move(corners);
+        start_ = {};
+        uniform_ = each;
+    }
     //! Room for \p n polygons of \p corners_each corners.
     void reserve(std::size_t n, std::size_t corners_each = 3)
     {
@@ -37,13 +82,15 @@ public:
     void push_back(const std::vector<int>& poly) { push_back(poly.data(), poly.size()); }
     void push_back(const int* corners, std::size_t n)
     {
+        // (Never after assign_uniform(): the readers fill a list one way.)
         corners_.insert(corners_.end(), corners, corners + n);
         start_.push_back(corners_.size());
     }
 
 private:
-    std::vector<int> corners_;
+    CornerArray corners_;
     std::vector<std::size_t> start_{0};
+    std::size_t uniform_ = 0;  // corners per polygon when all have as many (start_ unused)
 };
 
 }  // namespace meshdiff::detail
