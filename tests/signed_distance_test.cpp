@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -495,5 +496,36 @@ TEST(SignAvailability, CollapsedCornerFacesCountTheirEdgesAsTheTopologyReportDoe
         if (t.boundary_edges) {
             EXPECT_NE(reason.find(fmt::format("{} boundary edge", t.boundary_edges)), std::string::npos) << reason;
         }
+    }
+}
+
+// The pseudo-normals are made one face, then one vertex, at a time in
+// parallel; each vertex's sum is the loop over the faces' (in face order).
+TEST(PseudoNormals, EqualTheLoopOverTheFacesBitForBitAtAnyThreadCount)
+{
+    for (const char* name : {"fandisk.ply", "torus_R1_r025.ply", "sphere_irregular_3072.ply"}) {
+        const Mesh m = read_mesh(kData + "/" + name).mesh;
+        // The reference: the loop over the faces and their corners.
+        std::vector<Vec3> face(m.n_faces()), vertex(m.n_vertices(), Vec3::Zero());
+        const auto reference = pseudo_normals(m, "M");
+        ASSERT_TRUE(reference) << name;
+        const double s = reference->flipped ? -1.0 : 1.0;
+        for (std::size_t f = 0; f < m.n_faces(); ++f) face[f] = s * face_cross(m, f).normalized();
+        for (std::size_t f = 0; f < m.n_faces(); ++f)
+            for (std::size_t k = 0; k < 3; ++k) {
+                const Vec3& p = m.points[std::size_t(m.faces[f][k])];
+                const Vec3 u = m.points[std::size_t(m.faces[f][(k + 1) % 3])] - p;
+                const Vec3 v = m.points[std::size_t(m.faces[f][(k + 2) % 3])] - p;
+                vertex[std::size_t(m.faces[f][k])] += std::atan2(u.cross(v).norm(), u.dot(v)) * face[f];
+            }
+        const int threads = omp_get_max_threads();
+        for (const int t : {1, 3}) {
+            omp_set_num_threads(t);
+            const auto n = pseudo_normals(m, "M");
+            ASSERT_TRUE(n);
+            EXPECT_EQ(n->face, face) << name << " at " << t << " threads";
+            EXPECT_EQ(n->vertex, vertex) << name << " at " << t << " threads";
+        }
+        omp_set_num_threads(threads);
     }
 }

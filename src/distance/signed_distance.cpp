@@ -235,16 +235,32 @@ std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::str
     n.flipped = n.volume < 0.0;
     const double s = n.flipped ? -1.0 : 1.0;
     n.face.resize(nf);
-    for (std::size_t f = 0; f < nf; ++f) n.face[f] = s * face_cross(mesh, f).normalized();
-    n.vertex.assign(mesh.n_vertices(), Vec3::Zero());
-    for (std::size_t f = 0; f < nf; ++f) {
-        const Face& t = mesh.faces[f];
-        for (std::size_t k = 0; k < 3; ++k) {
-            const Vec3& p = mesh.points[std::size_t(t[k])];
+    const auto m = std::int64_t(nf);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < m; ++i) {
+        const auto f = std::size_t(i);
+        n.face[f] = s * face_cross(mesh, f).normalized();
+    }
+    // Each vertex's angle-weighted sum over its faces in ascending order (the
+    // order of a loop over the faces; no face repeats a corner here), one
+    // vertex at a time in parallel: the same sums at any thread count.
+    const Adjacency& vf = data.vertex_faces();
+    const std::size_t nv = mesh.n_vertices();
+    n.vertex.resize(nv);
+    const auto mv = std::int64_t(nv);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < mv; ++i) {
+        const auto v = std::size_t(i);
+        Vec3 sum = Vec3::Zero();
+        for (const std::uint32_t* f = vf.begin(v); f != vf.end(v); ++f) {
+            const Face& t = mesh.faces[*f];
+            const std::size_t k = std::size_t(t[0]) == v ? 0 : (std::size_t(t[1]) == v ? 1 : 2);
+            const Vec3& p = mesh.points[v];
             const Vec3& q = mesh.points[std::size_t(t[(k + 1) % 3])];
             const Vec3& r = mesh.points[std::size_t(t[(k + 2) % 3])];
-            n.vertex[std::size_t(t[k])] += angle(q - p, r - p) * n.face[f];
+            sum += angle(q - p, r - p) * n.face[*f];
         }
+        n.vertex[v] = sum;
     }
     n.opposite = std::move(facts.opposite);
     return n;

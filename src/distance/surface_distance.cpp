@@ -102,7 +102,10 @@ SampledDirection sampled_direction(const MeshData& from, const Target& to, const
     const std::size_t nv = vertex_closest ? d.samples.n_vertex : 0;  // the vertex samples come first
     d.distances.resize(n);
     signs.assign(to.normals ? n : 0, 0);
-    for (std::size_t i = 0; i < nv; ++i) {
+    const auto mv = std::int64_t(nv);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t j = 0; j < mv; ++j) {
+        const auto i = std::size_t(j);
         const ClosestPoint& c = (*vertex_closest)[d.samples.element[i]];
         d.distances[i] = c.distance;
         if (to.normals && c.distance > 0.0)
@@ -173,7 +176,10 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
         const std::size_t k = std::min(nv, begin + chunk) - begin;
         maker.make(begin, begin + k, points.data(), kind.data(), element.data());
         distances.resize(begin + k);
-        for (std::size_t i = 0; i < k; ++i) {
+        const auto kk = std::int64_t(k);
+#pragma omp parallel for schedule(static)
+        for (std::int64_t j = 0; j < kk; ++j) {
+            const auto i = std::size_t(j);
             const ClosestPoint& c = (*vertex_closest)[element[i]];
             distances[begin + i] = c.distance;
             if (to.normals)
