@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <random>
 #include <string>
 
 using namespace meshdiff;
@@ -603,6 +604,40 @@ TEST(Histogram, CountsEverySampleInEqualBinsUpToTheMaximum)
     EXPECT_THROW(distance_histogram({1.0}, 0), InvalidArgumentError);
     const Histogram zero = distance_histogram({0.0, 0.0}, 4);
     EXPECT_EQ(zero.counts[0], 2u);
+}
+
+// The histogram's maximum and counts are made in parallel: the same as the
+// loop over the distances, at any thread count (a NaN or a -0: the loop).
+TEST(Histogram, IsTheLoopOverTheDistancesAtAnyThreadCount)
+{
+    const auto reference = [](const std::vector<double>& d, std::size_t bins) {
+        const double max = *std::max_element(d.begin(), d.end());
+        Histogram h;
+        for (std::size_t i = 0; i <= bins; ++i) h.edges.push_back(max * double(i) / double(bins));
+        h.counts.assign(bins, 0);
+        const double width = max / double(bins);
+        for (double x : d) ++h.counts[width > 0.0 ? std::min(bins - 1, std::size_t(x / width)) : 0];
+        return h;
+    };
+    std::mt19937_64 rng(3);
+    std::uniform_real_distribution<double> u(0.0, 2.0);
+    std::vector<double> d(300001);
+    for (double& x : d) x = u(rng);
+    for (std::size_t i = 0; i < d.size(); i += 97) d[i] = 0.125 * double(i % 17);  // ties at bin edges
+    std::vector<double> zeros = {0.0, -0.0, 0.0};
+    const int threads = omp_get_max_threads();
+    for (const int t : {1, 3}) {
+        omp_set_num_threads(t);
+        for (const std::size_t bins : {1u, 16u, 1000u}) {
+            const Histogram h = distance_histogram(d, bins), r = reference(d, bins);
+            EXPECT_EQ(h.edges, r.edges) << t << " threads, " << bins << " bins";
+            EXPECT_EQ(h.counts, r.counts) << t << " threads, " << bins << " bins";
+        }
+        const Histogram hz = distance_histogram(zeros, 4);
+        EXPECT_EQ(hz.counts, reference(zeros, 4).counts);
+        EXPECT_FALSE(std::signbit(hz.edges[0]));  // the first of the equal maxima, +0
+    }
+    omp_set_num_threads(threads);
 }
 
 TEST(SummaryMetrics, MeanSquaresConvergeToTheSurfaceIntegral)

@@ -168,16 +168,40 @@ Histogram distance_histogram(const std::vector<double>& distances, std::size_t b
 {
     if (bins == 0) throw InvalidArgumentError("distance_histogram: bins must be positive");
     if (distances.empty()) throw InvalidArgumentError("distance_histogram: no distances");
-    const double max = *std::max_element(distances.begin(), distances.end());
+    // The largest and the counts in parallel (exact: a maximum and integer
+    // counts do not depend on the order); with a NaN or a -0 (whose place
+    // among equal values would matter), serially as before.
+    const auto m = std::ptrdiff_t(distances.size());
+    double max = distances[0];
+    bool nan = false;
+#pragma omp parallel for schedule(static) reduction(max : max) reduction(|| : nan)
+    for (std::ptrdiff_t i = 0; i < m; ++i) {
+        const double d = distances[std::size_t(i)];
+        nan = nan || std::isnan(d) || (d == 0.0 && std::signbit(d));
+        max = std::max(max, d);
+    }
+    if (nan) max = *std::max_element(distances.begin(), distances.end());
     Histogram h;
     h.edges.resize(bins + 1);
     for (std::size_t i = 0; i <= bins; ++i) h.edges[i] = max * double(i) / double(bins);
     h.counts.assign(bins, 0);
     const double width = max / double(bins);
-    for (double d : distances) {
+    const auto bin = [&](double d) {
         std::size_t k = 0;
         if (width > 0.0) k = std::min(bins - 1, std::size_t(d / width));
-        ++h.counts[k];
+        return k;
+    };
+    if (nan) {
+        for (double d : distances) ++h.counts[bin(d)];
+        return h;
+    }
+#pragma omp parallel
+    {
+        std::vector<std::size_t> local(bins, 0);
+#pragma omp for schedule(static) nowait
+        for (std::ptrdiff_t i = 0; i < m; ++i) ++local[bin(distances[std::size_t(i)])];
+#pragma omp critical
+        for (std::size_t k = 0; k < bins; ++k) h.counts[k] += local[k];
     }
     return h;
 }
