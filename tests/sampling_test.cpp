@@ -8,6 +8,7 @@
 #include "geometry/sample_plan.h"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <string>
 
@@ -288,4 +289,34 @@ TEST(Sampling, SamplesMadeInPiecesAreTheSamplesBitForBit)
                 EXPECT_EQ(element, all.element[i]) << i;
             }
         }
+}
+
+// The plan's face areas and edge lengths are computed in parallel and summed
+// in order: the same samples and densities at any thread count.
+TEST(Sampling, IsTheSameAtAnyThreadCount)
+{
+    Mesh m = read_mesh(kData + "/bunny_res4_ascii.ply").mesh;
+    const auto n = std::int32_t(m.points.size());
+    m.points.emplace_back(0.0, 0.0, 1.0);
+    m.points.emplace_back(1.0, 0.0, 1.0);
+    m.points.emplace_back(2.0, 0.0, 1.0);
+    m.faces.push_back({n, n + 1, n + 2});  // a degenerate face
+    const int threads = omp_get_max_threads();
+    for (const FaceSampling scheme : {FaceSampling::SimilarTriangles, FaceSampling::MonteCarlo}) {
+        SamplingOptions o;
+        o.samples = 30000;
+        o.face_scheme = scheme;
+        omp_set_num_threads(1);
+        const SurfaceSamples one = sample_surface(m, o);
+        omp_set_num_threads(3);
+        const SurfaceSamples three = sample_surface(m, o);
+        EXPECT_EQ(one.points, three.points);
+        EXPECT_EQ(one.element, three.element);
+        EXPECT_TRUE(one.kind == three.kind);
+        EXPECT_EQ(one.edge_density, three.edge_density);
+        EXPECT_EQ(one.face_density, three.face_density);
+        EXPECT_GT(one.n_edge, 0u);
+        EXPECT_GT(one.n_face, 0u);
+    }
+    omp_set_num_threads(threads);
 }

@@ -99,10 +99,17 @@ SamplePlan plan_samples(const MeshData& data, const SamplingOptions& options)
     s.target = sample_target(data, options, 10 * mesh.n_faces());
 
     const auto& degenerate = data.degenerate_faces();
-    std::vector<double> face_area(mesh.n_faces(), 0.0);
+    // The faces' areas in parallel, summed in face order.
+    std::vector<double> face_area(mesh.n_faces());
+    const auto nf = std::int64_t(mesh.n_faces());
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < nf; ++i) {
+        const auto f = std::size_t(i);
+        face_area[f] = degenerate[f] ? 0.0 : 0.5 * face_cross(mesh, f).norm();
+    }
     double area = 0.0;
     for (std::size_t f = 0; f < mesh.n_faces(); ++f)
-        if (!degenerate[f]) area += face_area[f] = 0.5 * face_cross(mesh, f).norm();
+        if (!degenerate[f]) area += face_area[f];
     // Coordinates near 1e80 make the squared norms overflow: the area is inf,
     // the face density 0, inf x 0 a NaN count, and the lattice order of a NaN
     // cast to an integer a loop without end. validate() refuses such meshes
@@ -134,10 +141,16 @@ SamplePlan plan_samples(const MeshData& data, const SamplingOptions& options)
         plan.edges = unique_edges(data);
         const auto& edges = plan.edges;
         check_cancelled(current_progress());
+        // The edges' lengths in parallel, summed in edge order.
         std::vector<double> len(edges.size());
+        const auto ne = std::int64_t(edges.size());
+#pragma omp parallel for schedule(static)
+        for (std::int64_t j = 0; j < ne; ++j) {
+            const auto i = std::size_t(j);
+            len[i] = (mesh.points[edges[i].b] - mesh.points[edges[i].a]).norm();
+        }
         double length = 0.0;
-        for (std::size_t i = 0; i < edges.size(); ++i)
-            length += len[i] = (mesh.points[edges[i].b] - mesh.points[edges[i].a]).norm();
+        for (std::size_t i = 0; i < edges.size(); ++i) length += len[i];
         if (!std::isfinite(length))
             throw InvalidMeshError(fmt::format(
                 "sample_surface: the edge length is not finite (coordinates beyond meshdiff's limit of +-{}?)",
