@@ -529,3 +529,41 @@ TEST(PseudoNormals, EqualTheLoopOverTheFacesBitForBitAtAnyThreadCount)
         omp_set_num_threads(threads);
     }
 }
+
+// Four spheres in a chain, each pair sharing one vertex: three vertices whose
+// faces form two fans. The fans are walked one vertex at a time in parallel:
+// the same count as the topology report at any thread count.
+TEST(SignAvailability, PinchedVerticesAreCountedAtAnyThreadCount)
+{
+    const Mesh sphere = icosphere(2).mesh;
+    Mesh chain;
+    std::int32_t previous_top = -1;
+    for (int k = 0; k < 4; ++k) {
+        const auto base = std::int32_t(chain.points.size());
+        // Sphere k's lowest vertex goes onto sphere k-1's highest one.
+        std::size_t low = 0, high = 0;
+        for (std::size_t v = 0; v < sphere.n_vertices(); ++v) {
+            if (sphere.points[v].z() < sphere.points[low].z()) low = v;
+            if (sphere.points[v].z() > sphere.points[high].z()) high = v;
+        }
+        const Vec3 shift = k == 0 ? Vec3::Zero() : Vec3(chain.points[std::size_t(previous_top)] - sphere.points[low]);
+        for (const Vec3& p : sphere.points) chain.points.push_back(p + shift);
+        for (Face t : sphere.faces) {
+            for (auto& v : t) v = (k > 0 && std::size_t(v) == low) ? previous_top : base + v;
+            chain.faces.push_back(t);
+        }
+        previous_top = base + std::int32_t(high);
+    }
+    const TopologyReport t = topology_report(chain);
+    EXPECT_EQ(t.non_manifold_vertices, 3u);
+    EXPECT_EQ(t.boundary_edges + t.non_manifold_edges + t.orientation_conflicts, 0u);
+    const int threads = omp_get_max_threads();
+    for (const int n : {1, 3}) {
+        omp_set_num_threads(n);
+        const std::string reason = sign_unavailable_reason(chain, "M");
+        EXPECT_NE(reason.find("has 3 non-manifold vertices"), std::string::npos) << reason;
+        EXPECT_FALSE(pseudo_normals(chain, "M"));
+        EXPECT_TRUE(pseudo_normals(sphere, "M"));
+    }
+    omp_set_num_threads(threads);
+}

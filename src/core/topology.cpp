@@ -337,7 +337,10 @@ std::vector<char> degenerate_face_mask(const Mesh& mesh, const BoundingBox& box)
     const double diag = box.diagonal();
     const double eps = kDegenerateArea * diag * diag;
     std::vector<char> mask(mesh.n_faces(), 0);
-    for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
+    const auto nf = std::int64_t(mesh.n_faces());
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < nf; ++i) {
+        const auto f = std::size_t(i);
         const Face& t = mesh.faces[f];
         mask[f] = (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] || !(face_cross(mesh, f).norm() > eps)) ? 1 : 0;
     }

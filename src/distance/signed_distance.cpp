@@ -144,7 +144,6 @@ SignFacts sign_facts(const MeshData& data)
 {
     const Mesh& mesh = data.mesh();
     SignFacts r;
-    const std::size_t nf = mesh.n_faces();
     const std::vector<char>& degenerate = data.degenerate_faces();
     r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
     EdgeMap edges = edge_map(data);
@@ -155,20 +154,44 @@ SignFacts sign_facts(const MeshData& data)
     if (r.boundary_edges || r.non_manifold_edges || r.orientation_conflicts || r.degenerate_faces) return r;
     // Fans: around each vertex, the corners linked through the opposite
     // half-edges form cycles; more than one cycle is a non-manifold vertex.
-    std::vector<char> visited(3 * nf, 0);
-    std::vector<std::uint8_t> fans(mesh.n_vertices(), 0);
-    for (std::size_t c0 = 0; c0 < 3 * nf; ++c0) {
-        if (visited[c0]) continue;
-        const auto u = std::size_t(mesh.faces[c0 / 3][c0 % 3]);
-        if (fans[u] < 2) ++fans[u];
-        std::size_t c = c0;
-        do {
-            visited[c] = 1;
-            const std::size_t h = r.opposite[c];  // the half-edge into u in the next face
-            c = 3 * (h / 3) + (h % 3 + 1) % 3;
-        } while (c != c0);
+    // One vertex at a time, in parallel, over its corners (one per face of
+    // its incidence row: no face repeats a corner here).
+    const Adjacency& vf = data.vertex_faces();
+    const auto nv = std::int64_t(mesh.n_vertices());
+    std::size_t non_manifold = 0;
+#pragma omp parallel reduction(+ : non_manifold)
+    {
+        std::vector<char> visited;
+#pragma omp for schedule(dynamic, 4096)
+        for (std::int64_t i = 0; i < nv; ++i) {
+            const auto u = std::size_t(i);
+            const std::uint32_t* first = vf.begin(u);
+            const std::size_t d = vf.degree(u);
+            // Corner of u in face f; its place in u's row (rows ascend).
+            const auto corner = [&](std::size_t f) {
+                const Face& t = mesh.faces[f];
+                return 3 * f + (std::size_t(t[0]) == u ? 0 : (std::size_t(t[1]) == u ? 1 : 2));
+            };
+            const auto place = [&](std::size_t f) {
+                const std::uint32_t* at = std::lower_bound(first, first + d, std::uint32_t(f));
+                return at != first + d && *at == f ? std::size_t(at - first) : d;  // d: not a face of u
+            };
+            visited.assign(d, 0);
+            std::size_t cycles = 0;
+            for (std::size_t k0 = 0; k0 < d && cycles < 2; ++k0) {
+                if (visited[k0]) continue;
+                ++cycles;
+                std::size_t k = k0;
+                for (std::size_t steps = 0; steps < d && k < d && !visited[k]; ++steps) {
+                    visited[k] = 1;
+                    const std::size_t h = r.opposite[corner(first[k])];  // the half-edge into u in the next face
+                    k = place(h / 3);
+                }
+            }
+            non_manifold += cycles >= 2;
+        }
     }
-    r.non_manifold_vertices = std::size_t(std::count(fans.begin(), fans.end(), 2));
+    r.non_manifold_vertices = non_manifold;
     return r;
 }
 
