@@ -773,6 +773,14 @@ TEST(SurfaceDistance, ChunkedSamplesGiveTheKeptSamplesStatisticsBitForBit)
                 expect_same_vector(kept.original_vertex_distance, chunked.original_vertex_distance);
                 expect_same_vector(kept.processed_vertex_signed_distance, chunked.processed_vertex_signed_distance);
             }
+            // A chunk is folded by one thread of the team that queries the
+            // next: the same at 1 and 3 threads.
+            const int threads = omp_get_max_threads();
+            for (const int t : {1, 3}) {
+                omp_set_num_threads(t);
+                expect_every_bit(kept, detail::surface_distance(*c.a, *c.b, options, detail::kQueryBlock));
+            }
+            omp_set_num_threads(threads);
             // The public call (default chunks) too.
             expect_every_bit(kept, surface_distance(*c.a, *c.b, distance_options(o, cert, so)));
             // And the deprecated positional overload (0.2), its kept samples

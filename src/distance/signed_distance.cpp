@@ -5,6 +5,7 @@
 #include "meshdiff/error.h"
 
 #include "core/compensated_sum.h"
+#include "distance/signed_query.h"
 #include "geometry/bvh_build.h"
 #include "geometry/point_triangle_kernels.h"
 #include "geometry/point_triangle_x4.h"
@@ -332,6 +333,13 @@ std::vector<double> signed_distances(const Mesh& mesh, const PseudoNormals& norm
 void signed_query(const Mesh& mesh, const ClosestPointIndex& index, const PseudoNormals& normals, const Vec3* queries,
                   std::size_t n, double* distances, std::int8_t* signs)
 {
+    detail::signed_query(mesh, index, normals, queries, n, distances, signs, {});
+}
+
+void detail::signed_query(const Mesh& mesh, const ClosestPointIndex& index, const PseudoNormals& normals,
+                          const Vec3* queries, std::size_t n, double* distances, std::int8_t* signs,
+                          const std::function<void()>& beside)
+{
     // The feature from the index's copy of the triangle, which the query has
     // just read (the same corners, in the same order, and the same thinness
     // as closest_feature() finds from the mesh): no second fetch of the face
@@ -339,21 +347,24 @@ void signed_query(const Mesh& mesh, const ClosestPointIndex& index, const Pseudo
     // Where the four-lane kernel chose the closest point, its Voronoi region
     // comes with it (the same tests, the same point as face_feature()'s).
     const detail::Bvh& bvh = detail::bvh_of(index);
-    detail::distances_with_regions(index, queries, n, distances, [&](std::size_t i, const ClosestPoint& c, unsigned r) {
-        if (!(c.distance > 0.0)) {
-            signs[i] = 0;
-            return;
-        }
-        const Vec3& p = queries[i];
-        ClosestFeature f;
-        if (r == detail::kRegionUnknown) {
-            const detail::Tri& t = bvh.tris[bvh.position_of[c.face]];
-            f = t.thin ? thin_feature(p, t.a, t.b, t.c) : face_feature(p, t.a, t.b, t.c);
-        } else {
-            f = kernel_feature(c.point, r);
-        }
-        signs[i] = std::int8_t(sign_at(mesh, normals, p, c.face, f));
-    });
+    detail::distances_with_regions(
+        index, queries, n, distances,
+        [&](std::size_t i, const ClosestPoint& c, unsigned r) {
+            if (!(c.distance > 0.0)) {
+                signs[i] = 0;
+                return;
+            }
+            const Vec3& p = queries[i];
+            ClosestFeature f;
+            if (r == detail::kRegionUnknown) {
+                const detail::Tri& t = bvh.tris[bvh.position_of[c.face]];
+                f = t.thin ? thin_feature(p, t.a, t.b, t.c) : face_feature(p, t.a, t.b, t.c);
+            } else {
+                f = kernel_feature(c.point, r);
+            }
+            signs[i] = std::int8_t(sign_at(mesh, normals, p, c.face, f));
+        },
+        beside);
 }
 
 double winding_number(const Mesh& mesh, const Vec3& p)

@@ -8,6 +8,7 @@
 #include "core/stage_progress.h"
 #include "distance/direction_fold.h"
 #include "distance/hausdorff_seeded.h"
+#include "distance/signed_query.h"
 #include "distance/surface_distance_chunks.h"
 #include "distance/two_directions.h"
 #include "geometry/sample_plan.h"
@@ -17,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <future>
 #include <limits>
 #include <string_view>
@@ -160,57 +162,90 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
     if (n == 0) throw InvalidArgumentError("SamplingOptions: the enabled sample kinds give no sample on this mesh");
     const std::size_t nv = vertex_closest ? plan.counts.n_vertex : 0;  // the vertex samples come first
     // Grown chunk by chunk, so that its pages become resident as the plan's
-    // vertex and edge lists are freed.
+    // vertex and edge lists are freed; reserved, so never moved while a
+    // chunk's distances are folded.
     std::vector<double> distances;
     distances.reserve(n);
     const std::size_t m = std::min(chunk, n);
-    std::vector<Vec3> points(m);
-    std::vector<SampleKind> kind(m);
-    std::vector<std::uint32_t> element(m);
-    std::vector<std::int8_t> signs(to.normals ? m : 0, 0);
+    // Two sets of buffers: a chunk is folded into the statistics (serially,
+    // in sample order) by one thread of the team that queries the next one
+    // in the other set (the others query meanwhile).
+    struct Buffers
+    {
+        std::vector<Vec3> points;
+        std::vector<SampleKind> kind;
+        std::vector<std::uint32_t> element;
+        std::vector<std::int8_t> signs;
+    };
+    Buffers buffers[2];
+    for (Buffers& b : buffers) {
+        b.points.resize(m);
+        b.kind.resize(m);
+        b.element.resize(m);
+        b.signs.assign(to.normals ? m : 0, 0);
+    }
     detail::SampleMaker maker(from, plan);
     DirectionFold fold(from, plan, thresholds, to.normals != nullptr);
+    // The chunk made and queried last, not folded yet: [begin, begin + k) in b.
+    struct Pending
+    {
+        std::size_t begin = 0, k = 0;
+        const Buffers* b = nullptr;
+    } pending;
+    auto fold_pending = [&] {
+        if (!pending.b) return;
+        const Buffers& b = *pending.b;
+        fold.add(pending.k, b.points.data(), b.kind.data(), b.element.data(), distances.data() + pending.begin,
+                 b.signs.data());
+        pending.b = nullptr;
+    };
+    std::size_t chunks = 0;
 
     // The vertex samples with their distances from vertex_closest.
     for (std::size_t begin = 0; begin < nv; begin += chunk) {
         const std::size_t k = std::min(nv, begin + chunk) - begin;
-        maker.make(begin, begin + k, points.data(), kind.data(), element.data());
+        Buffers& b = buffers[chunks++ % 2];
+        maker.make(begin, begin + k, b.points.data(), b.kind.data(), b.element.data());
         distances.resize(begin + k);
         const auto kk = std::int64_t(k);
 #pragma omp parallel for schedule(static)
         for (std::int64_t j = 0; j < kk; ++j) {
             const auto i = std::size_t(j);
-            const ClosestPoint& c = (*vertex_closest)[element[i]];
+            const ClosestPoint& c = (*vertex_closest)[b.element[i]];
             distances[begin + i] = c.distance;
             if (to.normals)
-                signs[i] = c.distance > 0.0 ? std::int8_t(distance_sign(to.mesh, *to.normals, points[i], c.face)) : 0;
+                b.signs[i] =
+                    c.distance > 0.0 ? std::int8_t(distance_sign(to.mesh, *to.normals, b.points[i], c.face)) : 0;
         }
-        fold.add(k, points.data(), kind.data(), element.data(), distances.data() + begin, signs.data());
+        fold_pending();
+        pending = {begin, k, &b};
     }
     // The others queried, as one stage.
     Progress* progress = current_progress();
     detail::StageProgress stage("distances", n - nv);
     for (std::size_t begin = nv; begin < n; begin += chunk) {
         const std::size_t k = std::min(n, begin + chunk) - begin;
-        maker.make(begin, begin + k, points.data(), kind.data(), element.data());
+        Buffers& b = buffers[chunks++ % 2];  // not the pending chunk's
+        maker.make(begin, begin + k, b.points.data(), b.kind.data(), b.element.data());
         distances.resize(begin + k);
         {
             PartProgress part(progress, begin - nv);
             const ProgressScope scope(progress ? &part : nullptr);
+            const std::function<void()> beside = pending.b ? std::function<void()>(fold_pending) : nullptr;
             if (to.normals)
-                signed_query(to.mesh, to.index, *to.normals, points.data(), k, distances.data() + begin, signs.data());
+                detail::signed_query(to.mesh, to.index, *to.normals, b.points.data(), k, distances.data() + begin,
+                                     b.signs.data(), beside);
             else
-                to.index.distances(points.data(), k, distances.data() + begin);
+                detail::distances_with_regions(to.index, b.points.data(), k, distances.data() + begin, {}, beside);
         }
-        fold.add(k, points.data(), kind.data(), element.data(), distances.data() + begin, signs.data());
+        fold_pending();  // if the team did not (an empty chunk list)
+        pending = {begin, k, &b};
         if (begin + k >= plan.counts.n_vertex + plan.counts.n_edge)
-            plan.drop_vertices_and_edges();  // face samples left
+            plan.drop_vertices_and_edges();  // face samples left (the fold reads the face offsets only)
     }
+    fold_pending();
     stage.finish();
-    points = {};
-    kind = {};
-    element = {};
-    signs = {};
+    for (Buffers& b : buffers) b = {};
     return fold.finish(distances, bins, within);
 }
 

@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <exception>
+#include <functional>
 #include <limits>
 
 #if MESHDIFF_HAVE_AVX512_KERNELS
@@ -460,19 +462,37 @@ ClosestPoint ClosestPointIndex::closest_point(const Vec3& p, std::uint32_t near_
 
 namespace {
 // Runs f(i, hint) -> hit over fixed blocks of queries in parallel; within a
-// block, each query is seeded with the previous query's triangle.
+// block, each query is seeded with the previous query's triangle. `beside`,
+// if given, is run once by one of the threads before it takes blocks (the
+// others take blocks meanwhile: the team is not oversubscribed); an exception
+// it throws is rethrown once the blocks are done.
 template <class F>
-void for_blocks(std::size_t n, F&& f)
+void for_blocks(std::size_t n, F&& f, const std::function<void()>& beside = {})
 {
     const auto n_blocks = std::int64_t((n + kBlock - 1) / kBlock);
     detail::StageProgress stage("distances", n);
-#pragma omp parallel for schedule(dynamic, 1)
-    for (std::int64_t b = 0; b < n_blocks; ++b) {
-        const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
-        if (!stage.tick(end - std::size_t(b) * kBlock)) continue;
-        std::uint32_t hint = kNoFace;
-        for (std::size_t i = std::size_t(b) * kBlock; i < end; ++i) hint = f(i, hint);
+    std::exception_ptr failed;
+#pragma omp parallel
+    {
+        if (beside) {
+#pragma omp single nowait
+            {
+                try {
+                    beside();
+                } catch (...) {
+                    failed = std::current_exception();
+                }
+            }
+        }
+#pragma omp for schedule(dynamic, 1)
+        for (std::int64_t b = 0; b < n_blocks; ++b) {
+            const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
+            if (!stage.tick(end - std::size_t(b) * kBlock)) continue;
+            std::uint32_t hint = kNoFace;
+            for (std::size_t i = std::size_t(b) * kBlock; i < end; ++i) hint = f(i, hint);
+        }
     }
+    if (failed) std::rethrow_exception(failed);
     stage.finish();
 }
 }  // namespace
@@ -525,17 +545,32 @@ void ClosestPointIndex::distances(const Vec3* queries, std::size_t n, double* ou
 }
 
 void detail::distances_with_regions(const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
-                                    const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit)
+                                    const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit,
+                                    const std::function<void()>& beside)
 {
     const ClosestPointIndex::Impl& impl = *index.impl_;
-    for_blocks(n, [&](std::size_t i, std::uint32_t hint) {
-        std::uint32_t hit = kNoFace;
-        unsigned region = kRegionUnknown;
-        const ClosestPoint c = impl.query(queries[i], hint, &hit, &region);
-        out[i] = c.distance;
-        visit(i, c, region);
-        return hit;
-    });
+    if (!visit) {
+        for_blocks(
+            n,
+            [&](std::size_t i, std::uint32_t hint) {
+                std::uint32_t hit = kNoFace;
+                out[i] = impl.query(queries[i], hint, &hit).distance;
+                return hit;
+            },
+            beside);
+        return;
+    }
+    for_blocks(
+        n,
+        [&](std::size_t i, std::uint32_t hint) {
+            std::uint32_t hit = kNoFace;
+            unsigned region = kRegionUnknown;
+            const ClosestPoint c = impl.query(queries[i], hint, &hit, &region);
+            out[i] = c.distance;
+            visit(i, c, region);
+            return hit;
+        },
+        beside);
 }
 
 double ClosestPointIndex::hull_distance_bound(const std::array<Vec3, 3>& corners, double good_enough,

@@ -54,8 +54,12 @@ const Bvh& bvh_of(const ClosestPointIndex& index);
 //! src/geometry/point_triangle_x4.h numbers them (kRegionUnknown where the
 //! triangle was tested alone: a thin one, or a machine without AVX2). For the
 //! signs (signed_distance.cpp), which then need not find the region again.
+//! Without \p visit, the distances only. \p beside, if given, is run once by
+//! one thread of the team while the others query (the surface distance folds
+//! the previous chunk of samples so); its exception is rethrown at the end.
 void distances_with_regions(const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
-                            const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit);
+                            const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit,
+                            const std::function<void()>& beside = {});
 }  // namespace detail
 
 class ClosestPointIndex
@@ -122,7 +126,8 @@ private:
     friend const detail::Bvh& detail::bvh_of(const ClosestPointIndex& index);
     friend void detail::distances_with_regions(
         const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
-        const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit);
+        const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit,
+        const std::function<void()>& beside);
 };
 
 }  // namespace meshdiff
