@@ -52,15 +52,15 @@ public:
     // The statistics of the n samples whose distances are \p distances (in
     // sample order), the histogram in \p bins bins
     // (none for 0), the area shares below the thresholds in \p within.
-    DistanceStats finish(std::vector<double>& distances, std::size_t bins, std::vector<double>& within)
+    DistanceStats finish(const double* distances, std::size_t n, std::size_t bins, std::vector<double>& within)
     {
         Histogram histogram;
-        if (bins > 0) histogram = distance_histogram(distances, bins);
-        DistanceStats s = stats_.finish(distances);
+        if (bins > 0) histogram = distance_histogram(distances, n, bins);
+        DistanceStats s = stats_.finish(distances, n);
         s.n_vertex = plan_.counts.n_vertex;
         s.n_edge = plan_.counts.n_edge;
         s.n_face = plan_.counts.n_face;
-        if (signed_) s.signed_distance = signed_stats_.finish(distances.size());
+        if (signed_) s.signed_distance = signed_stats_.finish(n);
         s.area_weighted = area_weighted(within);
         s.histogram = std::move(histogram);
         return s;

@@ -22,6 +22,12 @@
 
 namespace meshdiff::detail {
 
+//! nearest_ranks() and distance_histogram() (distance_stats.h) of the \p n
+//! values at \p v (the surface distance's chunks keep theirs in an array that
+//! is not zeroed before the queries write it).
+std::vector<double> nearest_ranks(const double* v, std::size_t n, const std::vector<unsigned>& per_mille);
+Histogram distance_histogram(const double* distances, std::size_t n, std::size_t bins);
+
 //! min, max (with where it lies), mean, RMS, standard deviation and the
 //! percentiles of kPercentiles.
 class DistanceAccumulator
@@ -47,18 +53,18 @@ public:
     //! The statistics of the samples added, whose distances are \p distances
     //! (the same, in sample order). The sample counts and the other parts are
     //! left to the caller.
-    DistanceStats finish(const std::vector<double>& distances) const
+    DistanceStats finish(const double* distances, std::size_t count) const
     {
         DistanceStats s = s_;
-        const auto n = double(distances.size());
+        const auto n = double(count);
         s.mean = sum_.value() / n;
         s.rms = std::sqrt(sum2_.value() / n);
         CompensatedSum dev;
-        for (double d : distances) dev.add((d - s.mean) * (d - s.mean));
+        for (std::size_t i = 0; i < count; ++i) dev.add((distances[i] - s.mean) * (distances[i] - s.mean));
         s.stddev = std::sqrt(dev.value() / n);
         std::vector<unsigned> per_mille;
         for (const PercentileField& q : kPercentiles) per_mille.push_back(q.per_mille);
-        const std::vector<double> p = nearest_ranks(distances, per_mille);
+        const std::vector<double> p = nearest_ranks(distances, count, per_mille);
         for (std::size_t j = 0; j < per_mille.size(); ++j) s.*kPercentiles[j].field = p[j];
         return s;
     }

@@ -33,7 +33,11 @@ double nearest_rank(std::vector<double>& v, unsigned q, unsigned below)
 
 std::vector<double> nearest_ranks(const std::vector<double>& v, const std::vector<unsigned>& per_mille)
 {
-    const std::size_t n = v.size();
+    return detail::nearest_ranks(v.data(), v.size(), per_mille);
+}
+
+std::vector<double> detail::nearest_ranks(const double* v, std::size_t n, const std::vector<unsigned>& per_mille)
+{
     if (n == 0) throw InvalidArgumentError("nearest_ranks: no values");
     std::vector<double> out(per_mille.size());
     // A value >= 0 (not NaN) orders as its bits read as an unsigned integer:
@@ -70,7 +74,7 @@ std::vector<double> nearest_ranks(const std::vector<double>& v, const std::vecto
     }
     if (nan) throw InvalidArgumentError("nearest_ranks: a value is NaN (it has no rank)");
     if (!plain) {
-        std::vector<double> copy = v;
+        std::vector<double> copy(v, v + n);
         for (std::size_t j = 0; j < per_mille.size(); ++j) out[j] = nearest_rank(copy, per_mille[j]);
         return out;
     }
@@ -166,12 +170,17 @@ std::optional<AreaWeightedStats> area_weighted_stats(const Mesh& from, const Sur
 
 Histogram distance_histogram(const std::vector<double>& distances, std::size_t bins)
 {
+    return detail::distance_histogram(distances.data(), distances.size(), bins);
+}
+
+Histogram detail::distance_histogram(const double* distances, std::size_t n, std::size_t bins)
+{
     if (bins == 0) throw InvalidArgumentError("distance_histogram: bins must be positive");
-    if (distances.empty()) throw InvalidArgumentError("distance_histogram: no distances");
+    if (n == 0) throw InvalidArgumentError("distance_histogram: no distances");
     // The largest and the counts in parallel (exact: a maximum and integer
     // counts do not depend on the order); with a NaN or a -0 (whose place
     // among equal values would matter), serially as before.
-    const auto m = std::ptrdiff_t(distances.size());
+    const auto m = std::ptrdiff_t(n);
     double max = distances[0];
     bool nan = false;
 #pragma omp parallel for schedule(static) reduction(max : max) reduction(|| : nan)
@@ -180,7 +189,7 @@ Histogram distance_histogram(const std::vector<double>& distances, std::size_t b
         nan = nan || std::isnan(d) || (d == 0.0 && std::signbit(d));
         max = std::max(max, d);
     }
-    if (nan) max = *std::max_element(distances.begin(), distances.end());
+    if (nan) max = *std::max_element(distances, distances + n);
     Histogram h;
     h.edges.resize(bins + 1);
     for (std::size_t i = 0; i <= bins; ++i) h.edges[i] = max * double(i) / double(bins);
@@ -192,7 +201,7 @@ Histogram distance_histogram(const std::vector<double>& distances, std::size_t b
         return k;
     };
     if (nan) {
-        for (double d : distances) ++h.counts[bin(d)];
+        for (std::size_t i = 0; i < n; ++i) ++h.counts[bin(distances[i])];
         return h;
     }
 #pragma omp parallel
@@ -246,7 +255,7 @@ DistanceStats distance_stats(const SurfaceSamples& samples, const std::vector<do
         acc.add(distances[i], samples.points[i], i < samples.kind.size() ? samples.kind[i] : SampleKind::OnVertex,
                 i < samples.element.size() ? samples.element[i] : 0);
     std::vector<double> sorted = distances;
-    DistanceStats s = acc.finish(sorted);
+    DistanceStats s = acc.finish(sorted.data(), sorted.size());
     s.n_vertex = samples.n_vertex;
     s.n_edge = samples.n_edge;
     s.n_face = samples.n_face;

@@ -6,6 +6,7 @@
 #include "meshdiff/error.h"
 
 #include "core/stage_progress.h"
+#include "core/unset_allocator.h"
 #include "distance/direction_fold.h"
 #include "distance/hausdorff_seeded.h"
 #include "distance/signed_query.h"
@@ -164,7 +165,8 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
     // Grown chunk by chunk, so that its pages become resident as the plan's
     // vertex and edge lists are freed; reserved, so never moved while a
     // chunk's distances are folded.
-    std::vector<double> distances;
+    // Not zeroed: the queries (in parallel) are the first to write them.
+    std::vector<double, detail::UnsetAllocator<double>> distances;
     distances.reserve(n);
     const std::size_t m = std::min(chunk, n);
     // Two sets of buffers: a chunk is folded into the statistics (serially,
@@ -179,7 +181,10 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
     };
     Buffers buffers[2];
     for (Buffers& b : buffers) {
-        b.points.resize(m);
+        b.points.resize(m);  // not zeroed (Eigen): first written in parallel below
+        const auto mm = std::int64_t(m);
+#pragma omp parallel for schedule(static)
+        for (std::int64_t i = 0; i < mm; ++i) b.points[std::size_t(i)] = Vec3::Zero();
         b.kind.resize(m);
         b.element.resize(m);
         b.signs.assign(to.normals ? m : 0, 0);
@@ -246,7 +251,7 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
     fold_pending();
     stage.finish();
     for (Buffers& b : buffers) b = {};
-    return fold.finish(distances, bins, within);
+    return fold.finish(distances.data(), distances.size(), bins, within);
 }
 
 // The signed distances: sign x distance (0 where the sign is 0).

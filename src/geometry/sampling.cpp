@@ -225,7 +225,10 @@ void SampleMaker::make(std::size_t begin, std::size_t end, Vec3* points, SampleK
 
     // Vertices.
     const std::size_t nv = plan.counts.n_vertex;
-    for (std::size_t at = begin; at < std::min(end, nv); ++at) {
+    const auto vertex_end = std::int64_t(std::min(end, nv));
+#pragma omp parallel for schedule(static)
+    for (std::int64_t a = std::int64_t(begin); a < vertex_end; ++a) {
+        const auto at = std::size_t(a);
         const std::uint32_t v = plan.vertices[at];
         put(at, mesh.points[v], SampleKind::OnVertex, v);
     }

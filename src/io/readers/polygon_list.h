@@ -3,6 +3,8 @@
 // polygon: a reader of a 2M-face file made 2M small vectors before).
 #pragma once
 
+#include "core/unset_allocator.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -10,32 +12,6 @@
 #include <vector>
 
 namespace meshdiff::detail {
-
-//! An allocator whose vectors leave new ints unset (resize() does not zero
-//! what is written next anyway: the 2M-face readers' corners, 24 MB).
-template <class T>
-struct UnsetAllocator : std::allocator<T>
-{
-    template <class U>
-    struct rebind
-    {
-        using other = UnsetAllocator<U>;
-    };
-    UnsetAllocator() = default;
-    template <class U>
-    UnsetAllocator(const UnsetAllocator<U>&) noexcept
-    {}
-    template <class U>
-    void construct(U* p) noexcept
-    {
-        ::new (static_cast<void*>(p)) U;
-    }
-    template <class U, class... A>
-    void construct(U* p, A&&... a)
-    {
-        ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
-    }
-};
 
 //! Corner indices, not zeroed when resized.
 using CornerArray = std::vector<int, UnsetAllocator<int>>;
