@@ -243,7 +243,7 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
             else
                 detail::distances_with_regions(to.index, b.points.data(), k, distances.data() + begin, {}, beside);
         }
-        fold_pending();  // if the team did not (an empty chunk list)
+        fold_pending();  // a no-op: the team ran it (kept so that no chunk can be left unfolded)
         pending = {begin, k, &b};
         if (begin + k >= plan.counts.n_vertex + plan.counts.n_edge)
             plan.drop_vertices_and_edges();  // face samples left (the fold reads the face offsets only)
