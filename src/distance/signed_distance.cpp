@@ -5,6 +5,7 @@
 #include "meshdiff/error.h"
 
 #include "core/compensated_sum.h"
+#include "core/face_corner.h"
 #include "distance/signed_query.h"
 #include "geometry/bvh_build.h"
 #include "geometry/point_triangle_kernels.h"
@@ -171,7 +172,7 @@ SignFacts sign_facts(const MeshData& data)
             // Corner of u in face f; its place in u's row (rows ascend).
             const auto corner = [&](std::size_t f) {
                 const Face& t = mesh.faces[f];
-                return 3 * f + (std::size_t(t[0]) == u ? 0 : (std::size_t(t[1]) == u ? 1 : 2));
+                return 3 * f + std::size_t(detail::corner_of(t, u));
             };
             const auto place = [&](std::size_t f) {
                 const std::uint32_t* at = std::lower_bound(first, first + d, std::uint32_t(f));
@@ -278,7 +279,7 @@ std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::str
         Vec3 sum = Vec3::Zero();
         for (const std::uint32_t* f = vf.begin(v); f != vf.end(v); ++f) {
             const Face& t = mesh.faces[*f];
-            const std::size_t k = std::size_t(t[0]) == v ? 0 : (std::size_t(t[1]) == v ? 1 : 2);
+            const auto k = std::size_t(detail::corner_of(t, v));
             const Vec3& p = mesh.points[v];
             const Vec3& q = mesh.points[std::size_t(t[(k + 1) % 3])];
             const Vec3& r = mesh.points[std::size_t(t[(k + 2) % 3])];

@@ -1,20 +1,12 @@
 #include "meshdiff/geometry/cotangent.h"
 
+#include "core/face_corner.h"
+
 #include <utility>
 
 namespace meshdiff {
 
-namespace {
-
-// The position k (0..2) of vertex i in face t, 3 if absent.
-int corner_of(const Face& t, std::size_t i)
-{
-    int k = 0;
-    while (k < 3 && std::size_t(t[std::size_t(k)]) != i) ++k;
-    return k;
-}
-
-}  // namespace
+using detail::corner_of;
 
 CotangentSums cotangent_sums(const Mesh& mesh, const Adjacency& vf, const std::vector<Vec3>& p, std::size_t i)
 {

@@ -3,6 +3,8 @@
 #include "meshdiff/core/tolerances.h"
 #include "meshdiff/error.h"
 
+#include "core/face_corner.h"
+
 #include <cmath>
 
 namespace meshdiff {
@@ -37,7 +39,7 @@ std::vector<Vec3> vertex_normals(const MeshData& data, const Adjacency& vertex_f
             const std::size_t f = *fi;
             if (degenerate[f]) continue;  // a face that repeats a corner is degenerate
             const Face& t = mesh.faces[f];
-            const int k = std::size_t(t[0]) == v ? 0 : std::size_t(t[1]) == v ? 1 : 2;
+            const int k = detail::corner_of(t, v);
             const Vec3 nf = face_cross(mesh, f).normalized();
             const Vec3& p = mesh.points[v];
             const Vec3 e1 = mesh.points[std::size_t(t[(k + 1) % 3])] - p;
