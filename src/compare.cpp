@@ -80,45 +80,18 @@ Comparison compare_with_cloud(const LoadedMesh& a, const LoadedMesh& b, const Co
     return c;
 }
 
-// The two sigma profiles, their distance and, if asked for, the local
-// difference (options checked).
-// The index of the original the local difference builds, and the closest
-// points of the processed mesh's vertices on it, are left in \p handed for
-// the surface distance's backward direction.
-void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, const LoadedMesh& b, const MeshData& b_data,
-                const CompareOptions& options, detail::HandedToDistance& handed)
+// The local difference with metric levels: two indexes, one after the other.
+template <typename IndexOf>
+void local_with_radii(Comparison& c, const LoadedMesh& a, const MeshData& a_data, const LoadedMesh& b,
+                      const MeshData& b_data, const CompareOptions& options, detail::HandedToDistance& handed,
+                      const IndexOf& index_of)
 {
-    // The local difference needs H per vertex, not D: the profiles keep H
-    // only (their ring levels then fold D batch by batch, level_stream.h).
-    const ProfileOptions& po = options.profile;
-    if (po.normalize == NormalizeMethod::Original) {
-        Normalization frame = unit_normalization(a.mesh);
-        frame.method = NormalizeMethod::Original;
-        c.original_profile = detail::roughness_profile_keeping_H(a.mesh, po, frame, options.local);
-        c.processed_profile = detail::roughness_profile_keeping_H(b.mesh, po, frame, options.local);
-    } else {
-        validate(po);
-        c.original_profile =
-            detail::roughness_profile_keeping_H(a.mesh, po, normalization_of(a.mesh, po.normalize), options.local);
-        c.processed_profile =
-            detail::roughness_profile_keeping_H(b.mesh, po, normalization_of(b.mesh, po.normalize), options.local);
-    }
-    c.roughness = roughness_distance(*c.original_profile, *c.processed_profile, options.k);
-    if (!options.local) return;
     // The local difference (local_roughness.h): the ring levels and the global
     // level over the processed mesh's vertices and its own rings, against the
     // original surface (a level is each mesh's own L-ring, as in the
     // profiles); the radii over the original's vertices and balls, against the
     // processed surface (a radius is the same patch on both meshes, and the
-    // original samples it densest). An index the caller built is used
-    // (surface_distance() checks it too), otherwise one of our own.
-    auto index_of = [](const ClosestPointIndex* given, const MeshData& data, std::optional<ClosestPointIndex>& own,
-                       const char* name) -> const ClosestPointIndex& {
-        if (!given) return own.emplace(data);
-        if (given->n_faces() != data.mesh().n_faces())
-            throw InvalidArgumentError(fmt::format("CompareOptions: index_{0} is not an index of the {0} mesh", name));
-        return *given;
-    };
+    // original samples it densest).
     // The radii first: their index of the processed mesh is freed before the
     // original's is built for the ring levels and kept in \p handed.
     std::optional<LocalRoughnessDistance> on_original;
@@ -143,6 +116,53 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, cons
         c.local_roughness->rms_radii = std::move(on_original->rms_radii);
         c.local_roughness->vertices_radii = on_original->vertices_radii;
     }
+}
+
+// The two sigma profiles, their distance and, if asked for, the local
+// difference (options checked). The index of the original the local
+// difference builds, and the closest points of the processed mesh's vertices
+// on it, are left in \p handed for the surface distance's backward direction.
+void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, const LoadedMesh& b, const MeshData& b_data,
+                const CompareOptions& options, detail::HandedToDistance& handed)
+{
+    // The local difference needs H per vertex, not D: the profiles keep H
+    // only (their ring levels then fold D batch by batch, level_stream.h).
+    const ProfileOptions& po = options.profile;
+    auto frame_of = [&](const Mesh& mesh) {
+        if (po.normalize != NormalizeMethod::Original) return normalization_of(mesh, po.normalize);
+        Normalization frame = unit_normalization(a.mesh);
+        frame.method = NormalizeMethod::Original;
+        return frame;
+    };
+    validate(po);
+    c.original_profile = detail::roughness_profile_keeping_H(a.mesh, po, frame_of(a.mesh), options.local);
+    // An index the caller built is used (surface_distance() checks it too),
+    // otherwise one of our own.
+    auto index_of = [](const ClosestPointIndex* given, const MeshData& data, std::optional<ClosestPointIndex>& own,
+                       const char* name) -> const ClosestPointIndex& {
+        if (!given) return own.emplace(data);
+        if (given->n_faces() != data.mesh().n_faces())
+            throw InvalidArgumentError(fmt::format("CompareOptions: index_{0} is not an index of the {0} mesh", name));
+        return *given;
+    };
+    std::vector<ClosestPoint>* closest = options.distance && options.hausdorff ? &handed.b_vertices_on_a : nullptr;
+    if (options.local && po.radii.empty()) {
+        // The local difference's ring levels (local_roughness.h) are over
+        // the processed mesh's own rings: folded in its profile's ring
+        // search (one search, not two), from the change of H at its vertices
+        // against the original, whose index is built first for it.
+        const ClosestPointIndex& index = index_of(options.index_original, a_data, handed.index_a, "original");
+        detail::LocalRingsInProfile local(b.mesh, a.mesh, *c.original_profile, index, options.local_trim,
+                                          options.vertex_distances, true, closest);
+        c.processed_profile = detail::roughness_profile_keeping_H(
+            b.mesh, po, frame_of(b.mesh), true,
+            [&](const Mesh& unit, const std::vector<double>& H) { return local.start(unit, H, po.levels); });
+        c.local_roughness = local.finish(*c.processed_profile);
+    } else {
+        c.processed_profile = detail::roughness_profile_keeping_H(b.mesh, po, frame_of(b.mesh), options.local);
+    }
+    c.roughness = roughness_distance(*c.original_profile, *c.processed_profile, options.k);
+    if (options.local && !c.local_roughness) local_with_radii(c, a, a_data, b, b_data, options, handed, index_of);
     if (!options.profile.keep_vertex_data)
         for (RoughnessProfile* p : {&*c.original_profile, &*c.processed_profile}) {
             p->H = {};

@@ -491,3 +491,62 @@ TEST(LocalRoughness, FoldedLevelsAreTheStoredLevelsButForTheRoundingOfTheirSums)
         }
     }
 }
+
+// compare_meshes() folds the local difference's ring levels in the processed
+// mesh's profile's ring search (one search, not two): its levels, global
+// level, counts and per-vertex maps are those of local_roughness_distance()
+// on the same profiles to the last bit, and the processed profile is
+// roughness_profile()'s, at 1 and 3 threads, on closed and open meshes.
+TEST(LocalRoughness, ComparisonFoldsItsLevelsInTheProcessedProfilesRingSearch)
+{
+    struct Pair
+    {
+        const char* name;
+        Mesh a, b;
+    };
+    Mesh cap_a = plane_grid(24, 20, 0.05).mesh, cap_b = plane_grid(17, 15, 0.07).mesh;
+    for (Mesh* m : {&cap_a, &cap_b})
+        for (auto& p : m->points) p.z() = 0.3 * std::sin(4.0 * p.x()) * std::cos(3.0 * p.y());
+    const std::vector<Pair> pairs = {{"noisy spheres", noisy_sphere(3, 0.02, 1).mesh, noisy_sphere(2, 0.03, 2).mesh},
+                                     {"open bumps", cap_a, cap_b}};
+    for (const Pair& pair : pairs)
+        for (const double trim : {0.0, 0.05})
+            for (const int threads : {1, 3}) {
+                SCOPED_TRACE(testing::Message() << pair.name << ", trim " << trim << ", " << threads << " threads");
+                CompareOptions o;
+                o.distance = false;
+                o.profile.levels = {1, 2, 5, 9};
+                o.profile.keep_vertex_data = true;
+                o.vertex_distances = true;
+                o.local_trim = trim;
+                const int saved = omp_get_max_threads();
+                omp_set_num_threads(threads);
+                const Comparison c = compare_meshes(loaded(pair.a), loaded(pair.b), o);
+                omp_set_num_threads(saved);
+                ASSERT_TRUE(c.local_roughness);
+                const RoughnessProfile &pa = *c.original_profile, &pb = *c.processed_profile;
+                const LocalRoughnessDistance alone =
+                    local_roughness_distance(pair.b, pb, pair.a, pa, ClosestPointIndex(pair.a), trim, true);
+                const LocalRoughnessDistance& l = *c.local_roughness;
+                EXPECT_EQ(l.levels, alone.levels);
+                ASSERT_EQ(l.rms.size(), 4u);
+                for (std::size_t k = 0; k < l.rms.size(); ++k) {
+                    EXPECT_GT(l.rms[k], 0.0);
+                    EXPECT_EQ(l.rms[k], alone.rms[k]) << "level " << l.levels[k];
+                    EXPECT_EQ(l.used[k], alone.used[k]) << "level " << l.levels[k];
+                    ASSERT_EQ(l.vertex.size(), 4u);
+                    for (std::size_t i = 0; i < pair.b.n_vertices(); ++i)
+                        ASSERT_TRUE(l.vertex[k][i] == alone.vertex[k][i] ||
+                                    (std::isnan(l.vertex[k][i]) && std::isnan(alone.vertex[k][i])))
+                            << "vertex " << i << ", level " << l.levels[k];
+                }
+                EXPECT_TRUE(l.has_global);
+                EXPECT_EQ(l.global, alone.global);
+                EXPECT_EQ(l.vertices, alone.vertices);
+                EXPECT_EQ(l.vertices_radii, 0u);
+                const RoughnessProfile own = roughness_profile(pair.b, o.profile);
+                for (std::size_t k = 0; k < own.levels.size(); ++k)
+                    EXPECT_EQ(pb.levels[k].sigma, own.levels[k].sigma) << "level " << own.levels[k].level;
+                EXPECT_EQ(pb.global.sigma, own.global.sigma);
+            }
+}

@@ -460,3 +460,127 @@ TEST(RankedHead, EqualsAFullSortWithTiesNaNAndEveryCapacity)
     EXPECT_TRUE(
         detail::ranked_head(std::vector<double>(4, std::numeric_limits<double>::quiet_NaN()), nullptr, 3).empty());
 }
+
+namespace {
+
+// disk_means_batches() with \p second: both sets of means, per level and vertex.
+std::pair<std::vector<std::vector<double>>, std::vector<std::vector<double>>> means_of_two(
+    const Mesh& mesh, const Adjacency& adj, const std::vector<double>& values, const std::vector<double>& second,
+    const std::vector<int>& levels)
+{
+    const std::size_t n = mesh.n_vertices();
+    std::vector<std::vector<double>> first(levels.size(), std::vector<double>(n, std::nan(""))), other = first;
+    detail::disk_means_batches(MeshData(mesh), adj, values, &second, levels, false,
+                               [&](const detail::DiskMeansBatch& b) {
+                                   for (std::size_t li = 0; li < levels.size(); ++li)
+                                       for (std::size_t k = 0; k < b.count; ++k) {
+                                           first[li][b.centres[k]] = b.mean[li * b.stride + k];
+                                           other[li][b.centres[k]] = b.mean2[li * b.stride + k];
+                                       }
+                               });
+    return {first, other};
+}
+
+// A fan of 1500 triangles around vertex 0 beside a grid (the whole-word sums).
+Mesh hub_mesh()
+{
+    Mesh mesh;
+    const int n = 1500;
+    mesh.points.emplace_back(0.0, 0.0, 0.1);
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * M_PI * i / n;
+        mesh.points.emplace_back(std::cos(a), std::sin(a), 0.01 * std::sin(7.0 * a));
+    }
+    for (int i = 0; i < n; ++i) mesh.faces.push_back({0, 1 + i, 1 + (i + 1) % n});
+    append(mesh, plane_grid(20, 20, 0.1).mesh, Vec3(1.5, 0, 0));
+    mesh.faces.push_back({1, n + 1, n + 2});
+    return mesh;
+}
+
+// \p mesh with its vertices in a random order (the search's renumbered copy).
+Mesh shuffled(const Mesh& mesh, unsigned seed)
+{
+    const std::size_t n = mesh.n_vertices();
+    std::vector<std::uint32_t> perm(n);
+    std::iota(perm.begin(), perm.end(), 0u);
+    std::shuffle(perm.begin(), perm.end(), std::mt19937(seed));
+    Mesh out;
+    out.points.resize(n);
+    for (std::size_t i = 0; i < n; ++i) out.points[perm[i]] = mesh.points[i];
+    out.faces = mesh.faces;
+    for (auto& f : out.faces)
+        for (auto& v : f) v = int(perm[std::size_t(v)]);
+    return out;
+}
+
+}  // namespace
+
+// Two sets of values over one ring search (a profile's H and the local
+// difference's change of H): where both are defined at the same vertices, each
+// set's means are its own search's to the last bit, with either kernel, at 1
+// and 3 threads, with whole-word sums around a hub and on a renumbered copy;
+// where the second is defined at fewer vertices, its means differ from its own
+// search's in the rounding only, and are NaN exactly where those are.
+TEST(DiskMeans, SecondValuesShareTheSearchBitForBit)
+{
+    const std::vector<int> levels = {1, 2, 3, 5, 8, 13, 20};
+    struct Case
+    {
+        std::string name;
+        Mesh mesh;
+    };
+    std::vector<Case> cases;
+    for (const char* name : {"fandisk.ply", "hemisphere.ply"}) cases.push_back({name, read_mesh(data(name)).mesh});
+    cases.push_back({"hub", hub_mesh()});
+    cases.push_back({"shuffled torus", shuffled(torus_irregular(12000, 1.0, 0.3, 7).mesh, 3)});
+    const int saved = omp_get_max_threads();
+    for (const Case& c : cases) {
+        const Mesh& mesh = c.mesh;
+        const Adjacency adj = vertex_adjacency(mesh);
+        const std::size_t n = mesh.n_vertices();
+        if (c.name == "shuffled torus") {
+            std::size_t far = 0;
+            for (std::size_t v = 0; v < n; ++v)
+                for (auto it = adj.begin(v); it != adj.end(v); ++it) far += (*it > v ? *it - v : v - *it) > 4096;
+            ASSERT_GT(far, adj.index.size() / 4) << "the order is not scattered enough to take the renumbered path";
+        }
+        for (const bool vector : {false, true}) {
+            if (vector && !detail::cpu_has_avx512()) continue;
+            const KernelChoice choice(vector);
+            for (const int nan_every : {0, 7}) {
+                std::vector<double> values(n), same(n), fewer(n);
+                for (std::size_t i = 0; i < n; ++i) {
+                    const bool undefined = nan_every && i % std::size_t(nan_every) == 1;
+                    values[i] = undefined ? std::nan("") : 3.0 * hashed_value(i) - 4.5;
+                    same[i] = undefined ? std::nan("") : 2.0 * hashed_value(i + n) - 0.5;
+                    fewer[i] = i % 5 == 2 ? std::nan("") : same[i];
+                }
+                const DiskMeans own = disk_means(mesh, adj, values, levels, false);
+                const DiskMeans own_same = disk_means(mesh, adj, same, levels, false);
+                const DiskMeans own_fewer = disk_means(mesh, adj, fewer, levels, false);
+                for (const int threads : {1, 3}) {
+                    SCOPED_TRACE(testing::Message() << c.name << (vector ? ", AVX-512" : ", scalar") << ", NaN every "
+                                                    << nan_every << ", " << threads << " threads");
+                    omp_set_num_threads(threads);
+                    const auto [first, second] = means_of_two(mesh, adj, values, same, levels);
+                    const auto [first_f, second_f] = means_of_two(mesh, adj, values, fewer, levels);
+                    omp_set_num_threads(saved);
+                    for (std::size_t k = 0; k < levels.size(); ++k) {
+                        ASSERT_TRUE(bitwise_equal(first[k], own.mean[k])) << "level " << levels[k];
+                        ASSERT_TRUE(bitwise_equal(first_f[k], own.mean[k])) << "level " << levels[k];
+                        ASSERT_TRUE(bitwise_equal(second[k], own_same.mean[k])) << "level " << levels[k];
+                        for (std::size_t i = 0; i < n; ++i) {
+                            if (std::isnan(fewer[i])) continue;
+                            const double want = own_fewer.mean[k][i], got = second_f[k][i];
+                            ASSERT_EQ(std::isnan(want), std::isnan(got)) << "vertex " << i << ", level " << levels[k];
+                            if (!std::isnan(want)) {
+                                ASSERT_NEAR(got, want, 1e-13 * (1.0 + std::abs(want)))
+                                    << "vertex " << i << ", level " << levels[k];
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+}

@@ -24,6 +24,9 @@ struct DiskMeansBatch
     const std::uint32_t* centres = nullptr;
     std::size_t count = 0;
     const double* mean = nullptr;
+    //! The second values' means likewise (over the vertices where they are
+    //! defined), when asked for; a centre's may be NaN.
+    const double* mean2 = nullptr;
     const std::uint32_t* size = nullptr;
     std::size_t stride = 0;
 };
@@ -35,8 +38,16 @@ std::size_t disk_mean_batch_count(const std::vector<double>& values);
 //! disk_means() handing each batch to \p sink (called on the worker threads,
 //! concurrently; each batch once) instead of storing the means. The means are
 //! those of disk_means() to the last bit.
+//!
+//! With \p second, the rings are searched once for two sets of values: the
+//! batches also carry the means of \p second over the same rings (mean2).
+//! The centres are those of \p values; where \p second is defined at the
+//! same vertices, its means are those of its own disk_means() to the last bit
+//! (the same batches, the same additions in the same order), otherwise they
+//! differ from them in the rounding only (a centre's batch mates fix the
+//! order of its additions).
 void disk_means_batches(const MeshData& data, const Adjacency& adjacency, const std::vector<double>& values,
-                        const std::vector<int>& levels, bool with_sizes,
+                        const std::vector<double>* second, const std::vector<int>& levels, bool with_sizes,
                         const std::function<void(const DiskMeansBatch&)>& sink);
 
 }  // namespace meshdiff::detail

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <memory>
+#include <optional>
 
 namespace meshdiff::detail {
 
@@ -38,12 +40,13 @@ std::size_t head_for(double fraction, std::size_t m)
 }
 
 LevelStream::LevelStream(std::size_t n_levels, std::size_t n_batches, std::size_t capacity,
-                         const std::vector<double>& values, const std::vector<double>* weights)
+                         const std::vector<double>& values, const std::vector<double>* weights, bool second)
     : n_levels_(n_levels),
       n_batches_(n_batches),
       capacity_(std::max<std::size_t>(capacity, 10)),
       values_(values),
       weights_(weights),
+      second_(second),
       parts_(n_levels * n_batches),
       seen_(n_batches, 0),
       heads_(std::size_t(std::max(1, omp_get_max_threads())), std::vector<Head>(n_levels))
@@ -65,12 +68,13 @@ void LevelStream::add(const DiskMeansBatch& batch)
 {
     // Out of range only by a caller's mistake; the batch is then left out
     // and sums() reports it (no throw on a worker thread).
-    if (batch.index >= n_batches_ || std::size_t(batch.worker) >= heads_.size()) return;
+    const double* const means = second_ ? batch.mean2 : batch.mean;
+    if (batch.index >= n_batches_ || std::size_t(batch.worker) >= heads_.size() || !means) return;
     for (std::size_t li = 0; li < n_levels_; ++li) {
         Part p;
         Head& head = heads_[std::size_t(batch.worker)][li];
         for (std::size_t k = 0; k < batch.count; ++k) {
-            const double mean = batch.mean[li * batch.stride + k];
+            const double mean = means[li * batch.stride + k];
             const std::uint32_t c = batch.centres[k];
             const double d = values_[c] - mean;
             if (std::isnan(d)) continue;
@@ -113,52 +117,92 @@ std::vector<RankedD> ranked_head(const std::vector<double>& D, const std::vector
     return head;
 }
 
-void fold_levels(const MeshData& data, const Adjacency& adjacency, const std::vector<double>& values,
-                 const std::vector<double>* weights, const std::vector<int>& levels,
-                 std::initializer_list<double> fractions, bool store,
-                 const std::function<void(std::size_t li, const LevelSums& sums, std::vector<double>& D)>& level)
+namespace {
+
+// One set of values folded by fold_levels(): its stream, and D where stored.
+struct Channel
 {
-    if (levels.empty()) return;
-    const std::size_t n = values.size(), n_levels = levels.size();
-    const auto centres =
-        std::size_t(std::count_if(values.begin(), values.end(), [](double v) { return !std::isnan(v); }));
-    std::size_t head = 10;
-    for (const double f : fractions)
-        if (f > 0.0) head = std::max(head, head_for(f, centres));
-    // No levels x n vector of D unless it is asked for, or the head is large
-    // beside the mesh (it is then ranked from D, not folded per worker).
-    const std::size_t limit = head_limit(n);
-    LevelStream stream(n_levels, disk_mean_batch_count(values), std::min(head, limit), values, weights);
-    std::vector<std::vector<double>> D(store || head > limit ? n_levels : 0);
-    for (auto& d : D) d.assign(n, std::numeric_limits<double>::quiet_NaN());
-    disk_means_batches(data, adjacency, values, levels, false, [&](const DiskMeansBatch& b) {
-        stream.add(b);
+    const std::vector<double>& values;
+    const std::vector<double>* weights;
+    bool store;
+    std::size_t n_levels, head = 10, limit = 0;
+    std::unique_ptr<LevelStream> stream;
+    std::vector<std::vector<double>> D;
+
+    Channel(const std::vector<double>& v, const std::vector<double>* w, const std::vector<double>& fractions, bool keep,
+            std::size_t levels, std::size_t n_batches, bool second)
+        : values(v), weights(w), store(keep), n_levels(levels)
+    {
+        const std::size_t n = values.size();
+        const auto centres =
+            std::size_t(std::count_if(values.begin(), values.end(), [](double x) { return !std::isnan(x); }));
+        for (const double f : fractions)
+            if (f > 0.0) head = std::max(head, head_for(f, centres));
+        // No levels x n vector of D unless it is asked for, or the head is
+        // large beside the mesh (it is then ranked from D, not folded per worker).
+        limit = head_limit(n);
+        stream = std::make_unique<LevelStream>(n_levels, n_batches, std::min(head, limit), values, weights, second);
+        D.resize(store || head > limit ? n_levels : 0);
+        for (auto& d : D) d.assign(n, std::numeric_limits<double>::quiet_NaN());
+    }
+
+    void add(const DiskMeansBatch& b, const double* mean)
+    {
+        stream->add(b);
         for (std::size_t li = 0; li < D.size(); ++li)
             for (std::size_t k = 0; k < b.count; ++k)
-                D[li][b.centres[k]] = values[b.centres[k]] - b.mean[li * b.stride + k];  // NaN propagates
-    });
+                D[li][b.centres[k]] = values[b.centres[k]] - mean[li * b.stride + k];  // NaN propagates
+    }
+
     // Each level's sums and ranked head at once, in parallel (a head of 5 %
     // of a 1M mesh's vertices is ranked in 10 ms per level); the callback
     // then sees them in level order.
-    std::vector<LevelSums> sums(n_levels);
-    std::vector<std::exception_ptr> failed(n_levels);  // nothing may leave an OpenMP loop by a throw
+    void finish(const std::function<void(std::size_t li, const LevelSums& sums, std::vector<double>& D)>& level)
+    {
+        std::vector<LevelSums> sums(n_levels);
+        std::vector<std::exception_ptr> failed(n_levels);  // nothing may leave an OpenMP loop by a throw
 #pragma omp parallel for schedule(dynamic, 1)
-    for (std::ptrdiff_t li = 0; li < std::ptrdiff_t(n_levels); ++li) {
-        const auto l = std::size_t(li);
-        try {
-            sums[l] = stream.sums(l);
-            if (head > limit) sums[l].head = ranked_head(D[l], weights, head);
-        } catch (...) {
-            failed[l] = std::current_exception();
+        for (std::ptrdiff_t li = 0; li < std::ptrdiff_t(n_levels); ++li) {
+            const auto l = std::size_t(li);
+            try {
+                sums[l] = stream->sums(l);
+                if (head > limit) sums[l].head = ranked_head(D[l], weights, head);
+            } catch (...) {
+                failed[l] = std::current_exception();
+            }
+        }
+        for (const std::exception_ptr& e : failed)
+            if (e) std::rethrow_exception(e);
+        std::vector<double> none;
+        for (std::size_t li = 0; li < n_levels; ++li) {
+            level(li, sums[li], store ? D[li] : none);
+            sums[li] = LevelSums();
         }
     }
-    for (const std::exception_ptr& e : failed)
-        if (e) std::rethrow_exception(e);
-    std::vector<double> none;
-    for (std::size_t li = 0; li < n_levels; ++li) {
-        level(li, sums[li], store ? D[li] : none);
-        sums[li] = LevelSums();
+};
+
+}  // namespace
+
+void fold_levels(const MeshData& data, const Adjacency& adjacency, const std::vector<double>& values,
+                 const std::vector<double>* weights, const std::vector<int>& levels,
+                 std::initializer_list<double> fractions, bool store,
+                 const std::function<void(std::size_t li, const LevelSums& sums, std::vector<double>& D)>& level,
+                 const SecondFold* second)
+{
+    if (levels.empty()) return;
+    const std::size_t n_levels = levels.size(), n_batches = disk_mean_batch_count(values);
+    Channel first(values, weights, std::vector<double>(fractions), store, n_levels, n_batches, false);
+    std::optional<Channel> other;
+    if (second) {
+        other.emplace(second->values, second->weights, second->fractions, second->store, n_levels, n_batches, true);
     }
+    disk_means_batches(data, adjacency, values, second ? &second->values : nullptr, levels, false,
+                       [&](const DiskMeansBatch& b) {
+                           first.add(b, b.mean);
+                           if (other) other->add(b, b.mean2);
+                       });
+    first.finish(level);
+    if (other) other->finish(second->level);
 }
 
 double streamed_trimmed_rms(const LevelSums& s, double trim, std::size_t* dropped)

@@ -49,8 +49,9 @@ class LevelStream
 {
 public:
     //! \param capacity the length of the head kept per level (at least 10)
+    //! With \p second, the means are the batches' mean2 (disk_means_batches()).
     LevelStream(std::size_t n_levels, std::size_t n_batches, std::size_t capacity, const std::vector<double>& values,
-                const std::vector<double>* weights = nullptr);
+                const std::vector<double>* weights = nullptr, bool second = false);
     //! Called on the worker threads, each batch once.
     void add(const DiskMeansBatch& batch);
     //! Level li's sums (after every batch).
@@ -65,6 +66,7 @@ private:
     std::size_t n_levels_, n_batches_, capacity_;
     const std::vector<double>& values_;
     const std::vector<double>* weights_;
+    bool second_;
     // A worker's candidates for a level's head: every |D| at or above the
     // floor, cut back to the capacity (nth_element) when they reach 3/2 of
     // it, which raises the floor. An offer below the floor costs one
@@ -111,10 +113,27 @@ std::vector<RankedD> ranked_head(const std::vector<double>& D, const std::vector
 //! undefined; the callee may move it), empty unless \p store. D is also stored
 //! when the head is longer than head_limit(), and ranked from; either way the
 //! sums are the same to the last bit.
+//!
+//! With \p second, its values are folded over the same rings in the same
+//! search (disk_means_batches() with two sets of values), as fold_levels()
+//! would fold them alone, at the same levels; its callback is called after
+//! the first's, level by level. The centres are those of \p values: where
+//! the second values are defined at the same vertices, their sums are those
+//! of their own fold to the last bit; otherwise (fewer defined) they differ
+//! in the rounding only.
+struct SecondFold
+{
+    const std::vector<double>& values;
+    const std::vector<double>* weights = nullptr;
+    std::vector<double> fractions;
+    bool store = false;
+    std::function<void(std::size_t li, const LevelSums& sums, std::vector<double>& D)> level;
+};
 void fold_levels(const MeshData& data, const Adjacency& adjacency, const std::vector<double>& values,
                  const std::vector<double>* weights, const std::vector<int>& levels,
                  std::initializer_list<double> fractions, bool store,
-                 const std::function<void(std::size_t li, const LevelSums& sums, std::vector<double>& D)>& level);
+                 const std::function<void(std::size_t li, const LevelSums& sums, std::vector<double>& D)>& level,
+                 const SecondFold* second = nullptr);
 
 //! sigma, top share and worst vertices from \p s as level_roughness() does,
 //! then the trim as trimmed_rms() (unweighted when \p weighted is false).

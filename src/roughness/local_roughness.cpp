@@ -85,6 +85,54 @@ Pooled pool(const std::vector<double>& F, const std::vector<double>& mean, const
     return p;
 }
 
+// F(i) = H(i) - H'(cp(i)): the change of H, carried to the vertices of mesh
+// (NaN where either is undefined).
+std::vector<double> change_of_H(const Mesh& mesh, const std::vector<double>& H, const Mesh& other,
+                                const std::vector<double>& other_H, const ClosestPointIndex& index,
+                                std::vector<ClosestPoint>* closest)
+{
+    const std::size_t n = mesh.n_vertices();
+    const std::vector<Anchor> at = anchors(other, mesh, index, closest);
+    std::vector<double> F(n, kNaN);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (std::isnan(H[i])) continue;
+        const double h = interpolate(other_H, other.faces[at[i].face], at[i].w);
+        if (!std::isnan(h)) F[i] = H[i] - h;
+    }
+    return F;
+}
+
+// The ring levels present in both profiles, in mesh's profile's order.
+std::vector<int> common_levels(const std::vector<LevelRoughness>& a, const std::vector<LevelRoughness>& b)
+{
+    std::vector<int> levels;
+    for (const LevelRoughness& la : a)
+        for (const LevelRoughness& lb : b)
+            if (la.level == lb.level) {
+                levels.push_back(la.level);
+                break;
+            }
+    return levels;
+}
+
+// What a level's folded sums give the result: its RMS, its count, its D.
+std::function<void(std::size_t, const detail::LevelSums&, std::vector<double>&)> level_sink(LocalRoughnessDistance& r,
+                                                                                            double trim,
+                                                                                            bool keep_vertex_data)
+{
+    return [&r, trim, keep_vertex_data](std::size_t, const detail::LevelSums& sums, std::vector<double>& D) {
+        r.rms.push_back(sums.used ? detail::streamed_trimmed_rms(sums, trim) : kNaN);
+        r.used.push_back(sums.used);
+        if (keep_vertex_data) r.vertex.push_back(std::move(D));
+    };
+}
+
+void check_trim(double trim)
+{
+    if (!(trim >= 0.0 && trim <= kMaxTrim))
+        throw OptionError("local_trim", fmt::format("{} is not a share in [0, {}]", trim, kMaxTrim));
+}
+
 }  // namespace
 
 Vec3 barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
@@ -124,43 +172,23 @@ LocalRoughnessDistance detail::local_roughness_distance(const Mesh& mesh, const 
         throw InvalidArgumentError(
             fmt::format("local roughness: profiles of {} and {} vertices for meshes of {} and {}", pa.vertices,
                         pb.vertices, mesh.n_vertices(), other.n_vertices()));
-    if (!(trim >= 0.0 && trim <= kMaxTrim))
-        throw OptionError("local_trim", fmt::format("{} is not a share in [0, {}]", trim, kMaxTrim));
+    check_trim(trim);
     LocalRoughnessDistance r;
     r.vertices = mesh.n_vertices();
     r.vertices_radii = parts.radii ? mesh.n_vertices() : 0;
     r.trim = trim;
-    const std::size_t n = mesh.n_vertices();
-    // F(i) = H(i) - H'(cp(i)): the change of H, carried to the vertices of mesh.
-    const std::vector<Anchor> at = anchors(other, mesh, index, closest);
-    std::vector<double> F(n, kNaN);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (std::isnan(pa.H[i])) continue;
-        const double h = interpolate(pb.H, other.faces[at[i].face], at[i].w);
-        if (!std::isnan(h)) F[i] = pa.H[i] - h;
-    }
+    const std::vector<double> F = change_of_H(mesh, pa.H, other, pb.H, index, closest);
     // The operator of mesh's own profile: its rings, its global level, its
     // balls on its normalised mesh; its vertex areas weight the RMS.
     const Mesh unit_mesh = apply_normalization(mesh, pa.normalization);
     const MeshData unit(unit_mesh);  // its box, derived once for the rings and the balls
     const Adjacency adj = vertex_adjacency(unit_mesh);
     const std::vector<double> area = vertex_areas(unit_mesh);
-    if (parts.levels)
-        for (const LevelRoughness& la : pa.levels)
-            for (const LevelRoughness& lb : pb.levels)
-                if (la.level == lb.level) {
-                    r.levels.push_back(la.level);
-                    break;
-                }
-    if (!r.levels.empty()) {
-        // Folded batch by batch (level_stream.h): D stored only for the maps.
+    if (parts.levels) r.levels = common_levels(pa.levels, pb.levels);
+    // Folded batch by batch (level_stream.h): D stored only for the maps.
+    if (!r.levels.empty())
         detail::fold_levels(unit, adj, F, &area, r.levels, {trim}, keep_vertex_data,
-                            [&](std::size_t, const detail::LevelSums& sums, std::vector<double>& D) {
-                                r.rms.push_back(sums.used ? detail::streamed_trimmed_rms(sums, trim) : kNaN);
-                                r.used.push_back(sums.used);
-                                if (keep_vertex_data) r.vertex.push_back(std::move(D));
-                            });
-    }
+                            level_sink(r, trim, keep_vertex_data));
     if (parts.global && pa.has_global && pb.has_global) {
         r.has_global = true;
         r.global = pool(F, global_means(F), area, trim, nullptr).rms;
@@ -178,6 +206,55 @@ LocalRoughnessDistance detail::local_roughness_distance(const Mesh& mesh, const 
             r.rms_radii.push_back(pool(F, balls.mean[k], area, trim, nullptr).rms);
     }
     return r;
+}
+
+detail::LocalRingsInProfile::LocalRingsInProfile(const Mesh& mesh, const Mesh& other,
+                                                 const RoughnessProfile& other_profile,
+                                                 const ClosestPointIndex& other_index, double trim,
+                                                 bool keep_vertex_data, bool global, std::vector<ClosestPoint>* closest)
+    : mesh_(mesh),
+      other_(other),
+      other_profile_(other_profile),
+      index_(other_index),
+      trim_(trim),
+      keep_(keep_vertex_data),
+      global_(global),
+      closest_(closest)
+{
+    if (other_profile.H.size() != other.n_vertices() || other_profile.vertices != other.n_vertices())
+        throw InvalidArgumentError("local roughness: the original's profile has no per-vertex H for its mesh");
+    check_trim(trim);
+}
+
+std::optional<detail::SecondFold> detail::LocalRingsInProfile::start(const Mesh& unit, const std::vector<double>& H,
+                                                                     const std::vector<int>& levels)
+{
+    if (H.size() != mesh_.n_vertices() || unit.n_vertices() != mesh_.n_vertices())
+        throw InvalidArgumentError("local roughness: H is not of the processed mesh's vertices");
+    started_ = true;
+    F_ = change_of_H(mesh_, H, other_, other_profile_.H, index_, closest_);
+    area_ = vertex_areas(unit);
+    std::vector<LevelRoughness> mine(levels.size());
+    for (std::size_t li = 0; li < levels.size(); ++li) mine[li].level = levels[li];
+    r_.levels = common_levels(mine, other_profile_.levels);
+    if (r_.levels != levels)
+        throw InvalidArgumentError("local roughness: the two profiles' ring levels differ (one search needs the same)");
+    if (r_.levels.empty()) return std::nullopt;
+    return SecondFold{F_, &area_, {trim_}, keep_, level_sink(r_, trim_, keep_)};
+}
+
+LocalRoughnessDistance detail::LocalRingsInProfile::finish(const RoughnessProfile& profile)
+{
+    if (!started_ || profile.vertices != mesh_.n_vertices())
+        throw InvalidArgumentError("local roughness: the processed mesh's profile was not made with its hook");
+    r_.vertices = mesh_.n_vertices();
+    r_.vertices_radii = 0;
+    r_.trim = trim_;
+    if (global_ && profile.has_global && other_profile_.has_global) {
+        r_.has_global = true;
+        r_.global = pool(F_, global_means(F_), area_, trim_, nullptr).rms;
+    }
+    return std::move(r_);
 }
 
 }  // namespace meshdiff

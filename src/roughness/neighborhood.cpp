@@ -88,6 +88,9 @@ struct BatchBfs
     static constexpr std::size_t kBatch = 64 * W;
     const Adjacency& adj;
     const std::vector<double>& values;
+    // A second set of values summed over the same rings (null: none): their
+    // sums and counts of defined values only (disk_means_batches()).
+    const double* const values2;
     const bool all_defined;
     const bool word_sums;  // see kWordSumDegree
     const int lmax;
@@ -105,9 +108,13 @@ struct BatchBfs
     // those centres' sums after the level's own values.
     std::vector<double> wsum;
     std::vector<std::uint32_t> wcount, wsize;
+    // The second values' sums and counts, as sum and count (values2 only).
+    std::vector<double> sum2, wsum2;
+    std::vector<std::uint32_t> count2, wcount2;
 
-    BatchBfs(const Adjacency& a, const std::vector<double>& v, bool defined, bool words, int max_level)
-        : adj(a), values(v), all_defined(defined), word_sums(words), lmax(max_level)
+    BatchBfs(const Adjacency& a, const std::vector<double>& v, const std::vector<double>* v2, bool defined, bool words,
+             int max_level)
+        : adj(a), values(v), values2(v2 ? v2->data() : nullptr), all_defined(defined), word_sums(words), lmax(max_level)
     {
         const std::size_t n = adj.size();
         marks.assign(n, Marks<W>{});
@@ -117,6 +124,12 @@ struct BatchBfs
         wsum.resize(std::size_t(lmax + 1) * W);
         wcount.resize(std::size_t(lmax + 1) * W);
         wsize.resize(std::size_t(lmax + 1) * W);
+        if (values2) {
+            sum2.resize(sum.size());
+            count2.resize(count.size());
+            wsum2.resize(wsum.size());
+            wcount2.resize(wcount.size());
+        }
     }
 
     // The sums, counts and sizes of \p level, after sizing the next frontier
@@ -133,14 +146,21 @@ struct BatchBfs
     // centres become seen and their frontier, and each adds its value to the
     // sums of those centres (in the list's order; within a vertex, in bit
     // order), or once to a word's sum where the whole word reached it.
-    template <bool AllDefined, bool WordSums>
+    template <bool AllDefined, bool WordSums, bool Two>
     void settle(int level, std::size_t n_new, const std::array<std::uint64_t, W>& live)
     {
 #if MESHDIFF_HAVE_AVX512_KERNELS
         if constexpr (W == 2 && !WordSums)
-            if (avx512) return settle_avx512<AllDefined>(level, n_new);
+            if (avx512) {
+                settle_avx512<AllDefined>(level, n_new);
+                if constexpr (Two) add_second_avx512(level, n_new);
+                return;
+            }
 #endif
         const auto [lsum, lcount, lsize] = level_sums(level, n_new);
+        const std::size_t at2 = std::size_t(level) * kBatch;
+        double* const lsum2 = Two ? &sum2[at2] : nullptr;
+        std::uint32_t* const lcount2 = Two ? &count2[at2] : nullptr;
         const std::uint32_t* const nl = nlist.data();
         Marks<W>* const mk = marks.data();
         const double* const vals = values.data();
@@ -159,6 +179,7 @@ struct BatchBfs
             }
             if (!seen_any) touched.push_back(v);
             const double val = vals[v];
+            const double val2 = Two ? values2[v] : 0.0;
             for (int w = 0; w < W; ++w) {
                 if constexpr (WordSums)
                     if (bits[w] == live[std::size_t(w)] && bits[w] != 0) {
@@ -169,9 +190,14 @@ struct BatchBfs
                             wsum[at] += val;
                             ++wcount[at];
                         }
+                        if (Two && !std::isnan(val2)) {
+                            wsum2[at] += val2;
+                            ++wcount2[at];
+                        }
                         continue;
                     }
                 add_word<AllDefined>(bits[w], val, lsum + 64 * w, lcount + 64 * w, lsize + 64 * w);
+                if constexpr (Two) add_defined(bits[w], val2, lsum2 + 64 * w, lcount2 + 64 * w);
             }
         }
     }
@@ -246,7 +272,63 @@ struct BatchBfs
 #pragma GCC unroll 16
         for (int j = 0; j < 16; ++j) _mm512_storeu_pd(lsum + 8 * j, acc[j]);
     }
+
+    // The second values' sums and counts of the vertices settle_avx512() just
+    // listed (flist, with their new centres in nfront): the additions of
+    // add_defined(), in the same order, as settle_avx512() makes its own.
+    __attribute__((target("avx512f,avx512bw"))) void add_second_avx512(int level, std::size_t n_new)
+    {
+        const std::size_t at = std::size_t(level) * kBatch;
+        double* const lsum = &sum2[at];
+        std::uint32_t* const lcount = &count2[at];
+        const std::uint32_t* const fl = flist.data();
+        __m512d acc[16];
+#pragma GCC unroll 16
+        for (int j = 0; j < 16; ++j) acc[j] = _mm512_loadu_pd(lsum + 8 * j);
+        __m512i cnt0 = _mm512_setzero_si512(), cnt1 = _mm512_setzero_si512();
+        for (std::size_t q0 = 0; q0 < n_new; q0 += 255) {
+            const std::size_t q1 = std::min(n_new, q0 + 255);
+            for (std::size_t q = q0; q < q1; ++q) {
+                const double x = values2[fl[q]];
+                const std::uint64_t keep = std::uint64_t(0) - !std::isnan(x);
+                const std::uint64_t b0 = nfront[q][0] & keep, b1 = nfront[q][1] & keep;
+                const __m512d val = _mm512_set1_pd(x);
+                const __m512i w0 = _mm512_set1_epi64(std::int64_t(b0));
+                const __m512i w1 = _mm512_set1_epi64(std::int64_t(b1));
+#pragma GCC unroll 8
+                for (int j = 0; j < 8; ++j) {
+                    const __m512i bit = _mm512_load_si512(reinterpret_cast<const __m512i*>(kLaneBits.bit + 8 * j));
+                    acc[j] = _mm512_mask_add_pd(acc[j], _mm512_test_epi64_mask(w0, bit), acc[j], val);
+                    acc[8 + j] = _mm512_mask_add_pd(acc[8 + j], _mm512_test_epi64_mask(w1, bit), acc[8 + j], val);
+                }
+                cnt0 = _mm512_sub_epi8(cnt0, _mm512_movm_epi8(_cvtu64_mask64(b0)));
+                cnt1 = _mm512_sub_epi8(cnt1, _mm512_movm_epi8(_cvtu64_mask64(b1)));
+            }
+            alignas(64) std::uint8_t c[128];
+            _mm512_store_si512(reinterpret_cast<__m512i*>(c), cnt0);
+            _mm512_store_si512(reinterpret_cast<__m512i*>(c + 64), cnt1);
+            for (int b = 0; b < 128; ++b) lcount[b] += c[b];
+            cnt0 = _mm512_setzero_si512();
+            cnt1 = _mm512_setzero_si512();
+        }
+#pragma GCC unroll 16
+        for (int j = 0; j < 16; ++j) _mm512_storeu_pd(lsum + 8 * j, acc[j]);
+    }
 #endif
+
+    // Adds val to the sums and 1 to the counts of the centres whose bits are
+    // set in x, in bit order, unless val is NaN (the second values).
+    static inline __attribute__((always_inline)) void add_defined(std::uint64_t x, double val, double* ws,
+                                                                  std::uint32_t* wc)
+    {
+        if (std::isnan(val)) return;
+        while (x) {
+            const std::size_t b = std::size_t(__builtin_ctzll(x)) & 63;
+            x &= x - 1;
+            ws[b] += val;
+            ++wc[b];
+        }
+    }
 
     // Adds val to the sums (and 1 to the counts) of the centres whose bits
     // are set in x, in bit order; without AllDefined, a NaN val counts only in
@@ -340,6 +422,15 @@ struct BatchBfs
         return n_new;
     }
 
+    template <bool Two>
+    void settle_any(int level, std::size_t n_new, const std::array<std::uint64_t, W>& live)
+    {
+        if (all_defined)
+            word_sums ? settle<true, true, Two>(level, n_new, live) : settle<true, false, Two>(level, n_new, live);
+        else
+            word_sums ? settle<false, true, Two>(level, n_new, live) : settle<false, false, Two>(level, n_new, live);
+    }
+
     // Fills sum/count/size (cumulative over levels) for centres[0..nb).
     void run(const std::uint32_t* centres, std::size_t nb)
     {
@@ -349,6 +440,10 @@ struct BatchBfs
         std::fill(wsum.begin(), wsum.end(), 0.0);
         std::fill(wcount.begin(), wcount.end(), 0u);
         std::fill(wsize.begin(), wsize.end(), 0u);
+        std::fill(sum2.begin(), sum2.end(), 0.0);
+        std::fill(count2.begin(), count2.end(), 0u);
+        std::fill(wsum2.begin(), wsum2.end(), 0.0);
+        std::fill(wcount2.begin(), wcount2.end(), 0u);
         // The centres of each word (a full word but in the last batch).
         std::array<std::uint64_t, W> live{};
         for (std::size_t k = 0; k < nb; ++k) live[k / 64] |= std::uint64_t(1) << (k % 64);
@@ -366,10 +461,10 @@ struct BatchBfs
         }
         for (int level = 1; level <= lmax && !flist.empty(); ++level) {
             const std::size_t n_new = expand();
-            if (all_defined)
-                word_sums ? settle<true, true>(level, n_new, live) : settle<true, false>(level, n_new, live);
+            if (values2)
+                settle_any<true>(level, n_new, live);
             else
-                word_sums ? settle<false, true>(level, n_new, live) : settle<false, false>(level, n_new, live);
+                settle_any<false>(level, n_new, live);
             ffront.swap(nfront);
         }
         for (auto v : touched) marks[v] = Marks<W>{};
@@ -380,12 +475,20 @@ struct BatchBfs
                     sum[i] += wsum[at];
                     count[i] += wcount[at];
                     size[i] += wsize[at];
+                    if (values2) {
+                        sum2[i] += wsum2[at];
+                        count2[i] += wcount2[at];
+                    }
                 }
         for (int level = 2; level <= lmax; ++level)
             for (std::size_t k = 0; k < kBatch; ++k) {
                 sum[std::size_t(level) * kBatch + k] += sum[std::size_t(level - 1) * kBatch + k];
                 count[std::size_t(level) * kBatch + k] += count[std::size_t(level - 1) * kBatch + k];
                 size[std::size_t(level) * kBatch + k] += size[std::size_t(level - 1) * kBatch + k];
+                if (values2) {
+                    sum2[std::size_t(level) * kBatch + k] += sum2[std::size_t(level - 1) * kBatch + k];
+                    count2[std::size_t(level) * kBatch + k] += count2[std::size_t(level - 1) * kBatch + k];
+                }
             }
         if (all_defined) size = count;
     }
@@ -420,7 +523,7 @@ DiskMeans disk_means(const MeshData& data, const Adjacency& adj, const std::vect
     out.levels = levels;
     out.mean.assign(levels.size(), std::vector<double>(n, std::numeric_limits<double>::quiet_NaN()));
     if (with_sizes) out.size.assign(levels.size(), std::vector<std::uint32_t>(n, 0));
-    detail::disk_means_batches(data, adj, values, levels, with_sizes, [&](const detail::DiskMeansBatch& b) {
+    detail::disk_means_batches(data, adj, values, nullptr, levels, with_sizes, [&](const detail::DiskMeansBatch& b) {
         for (std::size_t li = 0; li < levels.size(); ++li)
             for (std::size_t k = 0; k < b.count; ++k) {
                 const auto c = b.centres[k];
@@ -439,12 +542,12 @@ std::size_t detail::disk_mean_batch_count(const std::vector<double>& values)
 }
 
 void detail::disk_means_batches(const MeshData& data, const Adjacency& adj, const std::vector<double>& values,
-                                const std::vector<int>& levels, bool with_sizes,
+                                const std::vector<double>* second, const std::vector<int>& levels, bool with_sizes,
                                 const std::function<void(const DiskMeansBatch&)>& sink)
 {
     const Mesh& mesh = data.mesh();
     const std::size_t n = adj.size();
-    if (values.size() != n || mesh.n_vertices() != n)
+    if (values.size() != n || mesh.n_vertices() != n || (second && second->size() != n))
         throw InvalidArgumentError("disk_means: values, adjacency and mesh sizes differ");
     for (int l : levels)
         if (l < 1) throw InvalidArgumentError(fmt::format("disk_means: level {} is < 1", l));
@@ -491,15 +594,17 @@ void detail::disk_means_batches(const MeshData& data, const Adjacency& adj, cons
         renumber = far_input > 2 * far_neighbours(rank.data());
     }
     Adjacency padj;
-    std::vector<double> pvalues;
+    std::vector<double> pvalues, pvalues2;
     std::vector<std::uint32_t> pcentres;
     if (renumber) {
         padj.offset.resize(n + 1, 0);
         padj.index.resize(adj.index.size());
         pvalues.resize(n);
+        if (second) pvalues2.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
             const std::uint32_t o = morton[i];
             pvalues[i] = values[o];
+            if (second) pvalues2[i] = (*second)[o];
             padj.offset[i + 1] = padj.offset[i] + std::uint32_t(adj.degree(o));
             std::uint32_t* to = padj.index.data() + padj.offset[i];
             for (const std::uint32_t* it = adj.begin(o); it != adj.end(o); ++it) *to++ = rank[*it];
@@ -513,18 +618,20 @@ void detail::disk_means_batches(const MeshData& data, const Adjacency& adj, cons
     std::vector<std::uint32_t>().swap(rank);
     const Adjacency& sadj = renumber ? padj : adj;
     const std::vector<double>& svalues = renumber ? pvalues : values;
+    const std::vector<double>* svalues2 = second && renumber ? &pvalues2 : second;
     const std::vector<std::uint32_t>& scentres = renumber ? pcentres : centres;
 
     detail::StageProgress stage("rings", n_batches);
 #pragma omp parallel
     {
-        BatchBfs<kWords> bfs(sadj, svalues, all_defined, word_sums, lmax);
+        BatchBfs<kWords> bfs(sadj, svalues, svalues2, all_defined, word_sums, lmax);
         constexpr std::size_t kBatch = BatchBfs<kWords>::kBatch;
-        std::vector<double> mean(levels.size() * kBatch);
+        std::vector<double> mean(levels.size() * kBatch), mean2(second ? levels.size() * kBatch : 0);
         std::vector<std::uint32_t> size(with_sizes ? levels.size() * kBatch : 0);
         DiskMeansBatch batch;
         batch.worker = omp_get_thread_num();
         batch.mean = mean.data();
+        batch.mean2 = second ? mean2.data() : nullptr;
         batch.size = with_sizes ? size.data() : nullptr;
         batch.stride = kBatch;
 #pragma omp for schedule(dynamic, 2)
@@ -540,6 +647,11 @@ void detail::disk_means_batches(const MeshData& data, const Adjacency& adj, cons
                     mean[li * kBatch + k] =
                         cnt > 0 ? bfs.sum[base + k] / double(cnt) : std::numeric_limits<double>::quiet_NaN();
                     if (with_sizes) size[li * kBatch + k] = bfs.size[base + k];
+                    if (second) {
+                        const auto cnt2 = bfs.count2[base + k];
+                        mean2[li * kBatch + k] =
+                            cnt2 > 0 ? bfs.sum2[base + k] / double(cnt2) : std::numeric_limits<double>::quiet_NaN();
+                    }
                 }
             }
             batch.index = std::size_t(ib);

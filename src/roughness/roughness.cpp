@@ -274,7 +274,8 @@ void global_and_radii(RoughnessProfile& p, const MeshData& unit, const Adjacency
 // Levels and global level from H on the normalised mesh; fills p (and p.H
 // with keep_H, as with keep_vertex_data).
 void profile_from_H(RoughnessProfile& p, const MeshData& unit, const Adjacency& adj, std::vector<double> H,
-                    std::size_t undefined, const ProfileOptions& options, bool keep_H = false)
+                    std::size_t undefined, const ProfileOptions& options, bool keep_H = false,
+                    const detail::SecondFold* second = nullptr)
 {
     const std::size_t n = H.size();
     p.outlier_fraction = options.outlier_fraction;
@@ -297,7 +298,8 @@ void profile_from_H(RoughnessProfile& p, const MeshData& unit, const Adjacency& 
             if (options.bootstrap > 0)
                 lr.sigma_interval = bootstrap_interval(D, options.trim, options.bootstrap, options.bootstrap_seed);
             if (options.keep_vertex_data) p.D[li] = std::move(D);
-        });
+        },
+        second);
     global_and_radii(p, unit, adj, H, undefined, options);
     if (options.keep_vertex_data || keep_H) p.H = std::move(H);
 }
@@ -329,7 +331,8 @@ RoughnessProfile roughness_profile(const Mesh& mesh, const ProfileOptions& optio
 }
 
 RoughnessProfile detail::roughness_profile_keeping_H(const Mesh& mesh, const ProfileOptions& options,
-                                                     const Normalization& frame, bool keep_H)
+                                                     const Normalization& frame, bool keep_H,
+                                                     const SecondFoldHook& second)
 {
     validate(options);
     const ProgressScope scope(options.progress ? options.progress : current_progress());
@@ -353,6 +356,9 @@ RoughnessProfile detail::roughness_profile_keeping_H(const Mesh& mesh, const Pro
         incidence.reset();
         return mean_curvature(unit, adj, normals, options.curvature);
     }();
+    // A second fold over the rings made from H and the normalised mesh,
+    // before its faces go.
+    const std::optional<detail::SecondFold> other = second ? second(unit, field.H) : std::nullopt;
     // The rings read the points, the adjacency and unit_data's box (derived
     // above, as its degenerate-face mask): the copy of the faces goes before
     // them (24 MB a 1M mesh), unless the metric levels' vertex areas need it.
@@ -368,7 +374,7 @@ RoughnessProfile detail::roughness_profile_keeping_H(const Mesh& mesh, const Pro
     p.curvature_steep = field.steep;
     p.curvature_capped = field.capped;
     p.curvature_capped_vertices = field.capped_vertices;
-    profile_from_H(p, unit_data, adj, std::move(field.H), field.undefined, options, keep_H);
+    profile_from_H(p, unit_data, adj, std::move(field.H), field.undefined, options, keep_H, other ? &*other : nullptr);
     return p;
 }
 
