@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 #include <Eigen/QR>
 
+#include "geometry/simd.h"
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -102,6 +105,48 @@ TEST(NormalEquations, SameBitsFromAnyBuffer)
     ASSERT_TRUE(meshdiff::detail::solve_by_normal_equations<9>(big.block(1, 0, 17, 9), b, 1e-10, x3));
     EXPECT_EQ(x1, x2);
     EXPECT_EQ(x1, x3);
+}
+
+}  // namespace
+
+namespace {
+
+// The Gram matrix summed with AVX2 against the scalar loop: the same bits
+// for both fits' column counts, short and long systems, any buffer.
+TEST(NormalEquations, VectorSumsAreTheScalarSumsBitForBit)
+{
+    if (!meshdiff::detail::cpu_has_avx2()) GTEST_SKIP() << "this CPU has no AVX2: the scalar sums only";
+    int solved = 0;
+    for (int rows : {9, 10, 17, 31, 64, 255, 300})
+        for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+            Matrix9 M;
+            Eigen::VectorXd b;
+            jet_system(rows, 1000 * seed + std::uint64_t(rows), M, b);
+            Eigen::Matrix<double, Eigen::Dynamic, 9, Eigen::ColMajor, 256, 9> fixed = M.topRows(std::min(rows, 256));
+            const Eigen::VectorXd bf = b.head(std::min(rows, 256));
+            std::array<double, 9> scalar{}, vector{};
+            std::array<double, 7> scalar7{}, vector7{};
+            bool ok[4];
+            {
+                const bool before = meshdiff::detail::allow_vector_kernels(false);
+                ok[0] = meshdiff::detail::solve_by_normal_equations<9>(M, b, 1e-10, scalar);
+                ok[1] = meshdiff::detail::solve_by_normal_equations<7>(fixed.leftCols(7), bf, 1e-10, scalar7);
+                meshdiff::detail::allow_vector_kernels(true);
+                ok[2] = meshdiff::detail::solve_by_normal_equations<9>(M, b, 1e-10, vector);
+                ok[3] = meshdiff::detail::solve_by_normal_equations<7>(fixed.leftCols(7), bf, 1e-10, vector7);
+                meshdiff::detail::allow_vector_kernels(before);
+            }
+            ASSERT_EQ(ok[0], ok[2]) << rows << " rows, seed " << seed;
+            ASSERT_EQ(ok[1], ok[3]) << rows << " rows, seed " << seed;
+            if (ok[0]) {
+                EXPECT_EQ(scalar, vector) << rows << " rows, seed " << seed;
+            }
+            if (ok[1]) {
+                EXPECT_EQ(scalar7, vector7) << rows << " rows, seed " << seed;
+            }
+            solved += ok[0] + ok[1];
+        }
+    EXPECT_GT(solved, 200);
 }
 
 }  // namespace

@@ -33,13 +33,52 @@
 
 #include "meshdiff/core/tolerances.h"
 
+#include "geometry/simd.h"
+
 #include <Eigen/Core>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace meshdiff::detail {
+
+#if defined(__x86_64__)
+//! The Gram matrix's lower triangle and M^T b of solve_by_normal_equations()
+//! with AVX2: for each row, in row order, the same products added to the same
+//! sums as the scalar loop (a row j of G at once: m[j] times m[0..j]), so the
+//! same sums to the last bit (multiplications and additions, no fused ones).
+template <int C, class MatrixType, class VectorType>
+__attribute__((target("avx2"))) void gram_avx2(const MatrixType& M, const VectorType& b,
+                                               std::array<std::array<double, C>, C>& G, std::array<double, C>& c)
+{
+    constexpr int P = (C + 3) / 4 * 4;
+    alignas(32) double g[C][P] = {};
+    alignas(32) double cc[P] = {};
+    alignas(32) double m[P] = {};
+    for (Eigen::Index i = 0; i < M.rows(); ++i) {
+        for (int j = 0; j < C; ++j) m[j] = M(i, j);
+        const __m256d bi = _mm256_set1_pd(b(i));
+        for (int q = 0; q < P; q += 4)
+            _mm256_store_pd(cc + q, _mm256_add_pd(_mm256_load_pd(cc + q), _mm256_mul_pd(_mm256_load_pd(m + q), bi)));
+        for (int j = 0; j < C; ++j) {
+            const __m256d mj = _mm256_set1_pd(m[j]);
+            for (int q = 0; q <= j; q += 4)
+                _mm256_store_pd(g[j] + q,
+                                _mm256_add_pd(_mm256_load_pd(g[j] + q), _mm256_mul_pd(mj, _mm256_load_pd(m + q))));
+        }
+    }
+    for (int j = 0; j < C; ++j) {
+        c[j] = cc[j];
+        for (int k = 0; k <= j; ++k) G[j][k] = g[j][k];
+    }
+}
+#endif
 
 //! Solves min |M x - b| (M: rows x C, rows >= C) into x, or returns false when
 //! the system is not certainly well conditioned (see the file comment).
@@ -52,15 +91,20 @@ bool solve_by_normal_equations(const Eigen::MatrixBase<MatrixType>& M, const Eig
     // Lower triangle of M^T M and M^T b.
     std::array<std::array<double, C>, C> G{};
     std::array<double, C> c{};
-    for (Eigen::Index i = 0; i < rows; ++i) {
-        std::array<double, C> m;
-        for (int j = 0; j < C; ++j) m[j] = M(i, j);
-        const double bi = b(i);
-        for (int j = 0; j < C; ++j) {
-            c[j] += m[j] * bi;
-            for (int k = 0; k <= j; ++k) G[j][k] += m[j] * m[k];
+#if defined(__x86_64__)
+    if (use_avx2())
+        gram_avx2<C>(M, b, G, c);
+    else
+#endif
+        for (Eigen::Index i = 0; i < rows; ++i) {
+            std::array<double, C> m;
+            for (int j = 0; j < C; ++j) m[j] = M(i, j);
+            const double bi = b(i);
+            for (int j = 0; j < C; ++j) {
+                c[j] += m[j] * bi;
+                for (int k = 0; k <= j; ++k) G[j][k] += m[j] * m[k];
+            }
         }
-    }
     // Equilibration: column norms d_j, scale s_j = 1 / d_j.
     std::array<double, C> s;
     double d_min = 0.0, d_max = 0.0;
@@ -85,19 +129,22 @@ bool solve_by_normal_equations(const Eigen::MatrixBase<MatrixType>& M, const Eig
             L[i][j] = v * inv;
         }
     }
-    // |L^-1|_F^2, column by column of the lower-triangular inverse.
-    double inv_norm2 = 0.0;
-    for (int j = 0; j < C; ++j) {
-        std::array<double, C> col{};
-        col[j] = 1.0 / L[j][j];
-        inv_norm2 += col[j] * col[j];
-        for (int i = j + 1; i < C; ++i) {
+    // |L^-1|_F^2 from the lower-triangular inverse, inv[j][i] = (L^-1)_ij:
+    // each entry by forward substitution down its column j, but the columns
+    // interleaved row by row, so that the divisions of a row do not wait on
+    // each other (one column's entries form a chain of divisions); the sum
+    // then in column order.
+    std::array<std::array<double, C>, C> inv;
+    for (int j = 0; j < C; ++j) inv[j][j] = 1.0 / L[j][j];
+    for (int i = 1; i < C; ++i)
+        for (int j = 0; j < i; ++j) {
             double v = 0.0;
-            for (int k = j; k < i; ++k) v -= L[i][k] * col[k];
-            col[i] = v / L[i][i];
-            inv_norm2 += col[i] * col[i];
+            for (int k = j; k < i; ++k) v -= L[i][k] * inv[j][k];
+            inv[j][i] = v / L[i][i];
         }
-    }
+    double inv_norm2 = 0.0;
+    for (int j = 0; j < C; ++j)
+        for (int i = j; i < C; ++i) inv_norm2 += inv[j][i] * inv[j][i];
     if (!(double(C) * inv_norm2 <= kNormalEquationsMaxCondition * kNormalEquationsMaxCondition)) return false;
     const double rank_bound = kNormalEquationsRankMargin / rank_threshold * d_min / d_max;
     if (!(inv_norm2 <= rank_bound * rank_bound)) return false;
@@ -118,13 +165,24 @@ bool solve_by_normal_equations(const Eigen::MatrixBase<MatrixType>& M, const Eig
         for (int i = 0; i < C; ++i) out[i] = y[i] * s[i];
     };
     solve(c, x);
-    // One refinement step: the residual from M, then M^T residual.
-    std::array<double, C> rc{};
+    // One refinement step: the residual from M (the rows independent of
+    // each other, so first all of them), then M^T residual in row order.
+    constexpr Eigen::Index kRowsOnStack = 256;
+    std::array<double, kRowsOnStack> residual_on_stack;
+    std::vector<double> residual_on_heap;
+    double* res = residual_on_stack.data();
+    if (rows > kRowsOnStack) {
+        residual_on_heap.resize(std::size_t(rows));
+        res = residual_on_heap.data();
+    }
     for (Eigen::Index i = 0; i < rows; ++i) {
         double r = b(i);
         for (int j = 0; j < C; ++j) r -= M(i, j) * x[j];
-        for (int j = 0; j < C; ++j) rc[j] += M(i, j) * r;
+        res[i] = r;
     }
+    std::array<double, C> rc{};
+    for (Eigen::Index i = 0; i < rows; ++i)
+        for (int j = 0; j < C; ++j) rc[j] += M(i, j) * res[i];
     std::array<double, C> dx;
     solve(rc, dx);
     for (int j = 0; j < C; ++j) x[j] += dx[j];
