@@ -37,6 +37,42 @@ void append(Mesh& mesh, const Mesh& part, const Vec3& offset)
     for (auto f : part.faces) mesh.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
 }
 
+// A fan of 1500 triangles around vertex 0 (valence above 1024: vertices
+// reached by a whole mask word at once add their value once per word) and a
+// grid beside it, joined to the rim: from level 2 on a rim centre's disk holds
+// the whole rim.
+Mesh hub_mesh()
+{
+    Mesh mesh;
+    const int n = 1500;
+    mesh.points.emplace_back(0.0, 0.0, 0.1);
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * M_PI * i / n;
+        mesh.points.emplace_back(std::cos(a), std::sin(a), 0.01 * std::sin(7.0 * a));
+    }
+    for (int i = 0; i < n; ++i) mesh.faces.push_back({0, 1 + i, 1 + (i + 1) % n});
+    append(mesh, plane_grid(20, 20, 0.1).mesh, Vec3(1.5, 0, 0));
+    mesh.faces.push_back({1, n + 1, n + 2});  // rim vertex 1 to the grid's first two vertices
+    return mesh;
+}
+
+// \p mesh with its vertices in a random order (new id of old vertex i: a
+// shuffle of 0..n-1 by \p seed), its neighbours scattered in memory.
+Mesh shuffled(const Mesh& mesh, unsigned seed)
+{
+    const std::size_t n = mesh.n_vertices();
+    std::vector<std::uint32_t> perm(n);
+    std::iota(perm.begin(), perm.end(), 0u);
+    std::shuffle(perm.begin(), perm.end(), std::mt19937(seed));
+    Mesh out;
+    out.points.resize(n);
+    for (std::size_t i = 0; i < n; ++i) out.points[perm[i]] = mesh.points[i];
+    out.faces = mesh.faces;
+    for (auto& f : out.faces)
+        for (auto& v : f) v = int(perm[std::size_t(v)]);
+    return out;
+}
+
 // Compares disk_means(..., with_sizes = true) with the definition: a breadth-
 // first search (ring_distances) per centre, its defined values averaged.
 // The mean of the defined values over the 1..level-ring disk of \p centre
@@ -237,21 +273,9 @@ TEST(DiskMeans, RejectLevelsBelowOneAndMismatchedSizes)
 
 TEST(DiskMeans, AgreeWithBreadthFirstSearchAroundAHub)
 {
-    // A fan of 1500 triangles around vertex 0 (valence above 1024: vertices
-    // reached by a whole mask word at once add their value once per word) and
-    // a grid beside it, joined to the rim: from level 2 on a rim centre's disk
-    // holds the whole rim. Some values undefined, so that sizes and counts
-    // differ.
-    Mesh mesh;
-    const int n = 1500;
-    mesh.points.emplace_back(0.0, 0.0, 0.1);
-    for (int i = 0; i < n; ++i) {
-        const double a = 2.0 * M_PI * i / n;
-        mesh.points.emplace_back(std::cos(a), std::sin(a), 0.01 * std::sin(7.0 * a));
-    }
-    for (int i = 0; i < n; ++i) mesh.faces.push_back({0, 1 + i, 1 + (i + 1) % n});
-    append(mesh, plane_grid(20, 20, 0.1).mesh, Vec3(1.5, 0, 0));
-    mesh.faces.push_back({1, n + 1, n + 2});  // rim vertex 1 to the grid's first two vertices
+    // Around a hub (hub_mesh()); some values undefined, so that sizes and
+    // counts differ.
+    const Mesh mesh = hub_mesh();
     ASSERT_GT(vertex_adjacency(mesh).degree(0), 1024u);
     std::mt19937_64 rng(11);
     std::vector<double> values(mesh.n_vertices());
@@ -269,18 +293,8 @@ TEST(DiskMeans, AgreeWithBreadthFirstSearchOnAShuffledVertexOrder)
     // Neighbours scattered in memory: the search runs on a copy renumbered in
     // Morton order (see disk_means()); its means are those of a search of each
     // centre, for a sample of centres.
-    const Shape torus = torus_irregular(20000, 1.0, 0.3, 7);
-    const Mesh& grid = torus.mesh;
-    const std::size_t n = grid.n_vertices();
-    std::vector<std::uint32_t> perm(n);  // new id of old vertex i
-    for (std::size_t i = 0; i < n; ++i) perm[i] = std::uint32_t(i);
-    std::shuffle(perm.begin(), perm.end(), std::mt19937(11));
-    Mesh mesh;
-    mesh.points.resize(n);
-    for (std::size_t i = 0; i < n; ++i) mesh.points[perm[i]] = grid.points[i];
-    mesh.faces = grid.faces;
-    for (auto& f : mesh.faces)
-        for (auto& v : f) v = int(perm[std::size_t(v)]);
+    const Mesh mesh = shuffled(torus_irregular(20000, 1.0, 0.3, 7).mesh, 11);
+    const std::size_t n = mesh.n_vertices();
     std::vector<double> values(n);
     for (std::size_t i = 0; i < n; ++i)
         values[i] = std::sin(9.0 * mesh.points[i].x()) + mesh.points[i].z() + (i % 97 == 0 ? NAN : 0.0);
@@ -479,38 +493,6 @@ std::pair<std::vector<std::vector<double>>, std::vector<std::vector<double>>> me
                                        }
                                });
     return {first, other};
-}
-
-// A fan of 1500 triangles around vertex 0 beside a grid (the whole-word sums).
-Mesh hub_mesh()
-{
-    Mesh mesh;
-    const int n = 1500;
-    mesh.points.emplace_back(0.0, 0.0, 0.1);
-    for (int i = 0; i < n; ++i) {
-        const double a = 2.0 * M_PI * i / n;
-        mesh.points.emplace_back(std::cos(a), std::sin(a), 0.01 * std::sin(7.0 * a));
-    }
-    for (int i = 0; i < n; ++i) mesh.faces.push_back({0, 1 + i, 1 + (i + 1) % n});
-    append(mesh, plane_grid(20, 20, 0.1).mesh, Vec3(1.5, 0, 0));
-    mesh.faces.push_back({1, n + 1, n + 2});
-    return mesh;
-}
-
-// \p mesh with its vertices in a random order (the search's renumbered copy).
-Mesh shuffled(const Mesh& mesh, unsigned seed)
-{
-    const std::size_t n = mesh.n_vertices();
-    std::vector<std::uint32_t> perm(n);
-    std::iota(perm.begin(), perm.end(), 0u);
-    std::shuffle(perm.begin(), perm.end(), std::mt19937(seed));
-    Mesh out;
-    out.points.resize(n);
-    for (std::size_t i = 0; i < n; ++i) out.points[perm[i]] = mesh.points[i];
-    out.faces = mesh.faces;
-    for (auto& f : out.faces)
-        for (auto& v : f) v = int(perm[std::size_t(v)]);
-    return out;
 }
 
 }  // namespace

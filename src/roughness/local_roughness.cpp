@@ -234,11 +234,12 @@ std::optional<detail::SecondFold> detail::LocalRingsInProfile::start(const Mesh&
     started_ = true;
     F_ = change_of_H(mesh_, H, other_, other_profile_.H, index_, closest_);
     area_ = vertex_areas(unit);
-    std::vector<LevelRoughness> mine(levels.size());
-    for (std::size_t li = 0; li < levels.size(); ++li) mine[li].level = levels[li];
-    r_.levels = common_levels(mine, other_profile_.levels);
-    if (r_.levels != levels)
-        throw InvalidArgumentError("local roughness: the two profiles' ring levels differ (one search needs the same)");
+    for (const int l : levels)
+        if (std::none_of(other_profile_.levels.begin(), other_profile_.levels.end(),
+                         [l](const LevelRoughness& lb) { return lb.level == l; }))
+            throw InvalidArgumentError(
+                "local roughness: the two profiles' ring levels differ (one search needs the same)");
+    r_.levels = levels;
     if (r_.levels.empty()) return std::nullopt;
     return SecondFold{F_, &area_, {trim_}, keep_, level_sink(r_, trim_, keep_)};
 }

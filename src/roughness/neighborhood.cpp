@@ -203,6 +203,21 @@ struct BatchBfs
     }
 
 #if MESHDIFF_HAVE_AVX512_KERNELS
+    // val added to the 128 sums held in acc (16 registers of 8) where the
+    // bits of the broadcast mask words w0 and w1 are set, in register order.
+    static inline __attribute__((always_inline, target("avx512f,avx512bw"))) void add_under_masks(__m512d* acc,
+                                                                                                  __m512d val,
+                                                                                                  __m512i w0,
+                                                                                                  __m512i w1)
+    {
+#pragma GCC unroll 8
+        for (int j = 0; j < 8; ++j) {
+            const __m512i bit = _mm512_load_si512(reinterpret_cast<const __m512i*>(kLaneBits.bit + 8 * j));
+            acc[j] = _mm512_mask_add_pd(acc[j], _mm512_test_epi64_mask(w0, bit), acc[j], val);
+            acc[8 + j] = _mm512_mask_add_pd(acc[8 + j], _mm512_test_epi64_mask(w1, bit), acc[8 + j], val);
+        }
+    }
+
     // settle<AllDefined, false>() for W == 2 with AVX-512: the level's 128
     // sums stay in 16 registers of 8 doubles, and each listed vertex adds its
     // value to all 16 under the masks of its new centres' bits (none where the
@@ -242,12 +257,7 @@ struct BatchBfs
                 const __m512d val = _mm512_set1_pd(x);
                 const __m512i w0 = _mm512_set1_epi64(std::int64_t(b0 & keep));
                 const __m512i w1 = _mm512_set1_epi64(std::int64_t(b1 & keep));
-#pragma GCC unroll 8
-                for (int j = 0; j < 8; ++j) {
-                    const __m512i bit = _mm512_load_si512(reinterpret_cast<const __m512i*>(kLaneBits.bit + 8 * j));
-                    acc[j] = _mm512_mask_add_pd(acc[j], _mm512_test_epi64_mask(w0, bit), acc[j], val);
-                    acc[8 + j] = _mm512_mask_add_pd(acc[8 + j], _mm512_test_epi64_mask(w1, bit), acc[8 + j], val);
-                }
+                add_under_masks(acc, val, w0, w1);
                 cnt0 = _mm512_sub_epi8(cnt0, _mm512_movm_epi8(_cvtu64_mask64(b0 & keep)));
                 cnt1 = _mm512_sub_epi8(cnt1, _mm512_movm_epi8(_cvtu64_mask64(b1 & keep)));
                 if constexpr (!AllDefined) {
@@ -295,12 +305,7 @@ struct BatchBfs
                 const __m512d val = _mm512_set1_pd(x);
                 const __m512i w0 = _mm512_set1_epi64(std::int64_t(b0));
                 const __m512i w1 = _mm512_set1_epi64(std::int64_t(b1));
-#pragma GCC unroll 8
-                for (int j = 0; j < 8; ++j) {
-                    const __m512i bit = _mm512_load_si512(reinterpret_cast<const __m512i*>(kLaneBits.bit + 8 * j));
-                    acc[j] = _mm512_mask_add_pd(acc[j], _mm512_test_epi64_mask(w0, bit), acc[j], val);
-                    acc[8 + j] = _mm512_mask_add_pd(acc[8 + j], _mm512_test_epi64_mask(w1, bit), acc[8 + j], val);
-                }
+                add_under_masks(acc, val, w0, w1);
                 cnt0 = _mm512_sub_epi8(cnt0, _mm512_movm_epi8(_cvtu64_mask64(b0)));
                 cnt1 = _mm512_sub_epi8(cnt1, _mm512_movm_epi8(_cvtu64_mask64(b1)));
             }
