@@ -37,6 +37,14 @@ struct Candidate
     std::uint32_t closest_face = 0;
 };
 
+// Upper bounds of the distances of a cell's edge midpoints (edge k: corners
+// k, k + 1) and the faces of B that give them.
+struct Midpoints
+{
+    std::array<double, 3> d;
+    std::array<std::uint32_t, 3> face;
+};
+
 double largest_coordinate(const Mesh& m)
 {
     double s = 0.0;
@@ -185,30 +193,6 @@ struct Certification
         target.tris = detail::Triangles(b_index);
     }
 
-    // Bounds every cell; keeps those above lower + tolerance in `cells`.
-    void bound_and_prune(std::vector<Cell>& list)
-    {
-        const double threshold = best.d + tolerance(best.d);
-        const auto n = std::int64_t(list.size());
-#pragma omp parallel for schedule(dynamic, 256)
-        for (std::int64_t i = 0; i < n; ++i) {
-            Cell& c = list[std::size_t(i)];
-            if (!stage.tick()) continue;
-            detail::bound_cell(c, threshold, target);
-        }
-        stage.check();
-        r.bound_evaluations += list.size();
-        std::size_t kept = 0;
-        for (Cell& c : list) {
-            if (c.upper <= threshold || c.depth >= kMaxDepth) {
-                upper_done = std::max(upper_done, c.upper);
-            } else {
-                list[kept++] = c;
-            }
-        }
-        list.resize(kept);
-    }
-
     // Takes the list of open cells set aside last, closing those that the
     // current lower bound closes; false if there is none.
     bool reopen_pending()
@@ -252,24 +236,26 @@ struct Certification
             }
             ++r.rounds;
             split_round();
-            bound_and_prune(cells);
         }
     }
 
     // One round: every open cell into four, its edge midpoints bounded (and
-    // queried where they can raise the lower bound).
+    // queried where they can raise the lower bound), then the four parts
+    // bounded against the raised lower bound, those still open kept in
+    // `cells` (in order: cell i's parts 4 i .. 4 i + 3). The parts are made
+    // and bounded a block at a time from the cells and their midpoints'
+    // bounds: only the open ones are held, not four per cell.
     void split_round()
     {
         const detail::Triangles& tris = target.tris;
         const detail::Neighbours& nbr = target.nbr;
-        // Split every open triangle at its edge midpoints. A midpoint's
-        // distance to the closer of its edge's two faces bounds its distance
-        // to B from above; only where that bound exceeds the lower bound can
-        // the midpoint raise it, and only there is it queried exactly (its
-        // distance is then a lower-bound candidate).
+        // A midpoint's distance to the closer of its edge's two faces bounds
+        // its distance to B from above; only where that bound exceeds the
+        // lower bound can the midpoint raise it, and only there is it queried
+        // exactly (its distance is then a lower-bound candidate).
         const std::size_t n = cells.size();
         const double lower_now = best.d;
-        next.assign(4 * n, Cell{});
+        mids.resize(n);
         found.assign(n, Candidate{});
         std::vector<std::size_t> queried(n, 0);
 #pragma omp parallel for schedule(dynamic, 256)
@@ -277,55 +263,116 @@ struct Certification
             const auto i = std::size_t(ii);
             if (!stage.tick()) continue;
             const Cell& c = cells[i];
-            std::array<Vec3, 3> m;
-            std::array<double, 3> md;
-            std::array<std::uint32_t, 3> mf;
+            Midpoints& mp = mids[i];
             Candidate& cand = found[i];
             for (std::size_t k = 0; k < 3; ++k) {
                 const std::size_t k1 = (k + 1) % 3;
-                m[k] = 0.5 * (c.corner[k] + c.corner[k1]);  // midpoint of edge k, k + 1
-                md[k] = face_distance(m[k], tris, c.closest[k]);
-                mf[k] = c.closest[k];
+                const Vec3 m = midpoint(c, k);
+                double md = face_distance(m, tris, c.closest[k]);
+                std::uint32_t mf = c.closest[k];
                 if (c.closest[k1] != c.closest[k]) {
-                    const double other = face_distance(m[k], tris, c.closest[k1]);
-                    if (other < md[k]) {
-                        md[k] = other;
-                        mf[k] = c.closest[k1];
+                    const double other = face_distance(m, tris, c.closest[k1]);
+                    if (other < md) {
+                        md = other;
+                        mf = c.closest[k1];
                     }
                 }
-                if (md[k] > lower_now) descend_point(m[k], tris, nbr, mf[k], md[k], lower_now);
-                if (md[k] > lower_now) {
-                    const ClosestPoint q = b_index.closest_point(m[k], mf[k]);
+                if (md > lower_now) descend_point(m, tris, nbr, mf, md, lower_now);
+                if (md > lower_now) {
+                    const ClosestPoint q = b_index.closest_point(m, mf);
                     ++queried[i];
-                    md[k] = q.distance;
-                    mf[k] = q.face;
-                    if (q.distance > cand.d) cand = {q.distance, m[k], c.face, q.point, q.face};
+                    md = q.distance;
+                    mf = q.face;
+                    if (q.distance > cand.d) cand = {q.distance, m, c.face, q.point, q.face};
                 }
-            }
-            // Children: the three corner triangles and the middle one.
-            for (std::size_t k = 0; k < 3; ++k) {
-                Cell& ch = next[4 * i + k];
-                const std::size_t prev = (k + 2) % 3;  // edge (k - 1, k)
-                ch.corner = {c.corner[k], m[k], m[prev]};
-                ch.d = {c.d[k], md[k], md[prev]};
-                ch.closest = {c.closest[k], mf[k], mf[prev]};
-            }
-            Cell& mid = next[4 * i + 3];
-            mid.corner = m;
-            mid.d = md;
-            mid.closest = mf;
-            for (std::size_t k = 0; k < 4; ++k) {
-                Cell& ch = next[4 * i + k];
-                ch.face = c.face;
-                ch.hint = c.hint;
-                ch.depth = c.depth + 1;
+                mp.d[k] = md;
+                mp.face[k] = mf;
             }
         }
         stage.check();
         for (const std::size_t q : queried) r.point_evaluations += q;
         for (const Candidate& cand : found)  // in order: the lowest index wins ties
             if (cand.d > best.d) best = cand;
-        cells.swap(next);
+
+        // The parts, bounded against the lower bound the round reached, a
+        // block at a time; their bounds (and the faces that gave them) kept,
+        // then the open ones made again into a list of their exact size (so
+        // that even when all stay open the round holds no more than four
+        // parts per cell, as a list of all parts would).
+        std::vector<Candidate>().swap(found);
+        std::vector<std::size_t>().swap(queried);
+        const double threshold = best.d + tolerance(best.d);
+        constexpr std::size_t kBlock = std::size_t(1) << 14;  // cells per block: 64K parts
+        std::vector<double> upper(4 * n);
+        std::vector<std::uint32_t> hint(4 * n);
+        std::size_t n_open = 0;
+        for (std::size_t first = 0; first < n; first += kBlock) {
+            const std::size_t m = std::min(kBlock, n - first);
+            block.resize(4 * m);
+#pragma omp parallel for schedule(dynamic, 64)
+            for (std::int64_t ii = 0; ii < std::int64_t(m); ++ii) {
+                const auto i = std::size_t(ii);
+                split(cells[first + i], mids[first + i], &block[4 * i]);
+                for (std::size_t k = 0; k < 4; ++k) {
+                    if (!stage.tick()) continue;
+                    Cell& c = block[4 * i + k];
+                    detail::bound_cell(c, threshold, target);
+                    upper[4 * (first + i) + k] = c.upper;
+                    hint[4 * (first + i) + k] = c.hint;
+                }
+            }
+            stage.check();
+            for (const Cell& c : block) {
+                if (c.upper <= threshold || c.depth >= kMaxDepth)
+                    upper_done = std::max(upper_done, c.upper);
+                else
+                    ++n_open;
+            }
+        }
+        r.bound_evaluations += 4 * n;
+        std::vector<Cell> open;
+        open.reserve(n_open);
+        for (std::size_t i = 0; i < n; ++i) {
+            std::array<Cell, 4> part;
+            split(cells[i], mids[i], part.data());
+            for (std::size_t k = 0; k < 4; ++k) {
+                Cell& c = part[k];
+                c.upper = upper[4 * i + k];
+                c.hint = hint[4 * i + k];
+                if (!(c.upper <= threshold || c.depth >= kMaxDepth)) open.push_back(c);
+            }
+        }
+        cells.swap(open);
+    }
+
+    // The midpoint of edge k (corners k, k + 1) of cell c.
+    static Vec3 midpoint(const Cell& c, std::size_t k)
+    {
+        return 0.5 * (c.corner[k] + c.corner[(k + 1) % 3]);
+    }
+
+    // The four parts of cell c, its midpoints bounded by mp, into out[0..3]:
+    // the three corner triangles and the middle one.
+    static void split(const Cell& c, const Midpoints& mp, Cell* out)
+    {
+        const std::array<Vec3, 3> m{midpoint(c, 0), midpoint(c, 1), midpoint(c, 2)};
+        for (std::size_t k = 0; k < 3; ++k) {
+            Cell& ch = out[k];
+            const std::size_t prev = (k + 2) % 3;  // edge (k - 1, k)
+            ch.corner = {c.corner[k], m[k], m[prev]};
+            ch.d = {c.d[k], mp.d[k], mp.d[prev]};
+            ch.closest = {c.closest[k], mp.face[k], mp.face[prev]};
+        }
+        Cell& mid = out[3];
+        mid.corner = m;
+        mid.d = mp.d;
+        mid.closest = mp.face;
+        for (std::size_t k = 0; k < 4; ++k) {
+            out[k].face = c.face;
+            out[k].hint = c.hint;
+            out[k].depth = c.depth + 1;
+            out[k].upper = detail::kInf;
+        }
     }
 
     // The interval, its tolerance and the location of the lower bound.
@@ -364,8 +411,9 @@ struct Certification
     // the last one first (depth first, so the memory stays bounded). Until
     // a round would be that large the search is the breadth-first one.
     std::vector<std::vector<Cell>> pending;
-    std::vector<Cell> next;        // a round's children, four per cell
+    std::vector<Midpoints> mids;   // a round's bounds of the cells' edge midpoints
     std::vector<Candidate> found;  // a round's candidates, one per cell
+    std::vector<Cell> block;       // a block of a round's parts, four per cell
 };
 
 }  // namespace
