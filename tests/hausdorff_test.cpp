@@ -299,6 +299,40 @@ TEST(Hausdorff, SameIntervalAndLocationForAnyThreadCount)
     expect_same_result(one, many);
 }
 
+// Rounds of more open cells than a block of parts is made from (16K cells):
+// the parts are bounded block by block and the open ones made again, in
+// order, whatever the thread count. A coarse sphere against a finer one: every
+// face sags about as far, so the round after the first splits every one of
+// the coarse sphere's 20480 faces (two blocks).
+TEST(Hausdorff, RoundsMadeInBlocksGiveTheStoredIntervalAtAnyThreadCount)
+{
+    const Mesh a = icosphere(5).mesh;
+    const Mesh b = icosphere(6).mesh;
+    HausdorffOptions o;
+    o.relative_tolerance = 1e-9;
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const CertifiedHausdorff one = certified_hausdorff(a, b, o);
+    omp_set_num_threads(std::max(3, threads));
+    const CertifiedHausdorff many = certified_hausdorff(a, b, o);
+    omp_set_num_threads(threads);
+    expect_certified(one);
+    expect_same_result(one, many);
+    // The first round (a cell per face) and four parts of every face in the next.
+    EXPECT_GE(one.bound_evaluations, 5u * a.n_faces());
+    // The search before its rounds were made in blocks (fcdf8de: all four
+    // parts of every cell held, then bounded and pruned), stored: the same
+    // interval, location and work to the last bit. A part bounded or kept in
+    // the wrong place changes the work, if not the interval.
+    EXPECT_EQ(one.lower, 0x1.bff59d96526efp-13);
+    EXPECT_EQ(one.upper, 0x1.bff59d9ae917ep-13);
+    EXPECT_EQ(one.bound_evaluations, 117520u);
+    EXPECT_EQ(one.point_evaluations, 73362u);
+    EXPECT_EQ(one.rounds, 22);
+    EXPECT_EQ(one.location.face, 1021u);
+    EXPECT_EQ(one.location.closest_face, 4087u);
+}
+
 // The certification's bounds with the AVX2 kernel (where the CPU has it) and
 // without: the same interval, location and work, to the bit.
 TEST(Hausdorff, VectorAndScalarKernelsGiveTheSameInterval)

@@ -45,6 +45,13 @@ struct Midpoints
     std::array<std::uint32_t, 3> face;
 };
 
+// A cell is done with when its bound is within the threshold, or at the
+// depth limit (its bound still enters the upper bound).
+bool closed(const Cell& c, double threshold)
+{
+    return c.upper <= threshold || c.depth >= kMaxDepth;
+}
+
 double largest_coordinate(const Mesh& m)
 {
     double s = 0.0;
@@ -161,7 +168,7 @@ struct Certification
             stage.check();
             r.bound_evaluations += m;
             for (const Cell& c : chunk) {
-                if (c.upper <= threshold || c.depth >= kMaxDepth)
+                if (closed(c, threshold))
                     upper_done = std::max(upper_done, c.upper);
                 else
                     cells.push_back(c);
@@ -323,7 +330,7 @@ struct Certification
             }
             stage.check();
             for (const Cell& c : block) {
-                if (c.upper <= threshold || c.depth >= kMaxDepth)
+                if (closed(c, threshold))
                     upper_done = std::max(upper_done, c.upper);
                 else
                     ++n_open;
@@ -339,7 +346,7 @@ struct Certification
                 Cell& c = part[k];
                 c.upper = upper[4 * i + k];
                 c.hint = hint[4 * i + k];
-                if (!(c.upper <= threshold || c.depth >= kMaxDepth)) open.push_back(c);
+                if (!closed(c, threshold)) open.push_back(c);
             }
         }
         cells.swap(open);
