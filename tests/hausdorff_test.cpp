@@ -15,6 +15,7 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <utility>
 
 using namespace meshdiff;
 
@@ -282,6 +283,20 @@ void expect_same_result(const CertifiedHausdorff& x, const CertifiedHausdorff& y
     EXPECT_EQ(x.bound_evaluations, y.bound_evaluations);
     EXPECT_EQ(x.rounds, y.rounds);
 }
+
+// certified_hausdorff(a, b, o) on 1 thread and on \p many (at least), the
+// thread count restored after.
+std::pair<CertifiedHausdorff, CertifiedHausdorff> on_one_and_many_threads(const Mesh& a, const Mesh& b,
+                                                                          const HausdorffOptions& o, int many)
+{
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    CertifiedHausdorff one = certified_hausdorff(a, b, o);
+    omp_set_num_threads(std::max(many, threads));
+    CertifiedHausdorff more = certified_hausdorff(a, b, o);
+    omp_set_num_threads(threads);
+    return {std::move(one), std::move(more)};
+}
 }  // namespace
 
 TEST(Hausdorff, SameIntervalAndLocationForAnyThreadCount)
@@ -290,12 +305,7 @@ TEST(Hausdorff, SameIntervalAndLocationForAnyThreadCount)
     const Mesh b = icosphere(4).mesh;
     HausdorffOptions o;
     o.relative_tolerance = 1e-8;
-    const int threads = omp_get_max_threads();
-    omp_set_num_threads(1);
-    const CertifiedHausdorff one = certified_hausdorff(a, b, o);
-    omp_set_num_threads(std::max(2, threads));
-    const CertifiedHausdorff many = certified_hausdorff(a, b, o);
-    omp_set_num_threads(threads);
+    const auto [one, many] = on_one_and_many_threads(a, b, o, 2);
     expect_same_result(one, many);
 }
 
@@ -310,12 +320,7 @@ TEST(Hausdorff, RoundsMadeInBlocksGiveTheStoredIntervalAtAnyThreadCount)
     const Mesh b = icosphere(6).mesh;
     HausdorffOptions o;
     o.relative_tolerance = 1e-9;
-    const int threads = omp_get_max_threads();
-    omp_set_num_threads(1);
-    const CertifiedHausdorff one = certified_hausdorff(a, b, o);
-    omp_set_num_threads(std::max(3, threads));
-    const CertifiedHausdorff many = certified_hausdorff(a, b, o);
-    omp_set_num_threads(threads);
+    const auto [one, many] = on_one_and_many_threads(a, b, o, 3);
     expect_certified(one);
     expect_same_result(one, many);
     // The first round (a cell per face) and four parts of every face in the next.
