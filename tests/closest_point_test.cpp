@@ -184,6 +184,20 @@ TEST(ClosestPoint, IndexBoundsContainTheMesh)
     EXPECT_GT(index.memory_bytes(), 0u);
 }
 
+TEST(ClosestPoint, IndexHoldsItsTrianglesInUnder72BytesAFace)
+{
+    // The index's triangles are positions into its own copy of the used
+    // points (16 bytes a triangle, and 24 a point: a closed mesh has half as
+    // many vertices as faces), beside the 4-wide tree and its tables (about
+    // 40 bytes a face): 67 bytes a face on this sphere. Corners copied into
+    // every triangle (80 bytes a face, 119 in all) would not fit; the same
+    // distances either way (the brute-force tests above and below).
+    const Mesh m = icosphere(6).mesh;
+    const ClosestPointIndex index(m);
+    EXPECT_LT(index.memory_bytes(), 72 * m.n_faces());
+    EXPECT_GT(index.memory_bytes(), 40 * m.n_faces());
+}
+
 TEST(ClosestPoint, IndexEqualsBruteForceExactlyOnAFan)
 {
     // 4000 slivers around one vertex: every triangle's box contains the hub

@@ -52,7 +52,7 @@ class Triangles
 public:
     Triangles() = default;
     explicit Triangles(const ClosestPointIndex& index) : bvh_(&bvh_of(index)) {}
-    const Triangle& operator[](std::size_t face) const { return bvh_->tris[bvh_->position_of[face]]; }
+    Triangle operator[](std::size_t face) const { return bvh_->tris[bvh_->position_of[face]]; }
 
 private:
     const Bvh* bvh_ = nullptr;

@@ -358,7 +358,7 @@ void detail::signed_query(const Mesh& mesh, const ClosestPointIndex& index, cons
             const Vec3& p = queries[i];
             ClosestFeature f;
             if (r == detail::kRegionUnknown) {
-                const detail::Tri& t = bvh.tris[bvh.position_of[c.face]];
+                const detail::Tri t = bvh.tris[bvh.position_of[c.face]];
                 f = t.thin ? thin_feature(p, t.a, t.b, t.c) : face_feature(p, t.a, t.b, t.c);
             } else {
                 f = kernel_feature(c.point, r);

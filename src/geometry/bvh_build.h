@@ -14,14 +14,47 @@
 
 namespace meshdiff::detail {
 
-//! A triangle of the index: its corners, its face in the mesh, and whether
-//! it is thin.
+//! A triangle of the index as the queries read it: its corners (in the
+//! index's own copy of the points, LeafTriangles), its face in the mesh, and
+//! whether it is thin (see detail::is_thin_triangle). A view, made by
+//! LeafTriangles::operator[].
 struct Tri
 {
-    Tri() {}  // not zeroed: the build writes every one (2M faces: 160 MB)
-    Vec3 a, b, c;
+    const Vec3& a;
+    const Vec3& b;
+    const Vec3& c;
     std::uint32_t face;
-    bool thin;  // see detail::is_thin_triangle
+    bool thin;
+};
+
+//! The index's triangles in leaf order: per triangle the positions of its
+//! corners in `points` and its face (with the thin bit), 16 bytes; `points`
+//! holds the mesh's vertices that faces use, in the order the leaves first
+//! use them (so that a leaf's corners are near each other in memory), 24
+//! bytes each. A 2M-face mesh: 56 MB, not the 160 MB of the corners copied
+//! into every triangle; the same coordinates, so the same distances.
+struct LeafTriangles
+{
+    //! The bit of Corners::face_thin set for a thin triangle; a face is below
+    //! it (build_bvh() checks).
+    static constexpr std::uint32_t kThin = 0x80000000u;
+    struct Corners
+    {
+        Corners() {}  // not zeroed: the build writes every one
+        std::array<std::uint32_t, 3> v;
+        std::uint32_t face_thin;
+    };
+    std::vector<Corners> corners;
+    std::vector<Vec3> points;
+
+    Tri operator[](std::size_t i) const
+    {
+        const Corners& t = corners[i];
+        return Tri{points[t.v[0]], points[t.v[1]], points[t.v[2]], t.face_thin & ~kThin, (t.face_thin & kThin) != 0};
+    }
+    std::size_t size() const { return corners.size(); }
+    bool empty() const { return corners.empty(); }
+    std::size_t memory_bytes() const { return corners.capacity() * sizeof(Corners) + points.capacity() * sizeof(Vec3); }
 };
 
 //! A node has an oriented box besides its axis-aligned one (Bvh::obbs) when
@@ -74,7 +107,7 @@ struct alignas(64) WideNode
 //! The tree and its tables, as the queries read them.
 struct Bvh
 {
-    std::vector<Tri> tris;                         // in leaf order
+    LeafTriangles tris;                            // in leaf order
     std::vector<WideNode> nodes;                   // the root first; none if the root is a leaf
     std::vector<std::uint32_t> parent_of;          // per wide node: 4 x its parent + its slot there (root: 0)
     std::vector<std::uint32_t> leaf_of;            // per triangle position: 4 x its leaf's wide node + slot

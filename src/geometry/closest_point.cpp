@@ -220,7 +220,7 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
         }
         detail::PairsX4 in;
         for (std::uint32_t k = 0; k < 4; ++k) {
-            const Tri& t = tris[first + std::min(k, count - 1)];
+            const Tri t = tris[first + std::min(k, count - 1)];
             in.p[k] = p.data();
             in.a[k] = t.a.data();
             in.b[k] = t.b.data();
@@ -354,7 +354,8 @@ double ClosestPointIndex::Impl::hull_query(const std::array<Vec3, 3>& c, double 
             hi[a] = -kInf;
         }
         for (std::uint32_t i = n.child[s]; i < n.child[s] + n.count[s]; ++i) {
-            for (const Vec3* q : {&tris[i].a, &tris[i].b, &tris[i].c}) {
+            const Tri t = tris[i];
+            for (const Vec3* q : {&t.a, &t.b, &t.c}) {
                 for (std::size_t a = 0; a < 3; ++a) {
                     lo[a] = std::min(lo[a], (*q)[Eigen::Index(a)]);
                     hi[a] = std::max(hi[a], (*q)[Eigen::Index(a)]);
@@ -397,7 +398,7 @@ double ClosestPointIndex::Impl::hull_query(const std::array<Vec3, 3>& c, double 
         if (e.d2 >= best || e.d2 > cut) continue;
         if (e.count >= kLeaf) {
             for (std::uint32_t i = 0; i < e.count - kLeaf; ++i) {
-                const Tri& t = tris[e.ref + i];
+                const Tri t = tris[e.ref + i];
                 double v = 0.0;
                 for (const Vec3& q : c) {
                     v = std::max(v, (q - tri_point(q, t)).squaredNorm());
@@ -599,7 +600,7 @@ BoundingBox ClosestPointIndex::bounds() const
 
 std::size_t ClosestPointIndex::memory_bytes() const
 {
-    return impl_->tris.capacity() * sizeof(Tri) + impl_->nodes.capacity() * sizeof(WideNode) +
+    return impl_->tris.memory_bytes() + impl_->nodes.capacity() * sizeof(WideNode) +
            impl_->exact_box.capacity() * sizeof(std::array<double, 6>) + impl_->obbs.capacity() * sizeof(Obb) +
            (impl_->parent_of.capacity() + impl_->leaf_of.capacity() + impl_->position_of.capacity()) *
                sizeof(std::uint32_t);
