@@ -530,6 +530,57 @@ TEST(PseudoNormals, EqualTheLoopOverTheFacesBitForBitAtAnyThreadCount)
     }
 }
 
+TEST(PseudoNormals, SignsWithTheFaceNormalsLeftOutAreTheSame)
+{
+    // The surface distance drops PseudoNormals::face once the vertex normals
+    // are made; the signs then make each face normal from the corners (the
+    // index's copy in signed_query(), the mesh's in distance_sign()). Points
+    // near the corners and edge midpoints (closest to a corner or an edge,
+    // where the neighbour's normal across the edge is read too) and in the
+    // box, on sharp (fandisk), smooth and inward-oriented (flipped) meshes:
+    // the same signs as from the stored normals, every one.
+    std::vector<Mesh> meshes = {read_mesh(kData + "/fandisk.ply").mesh, read_mesh(kData + "/torus_R1_r025.ply").mesh};
+    meshes.push_back(flipped(meshes[1]));
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        const Mesh& m = meshes[k];
+        const auto kept = pseudo_normals(m, "M");
+        ASSERT_TRUE(kept) << k;
+        PseudoNormals left_out = *kept;
+        left_out.face = {};
+        left_out.face.shrink_to_fit();
+        const ClosestPointIndex index(m);
+        const BoundingBox box = bounding_box(m);
+        const double h = 1e-3 * box.diagonal();
+        std::mt19937_64 rng(k + 7);
+        std::uniform_real_distribution<double> u(-1.0, 1.0);
+        std::vector<Vec3> q;
+        for (std::size_t f = 0; f < m.n_faces(); f += 3) {
+            const Vec3& a = m.points[std::size_t(m.faces[f][0])];
+            const Vec3& b = m.points[std::size_t(m.faces[f][1])];
+            q.push_back(a + h * Vec3(u(rng), u(rng), u(rng)));
+            q.push_back(0.5 * (a + b) + h * Vec3(u(rng), u(rng), u(rng)));
+        }
+        for (int i = 0; i < 500; ++i)
+            q.push_back(box.min + 0.5 * (Vec3(u(rng), u(rng), u(rng)) + Vec3::Ones()).cwiseProduct(box.max - box.min));
+        std::vector<double> d(q.size()), d2(q.size());
+        std::vector<std::int8_t> s_kept(q.size()), s_left(q.size());
+        signed_query(m, index, *kept, q.data(), q.size(), d.data(), s_kept.data());
+        signed_query(m, index, left_out, q.data(), q.size(), d2.data(), s_left.data());
+        EXPECT_EQ(d, d2);
+        EXPECT_EQ(s_kept, s_left) << k;
+        const std::vector<ClosestPoint> c = index.closest_points(q);
+        int positive = 0, negative = 0;
+        for (std::size_t i = 0; i < q.size(); ++i) {
+            const int s = distance_sign(m, *kept, q[i], c[i].face);
+            EXPECT_EQ(distance_sign(m, left_out, q[i], c[i].face), s) << k << " " << i;
+            positive += s > 0;
+            negative += s < 0;
+        }
+        EXPECT_GT(positive, 100) << k;
+        EXPECT_GT(negative, 100) << k;
+    }
+}
+
 // Four spheres in a chain, each pair sharing one vertex: three vertices whose
 // faces form two fans. The fans are walked one vertex at a time in parallel:
 // the same count as the topology report at any thread count.

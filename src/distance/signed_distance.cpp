@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 namespace meshdiff {
@@ -258,13 +259,13 @@ std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::str
         return std::nullopt;
     }
     n.flipped = n.volume < 0.0;
-    const double s = n.flipped ? -1.0 : 1.0;
     n.face.resize(nf);
     const auto m = std::int64_t(nf);
 #pragma omp parallel for schedule(static)
     for (std::int64_t i = 0; i < m; ++i) {
-        const auto f = std::size_t(i);
-        n.face[f] = s * face_cross(mesh, f).normalized();
+        const Face& t = mesh.faces[std::size_t(i)];
+        n.face[std::size_t(i)] = unit_face_normal(n.flipped, mesh.points[std::size_t(t[0])],
+                                                  mesh.points[std::size_t(t[1])], mesh.points[std::size_t(t[2])]);
     }
     // Each vertex's angle-weighted sum over its faces in ascending order (the
     // order of a loop over the faces; no face repeats a corner here), one
@@ -293,19 +294,41 @@ std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::str
 
 namespace {
 
-// distance_sign() from the closest feature \p c of face's triangle.
-int sign_at(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p, std::uint32_t face, const ClosestFeature& c)
+// distance_sign() from the closest feature \p c of face's triangle; the
+// unit normal of a face g is normals.face[g], or corners(g) (the triangle's
+// corners in order) made into unit_face_normal() when normals.face is empty.
+template <typename Corners>
+int sign_at(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p, std::uint32_t face, const ClosestFeature& c,
+            const Corners& corners)
 {
-    const Face& t = mesh.faces[face];
     const Vec3 d = p - c.point;
     if (d.isZero(0.0)) return 0;
-    const Vec3& nf = normals.face[face];
-    const double s = c.kind == FeatureKind::Interior ? d.dot(nf)
-                     : c.kind == FeatureKind::Edge
-                         ? d.dot(nf + normals.face[normals.opposite[3 * std::size_t(face) + c.index] / 3])
-                         : d.dot(normals.vertex[std::size_t(t[c.index])]);
+    if (c.kind == FeatureKind::Vertex) {
+        const double s = d.dot(normals.vertex[std::size_t(mesh.faces[face][c.index])]);
+        return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
+    }
+    auto normal = [&](std::uint32_t g) {
+        if (!normals.face.empty()) return normals.face[g];
+        const auto [a, b, cc] = corners(g);
+        return unit_face_normal(normals.flipped, a, b, cc);
+    };
+    const Vec3 nf = normal(face);
+    const double s = c.kind == FeatureKind::Interior
+                         ? d.dot(nf)
+                         : d.dot(nf + normal(normals.opposite[3 * std::size_t(face) + c.index] / 3));
     return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
 }
+
+// The corners of face g of \p mesh.
+struct MeshCorners
+{
+    const Mesh& mesh;
+    std::tuple<const Vec3&, const Vec3&, const Vec3&> operator()(std::uint32_t g) const
+    {
+        const Face& t = mesh.faces[g];
+        return {mesh.points[std::size_t(t[0])], mesh.points[std::size_t(t[1])], mesh.points[std::size_t(t[2])]};
+    }
+};
 
 }  // namespace
 
@@ -314,7 +337,8 @@ int distance_sign(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p,
     const Face& t = mesh.faces[face];
     return sign_at(mesh, normals, p, face,
                    closest_feature(p, mesh.points[std::size_t(t[0])], mesh.points[std::size_t(t[1])],
-                                   mesh.points[std::size_t(t[2])]));
+                                   mesh.points[std::size_t(t[2])]),
+                   MeshCorners{mesh});
 }
 
 std::vector<double> signed_distances(const Mesh& mesh, const PseudoNormals& normals, const Vec3* queries,
@@ -347,7 +371,13 @@ void detail::signed_query(const Mesh& mesh, const ClosestPointIndex& index, cons
     // and its corners.
     // Where the four-lane kernel chose the closest point, its Voronoi region
     // comes with it (the same tests, the same point as face_feature()'s).
+    // Face normals not kept are made from the index's copy of the corners
+    // too (for the closest face, just read, and its neighbour across an edge).
     const detail::Bvh& bvh = detail::bvh_of(index);
+    auto corners = [&bvh](std::uint32_t g) {
+        const detail::Tri t = bvh.tris[bvh.position_of[g]];
+        return std::tuple<const Vec3&, const Vec3&, const Vec3&>(t.a, t.b, t.c);
+    };
     detail::distances_with_regions(
         index, queries, n, distances,
         [&](std::size_t i, const ClosestPoint& c, unsigned r) {
@@ -363,7 +393,7 @@ void detail::signed_query(const Mesh& mesh, const ClosestPointIndex& index, cons
             } else {
                 f = kernel_feature(c.point, r);
             }
-            signs[i] = std::int8_t(sign_at(mesh, normals, p, c.face, f));
+            signs[i] = std::int8_t(sign_at(mesh, normals, p, c.face, f, corners));
         },
         beside);
 }

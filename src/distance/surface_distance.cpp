@@ -305,10 +305,14 @@ struct DirectionTarget
     // declared last, so destroyed (waiting for the task) first when a
     // direction ends early on an exception.
     std::future<std::optional<PseudoNormals>> pending;
-    // The pseudo-normals, once made.
+    // The pseudo-normals, once made; their face normals dropped (48 MB for
+    // 2M faces): the signs make them from the index's corners (the same
+    // values, signed_distance.h).
     void take_normals()
     {
-        if (pending.valid()) normals = pending.get();
+        if (!pending.valid()) return;
+        normals = pending.get();
+        if (normals) std::vector<Vec3>().swap(normals->face);
     }
 };
 

@@ -67,12 +67,23 @@ ClosestFeature closest_feature(const Vec3& p, const Vec3& a, const Vec3& b, cons
 //! to corner k + 1 of face f is face[f] + face[opposite[3 f + k] / 3].
 struct PseudoNormals
 {
-    std::vector<Vec3> face;               //!< unit face normals, per face
+    //! Unit face normals, per face: unit_face_normal() of each face's corners.
+    //! May be left empty (the surface distance drops them once the vertex
+    //! normals are made): the signs then make them from the corners when
+    //! needed, the same values.
+    std::vector<Vec3> face;
     std::vector<std::uint32_t> opposite;  //!< per half-edge 3 f + k: the opposite half-edge 3 g + j
     std::vector<Vec3> vertex;             //!< per vertex: sum of angle x unit normal over its faces
     bool flipped = false;                 //!< the mesh was oriented inwards and is used flipped
     double volume = 0.0;                  //!< signed volume of the mesh as given
 };
+
+//! The unit normal of the triangle (a, b, c) as PseudoNormals::face holds it:
+//! (b - a) x (c - a) normalised, negated when \p flipped.
+inline Vec3 unit_face_normal(bool flipped, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    return (flipped ? -1.0 : 1.0) * (b - a).cross(c - a).normalized();
+}
 
 //! Why \p mesh cannot be signed against, naming the conditions and their
 //! counts ("12 boundary edges"), or the empty string if it can (a zero volume
