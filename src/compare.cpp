@@ -2,6 +2,7 @@
 
 #include "meshdiff/error.h"
 
+#include "core/release.h"
 #include "distance/two_directions.h"
 #include "roughness/local_roughness_closest.h"
 #include "roughness/profile_keeping_h.h"
@@ -165,10 +166,10 @@ void sigma_half(Comparison& c, const LoadedMesh& a, const MeshData& a_data, cons
     if (options.local && !c.local_roughness) local_with_radii(c, a, a_data, b, b_data, options, handed, index_of);
     if (!options.profile.keep_vertex_data)
         for (RoughnessProfile* p : {&*c.original_profile, &*c.processed_profile}) {
-            p->H = {};
-            p->D = {};
-            p->D_global = {};
-            p->D_radii = {};
+            detail::release(p->H);
+            detail::release(p->D);
+            detail::release(p->D_global);
+            detail::release(p->D_radii);
         }
 }
 

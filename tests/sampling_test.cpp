@@ -291,6 +291,30 @@ TEST(Sampling, SamplesMadeInPiecesAreTheSamplesBitForBit)
         }
 }
 
+TEST(Sampling, PlanDroppingItsVertexAndEdgeListsFreesThemAndStillMakesTheFaceSamples)
+{
+    // The surface distance drops the plan's vertex and edge lists once their
+    // samples are made (3M edges and their offsets: 60 MB): their storage
+    // is given back, and the face samples are made as before.
+    const Mesh m = icosphere(3).mesh;
+    SamplingOptions o;
+    o.samples = 20000;
+    const SurfaceSamples all = sample_surface(m, o);
+    detail::SamplePlan plan = detail::plan_samples(MeshData(m), o);
+    ASSERT_GT(plan.edges.capacity(), 0u);
+    plan.drop_vertices_and_edges();
+    EXPECT_EQ(plan.vertices.capacity(), 0u);
+    EXPECT_EQ(plan.edges.capacity(), 0u);
+    EXPECT_EQ(plan.edge_offset.capacity(), 0u);
+    detail::SampleMaker maker(m, plan);
+    const std::size_t first = all.n_vertex + all.n_edge;
+    std::vector<Vec3> p(all.size() - first);
+    std::vector<SampleKind> kind(p.size());
+    std::vector<std::uint32_t> element(p.size());
+    maker.make(first, all.size(), p.data(), kind.data(), element.data());
+    for (std::size_t i = first; i < all.size(); ++i) ASSERT_EQ(p[i - first], all.points[i]) << i;
+}
+
 // The plan's face areas and edge lengths are computed in parallel and summed
 // in order: the same samples and densities at any thread count.
 TEST(Sampling, IsTheSameAtAnyThreadCount)

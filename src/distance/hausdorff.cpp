@@ -4,6 +4,7 @@
 #include "meshdiff/error.h"
 #include "meshdiff/geometry/point_triangle.h"
 
+#include "core/release.h"
 #include "core/stage_progress.h"
 #include "distance/hausdorff_bounds.h"
 #include "distance/hausdorff_seeded.h"
@@ -306,8 +307,8 @@ struct Certification
         // then the open ones made again into a list of their exact size (so
         // that even when all stay open the round holds no more than four
         // parts per cell, as a list of all parts would).
-        std::vector<Candidate>().swap(found);
-        std::vector<std::size_t>().swap(queried);
+        detail::release(found);
+        detail::release(queried);
         const double threshold = best.d + tolerance(best.d);
         constexpr std::size_t kBlock = std::size_t(1) << 14;  // cells per block: 64K parts
         std::vector<double> upper(4 * n);

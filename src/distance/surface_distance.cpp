@@ -5,6 +5,7 @@
 #include "meshdiff/distance/signed_distance.h"
 #include "meshdiff/error.h"
 
+#include "core/release.h"
 #include "core/stage_progress.h"
 #include "core/unset_allocator.h"
 #include "distance/direction_fold.h"
@@ -312,7 +313,7 @@ struct DirectionTarget
     {
         if (!pending.valid()) return;
         normals = pending.get();
-        if (normals) std::vector<Vec3>().swap(normals->face);
+        if (normals) detail::release(normals->face);
     }
 };
 
@@ -538,7 +539,7 @@ SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const Dista
         DirectionResult k = one_direction(t);
         if (handed) {
             handed->index_a.reset();
-            handed->b_vertices_on_a = {};
+            detail::release(handed->b_vertices_on_a);
         }
         return k;
     };

@@ -2,6 +2,7 @@
 
 #include "meshdiff/error.h"
 
+#include "core/release.h"
 #include "core/stage_progress.h"
 #include "geometry/point_triangle_kernels.h"
 
@@ -360,7 +361,7 @@ void append_subtrees(Part& tree, const Part (&sub)[2])
     // build would grow by doubling: 2M triangles, 1.2M nodes).
     {
         const Node root = tree.nodes[0];
-        std::vector<Node>().swap(tree.nodes);
+        detail::release(tree.nodes);
         tree.nodes.reserve(1 + sub[0].nodes.size() + sub[1].nodes.size());
         tree.nodes.push_back(root);
     }
@@ -577,9 +578,9 @@ void build_bvh(const Mesh& mesh, Bvh& out)
     // The facts are done with: freed before the triangles are made, in leaf
     // order (they are not held beside them, nor permuted: 160 MB each for a
     // 2M-face mesh).
-    std::vector<FaceFacts>().swap(facts);
+    detail::release(facts);
     set_up_triangles(mesh, order, out);
-    std::vector<std::uint32_t>().swap(order);
+    detail::release(order);
     make_tables(tree, out);
     stage.finish();
 }

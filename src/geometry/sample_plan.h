@@ -9,6 +9,8 @@
 #include "meshdiff/core/topology.h"
 #include "meshdiff/geometry/sampling.h"
 
+#include "core/release.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <random>
@@ -32,9 +34,9 @@ struct SamplePlan
     //! Frees the vertex and edge lists: only face samples can be made after.
     void drop_vertices_and_edges()
     {
-        vertices = {};
-        edges = {};
-        edge_offset = {};
+        detail::release(vertices);
+        detail::release(edges);
+        detail::release(edge_offset);
     }
 };
 

@@ -2,6 +2,7 @@
 
 #include "meshdiff/error.h"
 
+#include "core/release.h"
 #include "roughness/disk_means_batches.h"
 
 #include "core/stage_progress.h"
@@ -619,8 +620,8 @@ void detail::disk_means_batches(const MeshData& data, const Adjacency& adj, cons
     }
     // The orders are not read by the search: freed before its workspaces are
     // made (8 MB a 1M mesh).
-    std::vector<std::uint32_t>().swap(morton);
-    std::vector<std::uint32_t>().swap(rank);
+    detail::release(morton);
+    detail::release(rank);
     const Adjacency& sadj = renumber ? padj : adj;
     const std::vector<double>& svalues = renumber ? pvalues : values;
     const std::vector<double>* svalues2 = second && renumber ? &pvalues2 : second;

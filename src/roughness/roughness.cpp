@@ -6,6 +6,7 @@
 #include "meshdiff/roughness/metric_levels.h"
 #include "meshdiff/roughness/neighborhood.h"
 
+#include "core/release.h"
 #include "roughness/level_stream.h"
 #include "roughness/profile_keeping_h.h"
 
@@ -365,7 +366,7 @@ RoughnessProfile detail::roughness_profile_keeping_H(const Mesh& mesh, const Pro
     // unit_data derives nothing more from the mesh after this.
     if (options.radii.empty()) {
         (void)unit_data.box();  // derived already by the mask; made sure of
-        std::vector<Face>().swap(unit.faces);
+        detail::release(unit.faces);
     }
     p.curvature_undefined = field.undefined;
     p.curvature_widened = field.widened;

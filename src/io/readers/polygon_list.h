@@ -3,6 +3,7 @@
 // polygon: a reader of a 2M-face file made 2M small vectors before).
 #pragma once
 
+#include "core/release.h"
 #include "core/unset_allocator.h"
 
 #include <cstddef>
@@ -46,7 +47,7 @@ public:
     void assign_uniform(CornerArray&& corners, std::size_t each)
     {
         corners_ = std::move(corners);
-        start_ = {};
+        detail::release(start_);
         uniform_ = each;
     }
     //! Room for \p n polygons of \p corners_each corners.
