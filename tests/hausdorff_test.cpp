@@ -174,6 +174,29 @@ TEST(Hausdorff, RaisedCentreOfASquareInBothDirections)
     EXPECT_LT((g.location.closest_point - Vec3::Zero()).norm(), 1e-12);
 }
 
+TEST(Hausdorff, AMaximumAtAVertexComesWithItsClosestPoint)
+{
+    // The raised square again, moved away from the origin: B -> A is largest
+    // at B's apex, a vertex, whose closest point on A (the fan's centre) the
+    // certification finds again from the vertex (it keeps the vertices'
+    // distances and faces only): the index's closest point, bit for bit.
+    const Vec3 shift(5.0, 7.0, 3.0);
+    Mesh a;
+    a.points = {{0, 0, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}};
+    a.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}};
+    Mesh b = a;
+    b.points[0].z() = 0.3;
+    for (Mesh* m : {&a, &b})
+        for (Vec3& p : m->points) p += shift;
+    const CertifiedHausdorff g = certified_hausdorff(b, a, {});
+    expect_certified(g);
+    EXPECT_EQ(g.location.point, b.points[0]);
+    const ClosestPoint q = ClosestPointIndex(a).closest_point(b.points[0]);
+    EXPECT_EQ(g.location.closest_point, q.point);
+    EXPECT_EQ(g.location.closest_face, q.face);
+    EXPECT_LT((g.location.closest_point - shift).norm(), 1e-12);
+}
+
 TEST(Hausdorff, ParallelPlanesAndTheMeshItself)
 {
     const Mesh a = plane_grid(9, 7, 0.25).mesh;

@@ -27,6 +27,7 @@ using detail::descend_point;
 using detail::face_distance;
 using detail::kMaxDepth;
 using detail::kNone;
+using detail::VertexClosest;
 
 // A candidate for the lower bound: a point of A and its closest point of B.
 struct Candidate
@@ -117,7 +118,7 @@ struct Certification
     }
 
     // The lower bound from the seed and from A's vertices.
-    void set_up_lower_bound(const std::optional<HausdorffSeed>& seed, const std::vector<ClosestPoint>& vq)
+    void set_up_lower_bound(const std::optional<HausdorffSeed>& seed, const std::vector<VertexClosest>& vq)
     {
         if (seed) {
             const ClosestPoint q = b_index.closest_point(seed->point);
@@ -130,11 +131,17 @@ struct Certification
         std::vector<std::uint32_t> first_face(a.n_vertices(), kNone);
         for (std::size_t f = a.n_faces(); f-- > 0;)
             for (auto v : a.faces[f]) first_face[std::size_t(v)] = std::uint32_t(f);
+        std::size_t best_vertex = kNone;
         for (std::size_t v = 0; v < a.n_vertices(); ++v) {
             if (first_face[v] == kNone) continue;
             ++r.point_evaluations;
-            if (vq[v].distance > best.d) best = {vq[v].distance, a.points[v], first_face[v], vq[v].point, vq[v].face};
+            if (vq[v].distance > best.d) {
+                best = {vq[v].distance, a.points[v], first_face[v], Vec3::Zero(), vq[v].face};
+                best_vertex = v;
+            }
         }
+        // Its closest point on B, found again: the same query, the same point.
+        if (best_vertex != kNone) best.closest = b_index.closest_point(a.points[best_vertex]).point;
     }
 
     // The first round: a cell per face of A, its corners' distances from
@@ -143,7 +150,7 @@ struct Certification
     // held, not a cell per face (a 2M-face mesh: 256 MB): the lower bound
     // does not change within the round, so the open cells are those of one
     // pass over all faces, in the same order.
-    void first_round(const std::vector<ClosestPoint>& vq)
+    void first_round(const std::vector<VertexClosest>& vq)
     {
         stage.check();  // the serial set-up is checked between its steps
         const double threshold = best.d + tolerance(best.d);
@@ -426,10 +433,19 @@ struct Certification
 
 }  // namespace
 
+std::vector<detail::VertexClosest> detail::vertex_closest(const std::vector<ClosestPoint>& c)
+{
+    std::vector<VertexClosest> out(c.size());
+    const auto n = std::int64_t(c.size());
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < n; ++i) out[std::size_t(i)] = {c[std::size_t(i)].distance, c[std::size_t(i)].face};
+    return out;
+}
+
 CertifiedHausdorff detail::certified_hausdorff(const MeshData& a_data, const MeshData& b_data,
                                                const ClosestPointIndex& b_index, const HausdorffOptions& options,
                                                const std::optional<HausdorffSeed>& seed,
-                                               const std::vector<ClosestPoint>& vq)
+                                               const std::vector<VertexClosest>& vq)
 {
     validate_inputs(a_data, b_data, b_index, options);
     const Mesh& a = a_data.mesh();
@@ -449,7 +465,8 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Close
 {
     const MeshData a_data(a), b_data(b);
     validate_inputs(a_data, b_data, b_index, options);  // before the vertex queries
-    return detail::certified_hausdorff(a_data, b_data, b_index, options, seed, b_index.closest_points(a.points));
+    return detail::certified_hausdorff(a_data, b_data, b_index, options, seed,
+                                       detail::vertex_closest(b_index.closest_points(a.points)));
 }
 
 CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const HausdorffOptions& options)
@@ -459,7 +476,8 @@ CertifiedHausdorff certified_hausdorff(const Mesh& a, const Mesh& b, const Hausd
     const ClosestPointIndex index(b_data);
     const MeshData a_data(a);
     validate_inputs(a_data, b_data, index, options);  // before the vertex queries
-    return detail::certified_hausdorff(a_data, b_data, index, options, std::nullopt, index.closest_points(a.points));
+    return detail::certified_hausdorff(a_data, b_data, index, options, std::nullopt,
+                                       detail::vertex_closest(index.closest_points(a.points)));
 }
 
 // The seed of a certified Hausdorff distance: the sampled maximum of \p s,

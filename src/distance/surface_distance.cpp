@@ -96,7 +96,8 @@ struct Target
 // vertex samples take their distances from it instead of new queries (the
 // same values: the queries are exact).
 SampledDirection sampled_direction(const MeshData& from, const Target& to, const SamplingOptions& options,
-                                   const std::vector<ClosestPoint>* vertex_closest, std::vector<std::int8_t>& signs)
+                                   const std::vector<detail::VertexClosest>* vertex_closest,
+                                   std::vector<std::int8_t>& signs)
 {
     SampledDirection d;
     d.samples = sample_surface(from, options);
@@ -110,7 +111,7 @@ SampledDirection sampled_direction(const MeshData& from, const Target& to, const
 #pragma omp parallel for schedule(static)
     for (std::int64_t j = 0; j < mv; ++j) {
         const auto i = std::size_t(j);
-        const ClosestPoint& c = (*vertex_closest)[d.samples.element[i]];
+        const detail::VertexClosest& c = (*vertex_closest)[d.samples.element[i]];
         d.distances[i] = c.distance;
         if (to.normals && c.distance > 0.0)
             signs[i] = std::int8_t(distance_sign(to.mesh, *to.normals, d.samples.points[i], c.face));
@@ -147,8 +148,9 @@ private:
 // batch); only their distances are kept, for the percentiles. The area shares
 // below \p thresholds go to \p within.
 DistanceStats chunked_direction(const MeshData& from_data, const Target& to, const SamplingOptions& options,
-                                const std::vector<ClosestPoint>* vertex_closest, const std::vector<double>& thresholds,
-                                std::size_t bins, std::size_t chunk, std::vector<double>& within)
+                                const std::vector<detail::VertexClosest>* vertex_closest,
+                                const std::vector<double>& thresholds, std::size_t bins, std::size_t chunk,
+                                std::vector<double>& within)
 {
     const Mesh& from = from_data.mesh();
     // As sample_surface() does: check, then plan in the "sampling" stage.
@@ -217,7 +219,7 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
 #pragma omp parallel for schedule(static)
         for (std::int64_t j = 0; j < kk; ++j) {
             const auto i = std::size_t(j);
-            const ClosestPoint& c = (*vertex_closest)[b.element[i]];
+            const detail::VertexClosest& c = (*vertex_closest)[b.element[i]];
             distances[begin + i] = c.distance;
             if (to.normals)
                 b.signs[i] =
@@ -355,8 +357,8 @@ void make_target(const DirectionTask& t, DirectionTarget& g)
 // The distance of every vertex of a mesh t.from to the mesh t.to, and the
 // signed ones when it can be signed against; from \p vq (the closest points
 // of the vertices) when given.
-void mesh_vertex_distances(const DirectionTask& t, const DirectionTarget& g, const std::vector<ClosestPoint>* vq,
-                           DirectionResult& r)
+void mesh_vertex_distances(const DirectionTask& t, const DirectionTarget& g,
+                           const std::vector<detail::VertexClosest>* vq, DirectionResult& r)
 {
     const std::size_t nv = t.from.points.size();
     std::vector<std::int8_t> vsigns(g.normals ? nv : 0, 0);
@@ -387,15 +389,19 @@ DirectionResult one_direction(const DirectionTask& t)
     DirectionTarget g;
     make_target(t, g);
     const bool meshes = !t.from_cloud && !t.to_cloud;
-    std::vector<ClosestPoint> vq;  // from's vertices: samples and certification (two meshes)
+    // From's vertices on `to` (samples and certification, two meshes): their
+    // distances and faces only, the caller's closest points freed.
+    std::vector<detail::VertexClosest> vq;
     if (meshes && o.hausdorff) {
-        if (t.vertices_closest && t.vertices_closest->size() == t.from.points.size())
-            vq = std::exchange(*t.vertices_closest, {});
-        else
-            vq = g.index->closest_points(t.from.points);
+        if (t.vertices_closest && t.vertices_closest->size() == t.from.points.size()) {
+            vq = detail::vertex_closest(*t.vertices_closest);
+            detail::release(*t.vertices_closest);
+        } else {
+            vq = detail::vertex_closest(g.index->closest_points(t.from.points));
+        }
     }
     g.take_normals();
-    const std::vector<ClosestPoint>* vertex_closest = meshes && o.hausdorff ? &vq : nullptr;
+    const std::vector<detail::VertexClosest>* vertex_closest = meshes && o.hausdorff ? &vq : nullptr;
     if (meshes && !t.keep) {
         // The same statistics without keeping the samples (freed before the certification).
         const Target target{t.to, *g.index, g.normals ? &*g.normals : nullptr};
