@@ -151,16 +151,27 @@ TEST(Hausdorff, InteriorMaximumAtACircumcentre)
     EXPECT_LT(sd.forward.max, exact - 1e-4);
 }
 
+namespace {
+
+// The square [-1, 1]^2 as a fan of four triangles around its centre, the
+// centre raised to height h (a pyramid for h > 0), moved by shift.
+Mesh raised_square(double h, const Vec3& shift = Vec3::Zero())
+{
+    Mesh m;
+    m.points = {{0, 0, h}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}};
+    m.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}};
+    for (Vec3& p : m.points) p += shift;
+    return m;
+}
+
+}  // namespace
+
 TEST(Hausdorff, RaisedCentreOfASquareInBothDirections)
 {
     // A: the square [-1, 1]^2 as a fan of four triangles around its centre;
     // B: the same with the centre raised to height h, a pyramid.
     const double h = 0.3;
-    Mesh a;
-    a.points = {{0, 0, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}};
-    a.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}};
-    Mesh b = a;
-    b.points[0].z() = h;
+    const Mesh a = raised_square(0.0), b = raised_square(h);
     // A -> B: the centre of A is farthest, at distance h / sqrt(1 + h^2) from
     // each slanted face. B -> A: the apex, at height h above A.
     const CertifiedHausdorff f = certified_hausdorff(a, b, {});
@@ -181,13 +192,7 @@ TEST(Hausdorff, AMaximumAtAVertexComesWithItsClosestPoint)
     // certification finds again from the vertex (it keeps the vertices'
     // distances and faces only): the index's closest point, bit for bit.
     const Vec3 shift(5.0, 7.0, 3.0);
-    Mesh a;
-    a.points = {{0, 0, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {-1, -1, 0}};
-    a.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 1}};
-    Mesh b = a;
-    b.points[0].z() = 0.3;
-    for (Mesh* m : {&a, &b})
-        for (Vec3& p : m->points) p += shift;
+    const Mesh a = raised_square(0.0, shift), b = raised_square(0.3, shift);
     const CertifiedHausdorff g = certified_hausdorff(b, a, {});
     expect_certified(g);
     EXPECT_EQ(g.location.point, b.points[0]);

@@ -218,6 +218,17 @@ std::string reason_of(const SignFacts& f, const std::string& name)
     return s + " (the sign needs a closed, manifold, consistently oriented mesh without degenerate faces)";
 }
 
+// The corners of face g of \p mesh.
+struct MeshCorners
+{
+    const Mesh& mesh;
+    std::tuple<const Vec3&, const Vec3&, const Vec3&> operator()(std::uint32_t g) const
+    {
+        const Face& t = mesh.faces[g];
+        return {mesh.points[std::size_t(t[0])], mesh.points[std::size_t(t[1])], mesh.points[std::size_t(t[2])]};
+    }
+};
+
 }  // namespace
 
 std::string sign_unavailable_reason(const Mesh& mesh, const std::string& name)
@@ -261,11 +272,11 @@ std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::str
     n.flipped = n.volume < 0.0;
     n.face.resize(nf);
     const auto m = std::int64_t(nf);
+    const MeshCorners corners{mesh};
 #pragma omp parallel for schedule(static)
     for (std::int64_t i = 0; i < m; ++i) {
-        const Face& t = mesh.faces[std::size_t(i)];
-        n.face[std::size_t(i)] = unit_face_normal(n.flipped, mesh.points[std::size_t(t[0])],
-                                                  mesh.points[std::size_t(t[1])], mesh.points[std::size_t(t[2])]);
+        const auto [a, b, c] = corners(std::uint32_t(i));
+        n.face[std::size_t(i)] = unit_face_normal(n.flipped, a, b, c);
     }
     // Each vertex's angle-weighted sum over its faces in ascending order (the
     // order of a loop over the faces; no face repeats a corner here), one
@@ -303,42 +314,29 @@ int sign_at(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p, std::
 {
     const Vec3 d = p - c.point;
     if (d.isZero(0.0)) return 0;
-    if (c.kind == FeatureKind::Vertex) {
-        const double s = d.dot(normals.vertex[std::size_t(mesh.faces[face][c.index])]);
-        return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
-    }
     auto normal = [&](std::uint32_t g) {
         if (!normals.face.empty()) return normals.face[g];
         const auto [a, b, cc] = corners(g);
         return unit_face_normal(normals.flipped, a, b, cc);
     };
-    const Vec3 nf = normal(face);
-    const double s = c.kind == FeatureKind::Interior
-                         ? d.dot(nf)
-                         : d.dot(nf + normal(normals.opposite[3 * std::size_t(face) + c.index] / 3));
+    double s = 0.0;
+    if (c.kind == FeatureKind::Vertex) {
+        s = d.dot(normals.vertex[std::size_t(mesh.faces[face][c.index])]);
+    } else {
+        const Vec3 nf = normal(face);
+        s = c.kind == FeatureKind::Interior ? d.dot(nf)
+                                            : d.dot(nf + normal(normals.opposite[3 * std::size_t(face) + c.index] / 3));
+    }
     return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
 }
-
-// The corners of face g of \p mesh.
-struct MeshCorners
-{
-    const Mesh& mesh;
-    std::tuple<const Vec3&, const Vec3&, const Vec3&> operator()(std::uint32_t g) const
-    {
-        const Face& t = mesh.faces[g];
-        return {mesh.points[std::size_t(t[0])], mesh.points[std::size_t(t[1])], mesh.points[std::size_t(t[2])]};
-    }
-};
 
 }  // namespace
 
 int distance_sign(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p, std::uint32_t face)
 {
-    const Face& t = mesh.faces[face];
-    return sign_at(mesh, normals, p, face,
-                   closest_feature(p, mesh.points[std::size_t(t[0])], mesh.points[std::size_t(t[1])],
-                                   mesh.points[std::size_t(t[2])]),
-                   MeshCorners{mesh});
+    const MeshCorners corners{mesh};
+    const auto [a, b, c] = corners(face);
+    return sign_at(mesh, normals, p, face, closest_feature(p, a, b, c), corners);
 }
 
 std::vector<double> signed_distances(const Mesh& mesh, const PseudoNormals& normals, const Vec3* queries,
