@@ -370,23 +370,24 @@ void detail::signed_query(const Mesh& mesh, const ClosestPointIndex& index, cons
     // Where the four-lane kernel chose the closest point, its Voronoi region
     // comes with it (the same tests, the same point as face_feature()'s).
     // Face normals not kept are made from the index's copy of the corners
-    // too (for the closest face, just read, and its neighbour across an edge).
+    // too: the closest triangle's at the position the query found it (just
+    // read), its neighbour's across an edge by its face.
     const detail::Bvh& bvh = detail::bvh_of(index);
-    auto corners = [&bvh](std::uint32_t g) {
-        const detail::Tri t = bvh.tris[bvh.position_of[g]];
-        return std::tuple<const Vec3&, const Vec3&, const Vec3&>(t.a, t.b, t.c);
-    };
     detail::distances_with_regions(
         index, queries, n, distances,
-        [&](std::size_t i, const ClosestPoint& c, unsigned r) {
+        [&](std::size_t i, const ClosestPoint& c, unsigned r, std::uint32_t position) {
             if (!(c.distance > 0.0)) {
                 signs[i] = 0;
                 return;
             }
             const Vec3& p = queries[i];
+            auto corners = [&](std::uint32_t g) {
+                const detail::Tri t = bvh.tris[g == c.face ? position : bvh.position_of[g]];
+                return std::tuple<const Vec3&, const Vec3&, const Vec3&>(t.a, t.b, t.c);
+            };
             ClosestFeature f;
             if (r == detail::kRegionUnknown) {
-                const detail::Tri t = bvh.tris[bvh.position_of[c.face]];
+                const detail::Tri t = bvh.tris[position];
                 f = t.thin ? thin_feature(p, t.a, t.b, t.c) : face_feature(p, t.a, t.b, t.c);
             } else {
                 f = kernel_feature(c.point, r);

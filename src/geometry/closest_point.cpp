@@ -545,9 +545,10 @@ void ClosestPointIndex::distances(const Vec3* queries, std::size_t n, double* ou
     });
 }
 
-void detail::distances_with_regions(const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
-                                    const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit,
-                                    const std::function<void()>& beside)
+void detail::distances_with_regions(
+    const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
+    const std::function<void(std::size_t, const ClosestPoint&, unsigned, std::uint32_t)>& visit,
+    const std::function<void()>& beside)
 {
     const ClosestPointIndex::Impl& impl = *index.impl_;
     if (!visit) {
@@ -568,7 +569,7 @@ void detail::distances_with_regions(const ClosestPointIndex& index, const Vec3* 
             unsigned region = kRegionUnknown;
             const ClosestPoint c = impl.query(queries[i], hint, &hit, &region);
             out[i] = c.distance;
-            visit(i, c, region);
+            visit(i, c, region, hit);
             return hit;
         },
         beside);

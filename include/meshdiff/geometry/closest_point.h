@@ -49,16 +49,18 @@ struct Bvh;
 //! The index's tree and its triangles (src/geometry/bvh_build.h), for the
 //! library's own stages that read them in place (the certification's bounds).
 const Bvh& bvh_of(const ClosestPointIndex& index);
-//! ClosestPointIndex::distances() with visit(i, closest point, region): the
-//! Voronoi region of the closest point's triangle the point lies in, as
-//! src/geometry/point_triangle_x4.h numbers them (kRegionUnknown where the
-//! triangle was tested alone: a thin one, or a machine without AVX2). For the
-//! signs (signed_distance.cpp), which then need not find the region again.
+//! ClosestPointIndex::distances() with visit(i, closest point, region,
+//! position): the Voronoi region of the closest point's triangle the point
+//! lies in, as src/geometry/point_triangle_x4.h numbers them (kRegionUnknown
+//! where the triangle was tested alone: a thin one, or a machine without
+//! AVX2), and the triangle's position in the index (Bvh::tris). For the signs
+//! (signed_distance.cpp), which then need not find the region or the triangle
+//! again.
 //! Without \p visit, the distances only. \p beside, if given, is run once by
 //! one thread of the team while the others query (the surface distance folds
 //! the previous chunk of samples so); its exception is rethrown at the end.
 void distances_with_regions(const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
-                            const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit,
+                            const std::function<void(std::size_t, const ClosestPoint&, unsigned, std::uint32_t)>& visit,
                             const std::function<void()>& beside = {});
 }  // namespace detail
 
@@ -126,7 +128,7 @@ private:
     friend const detail::Bvh& detail::bvh_of(const ClosestPointIndex& index);
     friend void detail::distances_with_regions(
         const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
-        const std::function<void(std::size_t, const ClosestPoint&, unsigned)>& visit,
+        const std::function<void(std::size_t, const ClosestPoint&, unsigned, std::uint32_t)>& visit,
         const std::function<void()>& beside);
 };
 
