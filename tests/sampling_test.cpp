@@ -8,6 +8,11 @@
 #include "geometry/sample_plan.h"
 
 #include <gtest/gtest.h>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 #include <omp.h>
 
 #include <string>
@@ -313,6 +318,43 @@ TEST(Sampling, PlanDroppingItsVertexAndEdgeListsFreesThemAndStillMakesTheFaceSam
     std::vector<std::uint32_t> element(p.size());
     maker.make(first, all.size(), p.data(), kind.data(), element.data());
     for (std::size_t i = first; i < all.size(); ++i) ASSERT_EQ(p[i - first], all.points[i]) << i;
+}
+
+TEST(Sampling, PlanGivesBackTheMadeFrontOfItsEdgeListAndStillMakesTheRest)
+{
+    // The surface distance gives back the pages of the edge list whose
+    // samples are made (discard_made()): they leave memory (mincore), and
+    // the samples after them are made as before, chunk after chunk.
+    const Mesh m = icosphere(6).mesh;  // 123K edges: 1.4 MB of edge list
+    SamplingOptions o;
+    o.samples = 1000000;
+    const SurfaceSamples all = sample_surface(m, o);
+    detail::SamplePlan plan = detail::plan_samples(MeshData(m), o);
+    ASSERT_GT(plan.counts.n_edge, 100000u);
+    detail::SampleMaker maker(m, plan);
+    const std::size_t chunk = 50000;
+    std::vector<Vec3> p(chunk);
+    std::vector<SampleKind> kind(chunk);
+    std::vector<std::uint32_t> element(chunk);
+    for (std::size_t begin = 0; begin < all.size(); begin += chunk) {
+        const std::size_t end = std::min(all.size(), begin + chunk);
+        maker.make(begin, end, p.data(), kind.data(), element.data());
+        for (std::size_t i = begin; i < end; ++i)
+            ASSERT_TRUE(p[i - begin] == all.points[i] && kind[i - begin] == all.kind[i] &&
+                        element[i - begin] == all.element[i])
+                << i;
+        plan.discard_made(end);
+    }
+#if defined(__linux__)
+    // Past the edge samples, the edge list's whole pages are not resident.
+    const auto page = std::uintptr_t(sysconf(_SC_PAGESIZE));
+    const auto lo = (std::uintptr_t(plan.edges.data()) + page - 1) / page * page;
+    const auto hi = std::uintptr_t(plan.edges.data() + plan.edges.size()) / page * page;
+    ASSERT_GT(hi, lo + 100 * page);
+    std::vector<unsigned char> resident((hi - lo) / page);
+    ASSERT_EQ(mincore(reinterpret_cast<void*>(lo), hi - lo, resident.data()), 0);
+    for (std::size_t i = 0; i < resident.size(); ++i) EXPECT_EQ(resident[i] & 1, 0) << "page " << i;
+#endif
 }
 
 // The plan's face areas and edge lengths are computed in parallel and summed

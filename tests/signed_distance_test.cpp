@@ -9,6 +9,9 @@
 #include "meshdiff/report/text.h"
 #include "meshdiff/studies/shapes.h"
 
+#include "distance/hausdorff_bounds.h"
+#include "distance/signed_query.h"
+
 #include <fmt/format.h>
 
 #include <gtest/gtest.h>
@@ -617,4 +620,52 @@ TEST(SignAvailability, PinchedVerticesAreCountedAtAnyThreadCount)
         EXPECT_TRUE(pseudo_normals(sphere, "M"));
     }
     omp_set_num_threads(threads);
+}
+
+TEST(PseudoNormals, OppositeHalfEdgesGiveTheCertificationsNeighbours)
+{
+    // The certification reads the neighbours across the target's edges from
+    // its pseudo-normals' opposite half-edges when it can be signed against:
+    // the table of the edge map, on sharp, smooth and flipped closed meshes.
+    std::vector<Mesh> meshes = {read_mesh(kData + "/fandisk.ply").mesh, read_mesh(kData + "/torus_R1_r025.ply").mesh,
+                                read_mesh(kData + "/sphere_irregular_3072.ply").mesh};
+    meshes.push_back(flipped(meshes[1]));
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        const MeshData data(meshes[k]);
+        const auto normals = pseudo_normals(data, "M");
+        ASSERT_TRUE(normals) << k;
+        const detail::Neighbours from_edges = detail::edge_neighbours(data);
+        ASSERT_EQ(from_edges.size(), meshes[k].n_faces());
+        EXPECT_TRUE(detail::neighbours_across(normals->opposite) == from_edges) << k;
+    }
+}
+
+TEST(PseudoNormals, MadeWithoutFaceNormalsTheyAreTheSame)
+{
+    // The surface distance makes the pseudo-normals without their face
+    // normals (made as the vertex normals read them): the same vertex
+    // normals, opposite half-edges, orientation and volume, bit for bit.
+    std::vector<Mesh> meshes = {read_mesh(kData + "/fandisk.ply").mesh, read_mesh(kData + "/torus_R1_r025.ply").mesh};
+    meshes.push_back(flipped(meshes[1]));
+    for (std::size_t k = 0; k < meshes.size(); ++k) {
+        const MeshData data(meshes[k]);
+        const auto full = pseudo_normals(data, "M");
+        std::string reason;
+        const auto lean = detail::pseudo_normals_without_faces(data, "M", &reason);
+        ASSERT_TRUE(full && lean) << k << ": " << reason;
+        EXPECT_EQ(full->face.size(), meshes[k].n_faces());
+        EXPECT_TRUE(lean->face.empty());
+        EXPECT_TRUE(lean->vertex == full->vertex) << k;
+        EXPECT_EQ(lean->opposite, full->opposite);
+        EXPECT_EQ(lean->flipped, full->flipped);
+        EXPECT_EQ(lean->volume, full->volume);
+    }
+    // And the same reason where there are none.
+    Mesh open = meshes[1];
+    open.faces.pop_back();
+    std::string r1, r2;
+    EXPECT_FALSE(pseudo_normals(MeshData(open), "M", &r1));
+    EXPECT_FALSE(detail::pseudo_normals_without_faces(MeshData(open), "M", &r2));
+    EXPECT_EQ(r1, r2);
+    EXPECT_FALSE(r1.empty());
 }

@@ -8,6 +8,9 @@
 #include "meshdiff/io/io.h"
 #include "meshdiff/studies/shapes.h"
 
+#include "core/derivations.h"
+#include "core/edge_map_parts.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -491,4 +494,57 @@ TEST(EdgeMap, EqualsTheBruteForce)
     }
     expect_edge_map_is_brute_force(read_mesh(data("bunny_res4_ascii.ply")).mesh);
     expect_edge_map_is_brute_force(torus(12, 8).mesh);
+}
+
+TEST(Topology, EdgeMapPartsAreTheFullMapsParts)
+{
+    // The parts build_edge_map() fills are the full map's, bit for bit, and
+    // the others are left empty: on a closed mesh, on meshes with boundaries,
+    // non-manifold edges, duplicate faces and collapsed corners, with and
+    // without the incidence.
+    Mesh odd;
+    odd.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(2, 0, 0), Vec3(1, 1, 0)};
+    odd.faces = {{0, 1, 2}, {0, 1, 3}, {2, 1, 0}, {1, 4, 2}, {1, 1, 4}, {3, 4, 3}, {4, 2, 0}, {0, 2, 4}};
+    for (const Mesh& m : {read_mesh(data("torus_R1_r025.ply")).mesh, read_mesh(data("bunny_res4_ascii.ply")).mesh,
+                          read_mesh(data("teapot.obj")).mesh, odd}) {
+        const MeshData md(m);
+        const EdgeMap all = edge_map(m);
+        ASSERT_FALSE(all.opposite.empty());
+        for (const Adjacency* vf : {static_cast<const Adjacency*>(nullptr), &md.vertex_faces()}) {
+            const EdgeMap o = detail::build_edge_map(m, detail::EdgeMapParts::Opposite, vf);
+            EXPECT_EQ(o.opposite, all.opposite);
+            EXPECT_TRUE(o.edges.empty() && o.offset.empty() && o.half_edge.empty() && o.edge_of.empty());
+            const EdgeMap e = detail::build_edge_map(m, detail::EdgeMapParts::Edges, vf);
+            EXPECT_TRUE(e.opposite.empty() && e.edge_of.empty());
+            EXPECT_EQ(e.offset, all.offset);
+            EXPECT_EQ(e.half_edge, all.half_edge);
+            ASSERT_EQ(e.edges.size(), all.edges.size());
+            for (std::size_t i = 0; i < e.edges.size(); ++i)
+                EXPECT_TRUE(e.edges[i].a == all.edges[i].a && e.edges[i].b == all.edges[i].b &&
+                            e.edges[i].face == all.edges[i].face);
+            for (const EdgeMap* p : {&o, &e}) {
+                EXPECT_EQ(p->boundary_edges, all.boundary_edges);
+                EXPECT_EQ(p->non_manifold_edges, all.non_manifold_edges);
+                EXPECT_EQ(p->misoriented_edges, all.misoriented_edges);
+            }
+        }
+    }
+}
+
+TEST(MeshData, AReleasedIncidenceIsDerivedAgainTheSame)
+{
+    const Mesh m = read_mesh(data("bunny_res4_ascii.ply")).mesh;
+    const MeshData md(m);
+    detail::start_derivation_log();
+    const Adjacency first = md.vertex_faces();
+    md.vertex_faces();
+    detail::release_vertex_faces(md);
+    const Adjacency& again = md.vertex_faces();
+    const detail::DerivationCounts counts = detail::stop_derivation_log();
+    EXPECT_EQ(again.offset, first.offset);
+    EXPECT_EQ(again.index, first.index);
+    int derived = 0;
+    for (const auto& [key, n] : counts)
+        if (key.second == detail::Derived::VertexFaces) derived += n;
+    EXPECT_EQ(derived, 2);  // once, then once after the release
 }

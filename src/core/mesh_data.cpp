@@ -1,6 +1,7 @@
 #include "meshdiff/core/mesh_data.h"
 
 #include "core/derivations.h"
+#include "core/release.h"
 
 namespace meshdiff {
 
@@ -18,8 +19,20 @@ const std::vector<char>& MeshData::degenerate_faces() const
 
 const Adjacency& MeshData::vertex_faces() const
 {
-    std::call_once(vertex_faces_once_, [this] { vertex_faces_ = meshdiff::vertex_faces(mesh_); });
+    const std::lock_guard<std::mutex> lock(vertex_faces_mutex_);
+    if (!has_vertex_faces_) {
+        vertex_faces_ = meshdiff::vertex_faces(mesh_);
+        has_vertex_faces_ = true;
+    }
     return vertex_faces_;
+}
+
+void detail::release_vertex_faces(const MeshData& data)
+{
+    const std::lock_guard<std::mutex> lock(data.vertex_faces_mutex_);
+    detail::release(data.vertex_faces_.offset);
+    detail::release(data.vertex_faces_.index);
+    data.has_vertex_faces_ = false;
 }
 
 void MeshData::validate(const std::string& what) const

@@ -5,6 +5,7 @@
 #include "meshdiff/error.h"
 
 #include "core/derivations.h"
+#include "core/edge_map_parts.h"
 #include "core/union_find.h"
 
 #include <fmt/format.h>
@@ -151,55 +152,63 @@ struct SortedHalfEdges
     }
 };
 
-// The EdgeMap of mesh; with \p per_half_edge false, without edge_of and
-// opposite (unique_edges() and boundary_vertex_mask() need neither).
-EdgeMap build_edge_map(const Mesh& mesh, bool per_half_edge, const Adjacency* vertex_faces = nullptr)
+// The opposite half-edges and the three counts from the incidence alone,
+// without sorting the half-edges (nor holding them: 8 bytes each). The
+// half-edges of the edge {a, b} lie in the faces of both a's and b's rows
+// (merged, each face once); a half-edge counts its edge when it is the lowest
+// of them. The same values as the sorted half-edges give.
+EdgeMap opposite_from_incidence(const Mesh& mesh, const Adjacency& vertex_faces)
 {
-    const SortedHalfEdges s(mesh, vertex_faces);
-    const std::size_t n = mesh.n_vertices(), nf = mesh.n_faces();
-    // The edges are numbered in (a, b) order: those of the lower ends before
-    // v come first. Counted, then written, one lower end at a time in
-    // parallel (the same map as a walk over all of them).
-    std::vector<std::uint32_t> first(n + 1, 0);
-#pragma omp parallel for schedule(static, 4096)
-    for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
-        std::uint32_t count = 0;
-        s.for_each_edge_of(std::size_t(v),
-                           [&](std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t) { ++count; });
-        first[std::size_t(v) + 1] = count;
-    }
-    for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+    const std::size_t nf = mesh.n_faces();
+    if (vertex_faces.size() != mesh.n_vertices())
+        throw InvalidArgumentError("edge map: the vertex-face incidence is not this mesh's");
     EdgeMap m;
-    m.half_edge.resize(s.size());
-    m.edges.resize(first[n]);
-    m.offset.resize(std::size_t(first[n]) + 1);
-    m.offset.back() = std::uint32_t(s.size());
-    if (per_half_edge) {
-        m.edge_of.assign(3 * nf, EdgeMap::kNone);
-        m.opposite.assign(3 * nf, EdgeMap::kNone);
-    }
+    m.opposite.assign(3 * nf, EdgeMap::kNone);
     std::size_t boundary = 0, non_manifold = 0, misoriented = 0;
 #pragma omp parallel for schedule(static, 4096) reduction(+ : boundary, non_manifold, misoriented)
-    for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
-        std::uint32_t e = first[std::size_t(v)];
-        s.for_each_edge_of(std::size_t(v), [&](std::uint32_t a, std::uint32_t b, std::uint32_t i, std::uint32_t j) {
-            for (std::uint32_t k = i; k < j; ++k) {
-                m.half_edge[k] = s.half_edge(k);
-                if (per_half_edge) m.edge_of[m.half_edge[k]] = e;
+    for (std::ptrdiff_t i = 0; i < std::ptrdiff_t(nf); ++i) {
+        const auto f = std::uint32_t(i);
+        const Face& t = mesh.faces[f];
+        for (std::uint32_t k = 0; k < 3; ++k) {
+            const auto a = std::uint32_t(t[k]), b = std::uint32_t(t[(k + 1) % 3]);
+            if (a == b) continue;
+            const std::uint32_t h = 3 * f + k;
+            std::uint32_t count = 0, lowest = h, other = EdgeMap::kNone;
+            bool same = false;  // another half-edge a -> b
+            const std::uint32_t *x = vertex_faces.begin(a), *xe = vertex_faces.end(a);
+            const std::uint32_t *y = vertex_faces.begin(b), *ye = vertex_faces.end(b);
+            while (x != xe && y != ye) {
+                if (*x < *y) {
+                    ++x;
+                } else if (*y < *x) {
+                    ++y;
+                } else {
+                    const std::uint32_t g = *x;
+                    const Face& u = mesh.faces[g];
+                    for (std::uint32_t j = 0; j < 3; ++j) {
+                        const auto p = std::uint32_t(u[j]), q = std::uint32_t(u[(j + 1) % 3]);
+                        const bool forward = p == a && q == b, backward = p == b && q == a;
+                        if (!forward && !backward) continue;
+                        const std::uint32_t h2 = 3 * g + j;
+                        ++count;
+                        lowest = std::min(lowest, h2);
+                        if (h2 == h) continue;
+                        other = h2;
+                        same = same || forward;
+                    }
+                    // The next face of each row (a row lists a face at each
+                    // corner its vertex holds).
+                    while (x != xe && *x == g) ++x;
+                    while (y != ye && *y == g) ++y;
+                }
             }
-            m.offset[e] = i;
-            m.edges[e] = {a, b, m.half_edge[i] / 3};
-            ++e;
-            boundary += j - i == 1;
-            non_manifold += j - i > 2;
-            if (j - i != 2) return;
-            if (s.same_direction(i, i + 1)) {
-                ++misoriented;
-            } else if (per_half_edge) {
-                m.opposite[m.half_edge[i]] = m.half_edge[i + 1];
-                m.opposite[m.half_edge[i + 1]] = m.half_edge[i];
+            if (count == 2 && !same) m.opposite[h] = other;
+            if (lowest == h) {
+                boundary += count == 1;
+                non_manifold += count > 2;
+                misoriented += count == 2 && same;
             }
-        });
+        }
     }
     m.boundary_edges = boundary;
     m.non_manifold_edges = non_manifold;
@@ -209,14 +218,79 @@ EdgeMap build_edge_map(const Mesh& mesh, bool per_half_edge, const Adjacency* ve
 
 }  // namespace
 
+EdgeMap detail::build_edge_map(const Mesh& mesh, EdgeMapParts parts, const Adjacency* vertex_faces)
+{
+    if (parts == EdgeMapParts::Opposite && vertex_faces) {
+        if (3 * std::uint64_t(mesh.n_faces()) >= EdgeMap::kNone)
+            throw InvalidMeshError(fmt::format("a mesh of {} faces has too many half-edges for an EdgeMap (at most {})",
+                                               mesh.n_faces(), EdgeMap::kNone - 1));
+        return opposite_from_incidence(mesh, *vertex_faces);
+    }
+    const SortedHalfEdges s(mesh, vertex_faces);
+    const std::size_t n = mesh.n_vertices(), nf = mesh.n_faces();
+    const bool edges = parts != EdgeMapParts::Opposite, opposite = parts != EdgeMapParts::Edges;
+    // The edges are numbered in (a, b) order: those of the lower ends before
+    // v come first. Counted, then written, one lower end at a time in
+    // parallel (the same map as a walk over all of them).
+    std::vector<std::uint32_t> first(edges ? n + 1 : 0, 0);
+    if (edges) {
+#pragma omp parallel for schedule(static, 4096)
+        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+            std::uint32_t count = 0;
+            s.for_each_edge_of(std::size_t(v),
+                               [&](std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t) { ++count; });
+            first[std::size_t(v) + 1] = count;
+        }
+        for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+    }
+    EdgeMap m;
+    if (edges) {
+        m.half_edge.resize(s.size());
+        m.edges.resize(first[n]);
+        m.offset.resize(std::size_t(first[n]) + 1);
+        m.offset.back() = std::uint32_t(s.size());
+    }
+    if (parts == EdgeMapParts::All) m.edge_of.assign(3 * nf, EdgeMap::kNone);
+    if (opposite) m.opposite.assign(3 * nf, EdgeMap::kNone);
+    std::size_t boundary = 0, non_manifold = 0, misoriented = 0;
+#pragma omp parallel for schedule(static, 4096) reduction(+ : boundary, non_manifold, misoriented)
+    for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+        std::uint32_t e = edges ? first[std::size_t(v)] : 0;
+        s.for_each_edge_of(std::size_t(v), [&](std::uint32_t a, std::uint32_t b, std::uint32_t i, std::uint32_t j) {
+            if (edges) {
+                for (std::uint32_t k = i; k < j; ++k) {
+                    m.half_edge[k] = s.half_edge(k);
+                    if (parts == EdgeMapParts::All) m.edge_of[m.half_edge[k]] = e;
+                }
+                m.offset[e] = i;
+                m.edges[e] = {a, b, s.half_edge(i) / 3};
+                ++e;
+            }
+            boundary += j - i == 1;
+            non_manifold += j - i > 2;
+            if (j - i != 2) return;
+            if (s.same_direction(i, i + 1)) {
+                ++misoriented;
+            } else if (opposite) {
+                m.opposite[s.half_edge(i)] = s.half_edge(i + 1);
+                m.opposite[s.half_edge(i + 1)] = s.half_edge(i);
+            }
+        });
+    }
+    m.boundary_edges = boundary;
+    m.non_manifold_edges = non_manifold;
+    m.misoriented_edges = misoriented;
+    return m;
+}
+
 EdgeMap edge_map(const Mesh& mesh)
 {
-    return build_edge_map(mesh, true);
+    return detail::build_edge_map(mesh, detail::EdgeMapParts::All);
 }
 
 EdgeMap edge_map(const MeshData& data)
 {
-    return build_edge_map(data.mesh(), true, &data.vertex_faces());
+    return detail::build_edge_map(data.mesh(), detail::EdgeMapParts::All, &data.vertex_faces());
 }
 
 namespace {
@@ -349,20 +423,20 @@ std::vector<char> degenerate_face_mask(const Mesh& mesh, const BoundingBox& box)
 
 std::vector<Edge> unique_edges(const Mesh& mesh)
 {
-    EdgeMap m = build_edge_map(mesh, false);
+    EdgeMap m = detail::build_edge_map(mesh, detail::EdgeMapParts::Edges);
     return std::move(m.edges);
 }
 
 std::vector<Edge> unique_edges(const MeshData& data)
 {
-    EdgeMap m = build_edge_map(data.mesh(), false, &data.vertex_faces());
+    EdgeMap m = detail::build_edge_map(data.mesh(), detail::EdgeMapParts::Edges, &data.vertex_faces());
     return std::move(m.edges);
 }
 
 std::vector<char> boundary_vertex_mask(const Mesh& mesh)
 {
     std::vector<char> mask(mesh.n_vertices(), 0);
-    const EdgeMap m = build_edge_map(mesh, false);
+    const EdgeMap m = detail::build_edge_map(mesh, detail::EdgeMapParts::Edges);
     for (std::size_t e = 0; e < m.size(); ++e)
         if (m.count(e) != 2) mask[m.edges[e].a] = mask[m.edges[e].b] = 1;
     return mask;

@@ -184,8 +184,9 @@ struct Certification
         }
     }
 
-    // B's longest edges, the neighbours across its edges and its triangles.
-    void set_up_target()
+    // B's longest edges, the neighbours across its edges (from \p opposite,
+    // B's opposite half-edges, when given) and its triangles.
+    void set_up_target(const std::vector<std::uint32_t>* opposite)
     {
         // The longest edge of B's triangles: a cell of A whose corners are
         // farther apart than 2 x threshold + that length has no triangle of B
@@ -203,7 +204,7 @@ struct Certification
         target.longest = *std::max_element(diameter_b.begin(), diameter_b.end());
         target.diameter = std::move(diameter_b);
         stage.check();
-        target.nbr = detail::edge_neighbours(b_data);
+        target.nbr = opposite ? detail::neighbours_across(*opposite) : detail::edge_neighbours(b_data);
         stage.check();
         target.tris = detail::Triangles(b_index);
     }
@@ -445,7 +446,8 @@ std::vector<detail::VertexClosest> detail::vertex_closest(const std::vector<Clos
 CertifiedHausdorff detail::certified_hausdorff(const MeshData& a_data, const MeshData& b_data,
                                                const ClosestPointIndex& b_index, const HausdorffOptions& options,
                                                const std::optional<HausdorffSeed>& seed,
-                                               const std::vector<VertexClosest>& vq)
+                                               const std::vector<VertexClosest>& vq,
+                                               const std::vector<std::uint32_t>* b_opposite)
 {
     validate_inputs(a_data, b_data, b_index, options);
     const Mesh& a = a_data.mesh();
@@ -454,7 +456,7 @@ CertifiedHausdorff detail::certified_hausdorff(const MeshData& a_data, const Mes
             fmt::format("certified_hausdorff: {} vertex closest points for {} vertices", vq.size(), a.n_vertices()));
     Certification s(a, b_data, b_index, options);
     s.set_up_lower_bound(seed, vq);
-    s.set_up_target();
+    s.set_up_target(b_opposite);
     s.first_round(vq);
     s.search();
     return s.finish();

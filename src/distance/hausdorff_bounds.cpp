@@ -234,6 +234,18 @@ Neighbours edge_neighbours(const MeshData& data)
     return nbr;
 }
 
+Neighbours neighbours_across(const std::vector<std::uint32_t>& opposite)
+{
+    Neighbours nbr(opposite.size() / 3);
+    const auto nf = std::int64_t(nbr.size());
+#pragma omp parallel for schedule(static)
+    for (std::int64_t i = 0; i < nf; ++i) {
+        const auto f = std::size_t(i);
+        for (std::size_t k = 0; k < 3; ++k) nbr[f][k] = opposite[3 * f + k] / 3;
+    }
+    return nbr;
+}
+
 // Face \p t of B is at distance \p d from \p p; moves to a neighbour closer to
 // p while there is one, until d <= goal.
 void descend_point(const Vec3& p, const Triangles& b, const Neighbours& nbr, std::uint32_t& t, double& d, double goal)

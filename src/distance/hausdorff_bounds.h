@@ -81,6 +81,13 @@ using Neighbours = std::vector<std::array<std::uint32_t, 3>>;
 //! of the descents.
 Neighbours edge_neighbours(const MeshData& m);
 
+//! edge_neighbours() of a mesh whose every edge has two half-edges in
+//! opposite directions (closed, edge-manifold, consistently oriented: a mesh
+//! pseudo_normals() accepts), from its \p opposite half-edges
+//! (PseudoNormals::opposite): the face of each half-edge's opposite. The
+//! same table, without an edge map.
+Neighbours neighbours_across(const std::vector<std::uint32_t>& opposite);
+
 //! Local descent over B's faces: face \p t of B is at distance \p d from
 //! \p p; moves \p t to a neighbour closer to p (and \p d to its exact
 //! distance) while there is one, until d <= goal, at most 16 moves. \p d
@@ -97,7 +104,7 @@ struct BoundsTarget
     const ClosestPointIndex& index;
     std::vector<double> diameter;  //!< longest edge per face
     double longest = 0.0;          //!< longest edge of all faces
-    Neighbours nbr;                //!< edge_neighbours(mesh)
+    Neighbours nbr;                //!< edge_neighbours(mesh) (or neighbours_across())
     Triangles tris;                //!< the index's triangles, by face
 };
 

@@ -27,9 +27,13 @@ std::vector<VertexClosest> vertex_closest(const std::vector<ClosestPoint>& c);
 //! certified_hausdorff(a, b, b_index, options, seed) from the derived data
 //! of A and B (mesh_data.h), \p vertex_closest being
 //! vertex_closest(b_index.closest_points(a.points)) (of every vertex of A).
+//! With \p b_opposite (B's PseudoNormals::opposite, B signable), the descents'
+//! neighbours are read from it (neighbours_across()) instead of an edge map
+//! of B: the same table, the same result.
 CertifiedHausdorff certified_hausdorff(const MeshData& a, const MeshData& b, const ClosestPointIndex& b_index,
                                        const HausdorffOptions& options, const std::optional<HausdorffSeed>& seed,
-                                       const std::vector<VertexClosest>& vertex_closest);
+                                       const std::vector<VertexClosest>& vertex_closest,
+                                       const std::vector<std::uint32_t>* b_opposite = nullptr);
 
 //! The seed of a certified Hausdorff distance of \p from: the sampled
 //! maximum of \p s, on a face of \p from (for a vertex sample, the

@@ -5,6 +5,7 @@
 #include "meshdiff/error.h"
 
 #include "core/compensated_sum.h"
+#include "core/edge_map_parts.h"
 #include "core/face_corner.h"
 #include "distance/signed_query.h"
 #include "geometry/bvh_build.h"
@@ -149,7 +150,8 @@ SignFacts sign_facts(const MeshData& data)
     SignFacts r;
     const std::vector<char>& degenerate = data.degenerate_faces();
     r.degenerate_faces = std::size_t(std::count(degenerate.begin(), degenerate.end(), 1));
-    EdgeMap edges = edge_map(data);
+    // The opposite half-edges and the counts only (not the edges' lists).
+    EdgeMap edges = detail::build_edge_map(mesh, detail::EdgeMapParts::Opposite, &data.vertex_faces());
     r.boundary_edges = edges.boundary_edges;
     r.non_manifold_edges = edges.non_manifold_edges;
     r.orientation_conflicts = edges.misoriented_edges;
@@ -241,7 +243,11 @@ std::optional<PseudoNormals> pseudo_normals(const Mesh& mesh, const std::string&
     return pseudo_normals(MeshData(mesh), name, reason);
 }
 
-std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::string& name, std::string* reason)
+namespace {
+
+// pseudo_normals(), PseudoNormals::face filled with \p face_normals.
+std::optional<PseudoNormals> make_pseudo_normals(const MeshData& data, const std::string& name, std::string* reason,
+                                                 bool face_normals)
 {
     const Mesh& mesh = data.mesh();
     if (3 * std::uint64_t(mesh.n_faces()) >= std::uint64_t(~0u)) {
@@ -270,13 +276,16 @@ std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::str
         return std::nullopt;
     }
     n.flipped = n.volume < 0.0;
-    n.face.resize(nf);
-    const auto m = std::int64_t(nf);
     const MeshCorners corners{mesh};
+    auto face_normal = [&](std::uint32_t f) {
+        const auto [a, b, c] = corners(f);
+        return unit_face_normal(n.flipped, a, b, c);
+    };
+    if (face_normals) {
+        n.face.resize(nf);
+        const auto m = std::int64_t(nf);
 #pragma omp parallel for schedule(static)
-    for (std::int64_t i = 0; i < m; ++i) {
-        const auto [a, b, c] = corners(std::uint32_t(i));
-        n.face[std::size_t(i)] = unit_face_normal(n.flipped, a, b, c);
+        for (std::int64_t i = 0; i < m; ++i) n.face[std::size_t(i)] = face_normal(std::uint32_t(i));
     }
     // Each vertex's angle-weighted sum over its faces in ascending order (the
     // order of a loop over the faces; no face repeats a corner here), one
@@ -295,12 +304,25 @@ std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::str
             const Vec3& p = mesh.points[v];
             const Vec3& q = mesh.points[std::size_t(t[(k + 1) % 3])];
             const Vec3& r = mesh.points[std::size_t(t[(k + 2) % 3])];
-            sum += angle(q - p, r - p) * n.face[*f];
+            sum += angle(q - p, r - p) * (face_normals ? n.face[*f] : face_normal(*f));
         }
         n.vertex[v] = sum;
     }
     n.opposite = std::move(facts.opposite);
     return n;
+}
+
+}  // namespace
+
+std::optional<PseudoNormals> pseudo_normals(const MeshData& data, const std::string& name, std::string* reason)
+{
+    return make_pseudo_normals(data, name, reason, true);
+}
+
+std::optional<PseudoNormals> detail::pseudo_normals_without_faces(const MeshData& data, const std::string& name,
+                                                                  std::string* reason)
+{
+    return make_pseudo_normals(data, name, reason, false);
 }
 
 namespace {

@@ -146,11 +146,12 @@ private:
 // made, queried and folded into the statistics \p chunk at a time (a multiple
 // of kQueryBlock: the queries then start from the same triangles as in one
 // batch); only their distances are kept, for the percentiles. The area shares
-// below \p thresholds go to \p within.
+// below \p thresholds go to \p within. \p planned (when set) is called once
+// the plan is made.
 DistanceStats chunked_direction(const MeshData& from_data, const Target& to, const SamplingOptions& options,
                                 const std::vector<detail::VertexClosest>* vertex_closest,
                                 const std::vector<double>& thresholds, std::size_t bins, std::size_t chunk,
-                                std::vector<double>& within)
+                                std::vector<double>& within, const std::function<void()>& planned)
 {
     const Mesh& from = from_data.mesh();
     // As sample_surface() does: check, then plan in the "sampling" stage.
@@ -162,6 +163,7 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
         plan = detail::plan_samples(from_data, options);
         stage.finish();
     }
+    if (planned) planned();
     const std::size_t n = plan.size();
     if (n == 0) throw InvalidArgumentError("SamplingOptions: the enabled sample kinds give no sample on this mesh");
     const std::size_t nv = vertex_closest ? plan.counts.n_vertex : 0;  // the vertex samples come first
@@ -214,6 +216,7 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
         const std::size_t k = std::min(nv, begin + chunk) - begin;
         Buffers& b = buffers[chunks++ % 2];
         maker.make(begin, begin + k, b.points.data(), b.kind.data(), b.element.data());
+        plan.discard_made(begin + k);
         distances.resize(begin + k);
         const auto kk = std::int64_t(k);
 #pragma omp parallel for schedule(static)
@@ -235,6 +238,7 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
         const std::size_t k = std::min(n, begin + chunk) - begin;
         Buffers& b = buffers[chunks++ % 2];  // not the pending chunk's
         maker.make(begin, begin + k, b.points.data(), b.kind.data(), b.element.data());
+        plan.discard_made(begin + k);
         distances.resize(begin + k);
         {
             PartProgress part(progress, begin - nv);
@@ -283,6 +287,7 @@ struct DirectionTask
     std::size_t chunk;                                      // samples made and queried at a time when not kept
     const ClosestPointIndex* index;                         // of `to`, built by the caller; null: build one
     std::vector<ClosestPoint>* vertices_closest = nullptr;  // of from's vertices on `to`, if the caller has them
+    std::function<void()> planned = nullptr;                // HandedToDistance::release_incidences
 };
 
 // What one direction gives back.
@@ -308,14 +313,12 @@ struct DirectionTarget
     // declared last, so destroyed (waiting for the task) first when a
     // direction ends early on an exception.
     std::future<std::optional<PseudoNormals>> pending;
-    // The pseudo-normals, once made; their face normals dropped (48 MB for
-    // 2M faces): the signs make them from the index's corners (the same
+    // The pseudo-normals, once made; without face normals (48 MB for 2M
+    // faces): the signs make them from the index's corners (the same
     // values, signed_distance.h).
     void take_normals()
     {
-        if (!pending.valid()) return;
-        normals = pending.get();
-        if (normals) detail::release(normals->face);
+        if (pending.valid()) normals = pending.get();
     }
 };
 
@@ -348,8 +351,9 @@ void make_target(const DirectionTask& t, DirectionTarget& g)
         // queries. The pseudo-normals (serial) are made on another thread
         // while the index is built (or, when it was given, while the
         // vertices' closest points are found): take_normals() waits for them.
-        g.pending = std::async(omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred,
-                               [&t, &g] { return pseudo_normals(t.to_data, t.to_name, &g.unsigned_reason); });
+        g.pending = std::async(omp_get_max_threads() > 1 ? std::launch::async : std::launch::deferred, [&t, &g] {
+            return detail::pseudo_normals_without_faces(t.to_data, t.to_name, &g.unsigned_reason);
+        });
         build_index(t, g);
     }
 }
@@ -405,8 +409,8 @@ DirectionResult one_direction(const DirectionTask& t)
     if (meshes && !t.keep) {
         // The same statistics without keeping the samples (freed before the certification).
         const Target target{t.to, *g.index, g.normals ? &*g.normals : nullptr};
-        r.stats =
-            chunked_direction(t.from_data, target, t.sampling, vertex_closest, t.thresholds, bins, t.chunk, r.within);
+        r.stats = chunked_direction(t.from_data, target, t.sampling, vertex_closest, t.thresholds, bins, t.chunk,
+                                    r.within, t.planned);
     } else {
         SampledDirection d;
         if (meshes) {
@@ -442,10 +446,15 @@ DirectionResult one_direction(const DirectionTask& t)
         else
             mesh_vertex_distances(t, g, vertex_closest, r);
     }
-    g.normals.reset();  // free the pseudo-normals before the certification
+    // The pseudo-normals freed before the certification, but for their
+    // opposite half-edges: its neighbours across `to`'s edges.
+    std::vector<std::uint32_t> opposite;
+    if (g.normals) opposite = std::move(g.normals->opposite);
+    g.normals.reset();
     if (o.hausdorff && meshes)
-        r.certified = detail::certified_hausdorff(t.from_data, t.to_data, *g.index, *o.hausdorff,
-                                                  detail::seed_of(t.from, r.stats), vq);
+        r.certified =
+            detail::certified_hausdorff(t.from_data, t.to_data, *g.index, *o.hausdorff,
+                                        detail::seed_of(t.from, r.stats), vq, opposite.empty() ? nullptr : &opposite);
     else if (o.hausdorff && t.from_cloud)
         r.certified =
             detail::exact_over_points(t.to, g.index, g.cloud ? &*g.cloud : nullptr, r.stats, t.from.points.size());
@@ -521,9 +530,11 @@ SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const Dista
         throw InvalidArgumentError(
             "surface_distance: an index of A handed over with DistanceOptions::index_a set "
             "or A a point cloud");
+    std::function<void()> release_incidences;
+    if (handed && !cloud_a && !cloud_b) release_incidences = handed->release_incidences;
     auto forward = [&] {
         return one_direction({da, db, a, b, cloud_a, cloud_b, "the processed mesh", options, sampling, thresholds,
-                              keep_forward, chunk, cloud_b ? nullptr : options.index_b});
+                              keep_forward, chunk, cloud_b ? nullptr : options.index_b, nullptr, release_incidences});
     };
     auto backward = [&] {
         DirectionTask t{db,
@@ -542,6 +553,7 @@ SurfaceDistance detail::two_directions(const Mesh& a, const Mesh& b, const Dista
                         : cloud_a ? nullptr
                                   : options.index_a};
         if (handed && !cloud_a && !cloud_b) t.vertices_closest = &handed->b_vertices_on_a;
+        t.planned = release_incidences;
         DirectionResult k = one_direction(t);
         if (handed) {
             handed->index_a.reset();

@@ -17,8 +17,9 @@ namespace meshdiff::detail {
 double reference_diagonal(const MeshData& a, const char* what);
 
 //! The samples a direction makes and queries at a time when they are not kept
-//! (128 query blocks, about 8 MB of points, kinds, elements and signs).
-constexpr std::size_t kSampleChunk = 128 * kQueryBlock;
+//! (64 query blocks, about 4 MB of points, kinds, elements and signs; two
+//! such sets, one queried while the other is folded).
+constexpr std::size_t kSampleChunk = 64 * kQueryBlock;
 
 //! surface_distance() (same options and results, bit for bit), the
 //! directions whose samples are not kept made and queried \p chunk samples at

@@ -10,6 +10,7 @@
 #include "distance/surface_distance_chunks.h"
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,6 +30,12 @@ struct HandedToDistance
 {
     std::optional<ClosestPointIndex> index_a;
     std::vector<ClosestPoint> b_vertices_on_a;
+    //! When set, called in each direction between two meshes (samples not
+    //! kept) once its sample plan and pseudo-normals are made: the caller,
+    //! which owns both meshes' MeshData, frees their vertex-face incidences
+    //! there (detail::release_vertex_faces(); nothing reads them while the
+    //! samples are queried, and the next direction derives them again).
+    std::function<void()> release_incidences;
 };
 
 //! Both directions of a surface distance: checks the options and both inputs,

@@ -11,6 +11,7 @@
 
 #include "core/release.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <random>
@@ -22,11 +23,13 @@ struct SamplePlan
 {
     //! The counts, target and densities; no samples (points, kind, element empty).
     SurfaceSamples counts;
-    std::vector<std::uint32_t> vertices;    //!< the vertex samples' vertices, in sample order
-    std::vector<Edge> edges;                //!< the unique edges (with edge samples on)
-    std::vector<std::size_t> edge_offset;   //!< first sample of each edge, then the end (edges + 1)
-    std::vector<std::uint32_t> face_order;  //!< lattice order k of each face (SimilarTriangles)
-    std::vector<std::size_t> face_offset;   //!< first sample of each face, then the end (faces + 1; or empty)
+    std::vector<std::uint32_t> vertices;  //!< the vertex samples' vertices, in sample order
+    std::vector<Edge> edges;              //!< the unique edges (with edge samples on)
+    // The offsets are 32-bit: a plan has at most a mesh's vertices (below
+    // 2^31) and kMaxSamples more samples (plan_samples() checks it).
+    std::vector<std::uint32_t> edge_offset;  //!< first sample of each edge, then the end (edges + 1)
+    std::vector<std::uint32_t> face_order;   //!< lattice order k of each face (SimilarTriangles)
+    std::vector<std::uint32_t> face_offset;  //!< first sample of each face, then the end (faces + 1; or empty)
     FaceSampling scheme = FaceSampling::SimilarTriangles;
     std::uint64_t seed = 1;
 
@@ -38,6 +41,23 @@ struct SamplePlan
         detail::release(edges);
         detail::release(edge_offset);
     }
+    //! The samples before \p made are made and will not be made again: the
+    //! memory pages of the vertex and edge lists wholly before them are given
+    //! back (discard_front(); the lists are read only for the samples being
+    //! made, the offsets kept whole). \p made only grows between calls.
+    void discard_made(std::size_t made)
+    {
+        const std::size_t v = std::min(made, vertices.size());
+        discard_front(vertices.data(), vertices.data() + v, vertices_done_);
+        if (edges.empty()) return;
+        // The edges whose samples all lie before `made`.
+        const auto e =
+            std::size_t(std::upper_bound(edge_offset.begin() + 1, edge_offset.end(), made) - (edge_offset.begin() + 1));
+        discard_front(edges.data(), edges.data() + std::min(e, edges.size()), edges_done_);
+    }
+
+private:
+    std::size_t vertices_done_ = 0, edges_done_ = 0;  // discard_made()'s progress, in bytes
 };
 
 //! The counts of sample_surface(mesh, options), options and mesh valid

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <tuple>
 
@@ -89,6 +90,20 @@ std::size_t sample_target(const Mesh& mesh, const SamplingOptions& options, std:
 
 namespace detail {
 
+namespace {
+
+// The plan's offsets are 32-bit (sample_plan.h): at most the vertices (below
+// 2^31) and the budget (at most kMaxSamples) fit. Kept as a check, since a
+// wrapped offset would make wrong samples silently.
+void check_offsets(std::size_t samples)
+{
+    if (samples > std::numeric_limits<std::uint32_t>::max())
+        throw InvalidArgumentError(
+            fmt::format("sample_surface: {} samples do not fit the plan's 32-bit offsets", samples));
+}
+
+}  // namespace
+
 SamplePlan plan_samples(const MeshData& data, const SamplingOptions& options)
 {
     const Mesh& mesh = data.mesh();
@@ -158,16 +173,19 @@ SamplePlan plan_samples(const MeshData& data, const SamplingOptions& options)
         // Never more than the remaining budget (Metro would overshoot here).
         const double cap = length > 0.0 ? remaining / length : 0.0;
         s.edge_density = options.faces && area > 0.0 ? std::min(std::sqrt(remaining / area), cap) : cap;
-        std::vector<std::size_t>& offset = plan.edge_offset;
-        offset.assign(edges.size() + 1, s.n_vertex);
+        std::vector<std::uint32_t>& offset = plan.edge_offset;
+        offset.assign(edges.size() + 1, std::uint32_t(s.n_vertex));
+        std::size_t at = s.n_vertex;
         double carry = 0.0;
         for (std::size_t i = 0; i < edges.size(); ++i) {
             carry += len[i] * s.edge_density;
             const auto n = std::size_t(carry);
-            offset[i + 1] = offset[i] + n;
+            at += n;
+            offset[i + 1] = std::uint32_t(at);
             carry -= double(n);
         }
-        s.n_edge = offset.back() - s.n_vertex;
+        check_offsets(at);
+        s.n_edge = at - s.n_vertex;
         remaining = std::max(0.0, remaining - double(s.n_edge));
     }
 
@@ -178,8 +196,9 @@ SamplePlan plan_samples(const MeshData& data, const SamplingOptions& options)
         const bool lattice = options.face_scheme == FaceSampling::SimilarTriangles;
         // Per face: the lattice order k (SimilarTriangles) or the count.
         if (lattice) plan.face_order.assign(mesh.n_faces(), 0);
-        std::vector<std::size_t>& offset = plan.face_offset;
-        offset.assign(mesh.n_faces() + 1, s.n_vertex + s.n_edge);
+        std::vector<std::uint32_t>& offset = plan.face_offset;
+        offset.assign(mesh.n_faces() + 1, std::uint32_t(s.n_vertex + s.n_edge));
+        std::size_t at = s.n_vertex + s.n_edge;
         double carry = 0.0;
         for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
             std::size_t n = 0;
@@ -195,9 +214,11 @@ SamplePlan plan_samples(const MeshData& data, const SamplingOptions& options)
                 }
                 carry -= double(n);
             }
-            offset[f + 1] = offset[f] + n;
+            at += n;
+            offset[f + 1] = std::uint32_t(at);
         }
-        s.n_face = offset.back() - s.n_vertex - s.n_edge;
+        check_offsets(at);
+        s.n_face = at - s.n_vertex - s.n_edge;
     }
     return plan;
 }
@@ -217,7 +238,7 @@ void SampleMaker::make(std::size_t begin, std::size_t end, Vec3* points, SampleK
     };
     // The elements i of a range [offset[i], offset[i + 1]) meeting [begin, end).
     std::int64_t first = 0, last = 0;
-    auto elements = [begin, end, &first, &last](const std::vector<std::size_t>& offset) {
+    auto elements = [begin, end, &first, &last](const std::vector<std::uint32_t>& offset) {
         first =
             std::max<std::int64_t>(std::upper_bound(offset.begin(), offset.end() - 1, begin) - offset.begin() - 1, 0);
         last = std::lower_bound(offset.begin(), offset.end() - 1, end) - offset.begin();
@@ -245,8 +266,8 @@ void SampleMaker::make(std::size_t begin, std::size_t end, Vec3* points, SampleK
             const Vec3& p0 = mesh.points[edges[i].a];
             const Vec3& p1 = mesh.points[edges[i].b];
             const Vec3 step = (p1 - p0) / double(n + 1);
-            const std::size_t k0 = std::max(offset[i], begin) - offset[i] + 1;
-            const std::size_t k1 = std::min(offset[i + 1], end) - offset[i];
+            const std::size_t k0 = std::max<std::size_t>(offset[i], begin) - offset[i] + 1;
+            const std::size_t k1 = std::min<std::size_t>(offset[i + 1], end) - offset[i];
             for (std::size_t k = k0; k <= k1; ++k)
                 put(offset[i] + k - 1, p0 + step * double(k), SampleKind::OnEdge, edges[i].face);
         }
@@ -284,7 +305,7 @@ void SampleMaker::make(std::size_t begin, std::size_t end, Vec3* points, SampleK
         }
     } else {
         // One random stream over the face samples in order, two draws each.
-        const std::size_t start = std::max(begin, offset.front());
+        const std::size_t start = std::max<std::size_t>(begin, offset.front());
         if (start < drawn_) {
             rng_.seed(plan.seed);
             drawn_ = offset.front();
@@ -295,7 +316,8 @@ void SampleMaker::make(std::size_t begin, std::size_t end, Vec3* points, SampleK
             const auto [v0, v1, v2] = corners(f);
             const Vec3 e1 = *v1 - *v0;
             const Vec3 e2 = *v2 - *v0;
-            for (std::size_t at = std::max(offset[f], start); at < std::min(offset[f + 1], end); ++at) {
+            for (std::size_t at = std::max<std::size_t>(offset[f], start);
+                 at < std::min<std::size_t>(offset[f + 1], end); ++at) {
                 double r1 = unit_double(rng_);
                 double r2 = unit_double(rng_);
                 if (r1 + r2 > 1.0) {
@@ -305,7 +327,7 @@ void SampleMaker::make(std::size_t begin, std::size_t end, Vec3* points, SampleK
                 put(at, *v0 + e1 * r1 + e2 * r2, SampleKind::OnFace, f);
             }
         }
-        drawn_ = std::min(end, offset.back());
+        drawn_ = std::min<std::size_t>(end, offset.back());
     }
 }
 

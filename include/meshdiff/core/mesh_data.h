@@ -9,7 +9,7 @@
 //!
 //! The values are exactly those of the free functions (bounding_box(),
 //! degenerate_face_mask(), vertex_faces(), validate()): the same code, run
-//! once. Safe to share between threads (std::call_once).
+//! once. Safe to share between threads (std::call_once, a mutex).
 #pragma once
 
 #include "meshdiff/core/mesh.h"
@@ -20,6 +20,15 @@
 #include <vector>
 
 namespace meshdiff {
+
+class MeshData;
+
+namespace detail {
+//! Frees \p data's vertex-face incidence; the next vertex_faces() derives it
+//! again. For the owner of \p data that knows no reference to it is in use
+//! (compare_meshes(): the incidence is read at the start of its stages only).
+void release_vertex_faces(const MeshData& data);
+}  // namespace detail
 
 class MeshData
 {
@@ -41,10 +50,14 @@ public:
     void validate(const std::string& what) const;
 
 private:
+    friend void detail::release_vertex_faces(const MeshData& data);
+
     const Mesh& mesh_;
-    mutable std::once_flag box_once_, degenerate_once_, vertex_faces_once_, valid_once_;
+    mutable std::once_flag box_once_, degenerate_once_, valid_once_;
     mutable BoundingBox box_;
     mutable std::vector<char> degenerate_;
+    mutable std::mutex vertex_faces_mutex_;  // a mutex, not a once_flag: it can be released
+    mutable bool has_vertex_faces_ = false;
     mutable Adjacency vertex_faces_;
 };
 
