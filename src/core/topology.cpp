@@ -34,6 +34,15 @@ void sort_bucket(std::uint64_t* b, std::uint64_t* e)
     }
 }
 
+// Throws InvalidMeshError when a half-edge's number 3 f + k does not fit
+// below EdgeMap::kNone.
+void check_half_edges(const Mesh& mesh)
+{
+    if (3 * std::uint64_t(mesh.n_faces()) >= EdgeMap::kNone)
+        throw InvalidMeshError(fmt::format("a mesh of {} faces has too many half-edges for an EdgeMap (at most {})",
+                                           mesh.n_faces(), EdgeMap::kNone - 1));
+}
+
 // The half-edges of a mesh sorted by edge: a counting sort on the lower end,
 // then a sort per bucket. Per half-edge (upper end << 33) | (3 f + k) << 1 |
 // (it starts at the lower end): in a bucket, the order of (edge, face,
@@ -49,9 +58,7 @@ struct SortedHalfEdges
     explicit SortedHalfEdges(const Mesh& mesh, const Adjacency* vertex_faces = nullptr)
     {
         const std::size_t n = mesh.n_vertices(), nf = mesh.n_faces();
-        if (3 * std::uint64_t(nf) >= EdgeMap::kNone)
-            throw InvalidMeshError(fmt::format("a mesh of {} faces has too many half-edges for an EdgeMap (at most {})",
-                                               nf, EdgeMap::kNone - 1));
+        check_half_edges(mesh);
         if (vertex_faces) {
             by_vertex(mesh, *vertex_faces);
             return;
@@ -221,9 +228,7 @@ EdgeMap opposite_from_incidence(const Mesh& mesh, const Adjacency& vertex_faces)
 EdgeMap detail::build_edge_map(const Mesh& mesh, EdgeMapParts parts, const Adjacency* vertex_faces)
 {
     if (parts == EdgeMapParts::Opposite && vertex_faces) {
-        if (3 * std::uint64_t(mesh.n_faces()) >= EdgeMap::kNone)
-            throw InvalidMeshError(fmt::format("a mesh of {} faces has too many half-edges for an EdgeMap (at most {})",
-                                               mesh.n_faces(), EdgeMap::kNone - 1));
+        check_half_edges(mesh);
         return opposite_from_incidence(mesh, *vertex_faces);
     }
     const SortedHalfEdges s(mesh, vertex_faces);

@@ -5,7 +5,9 @@
 //! MeshData: compare_meshes() makes one per input and passes it to the topology
 //! report, the surface distance (sampling, signs, diagonals, indexes, the
 //! certified Hausdorff distance) and the same-connectivity check; a caller
-//! comparing one original with many meshes can keep the original's.
+//! comparing one original with many meshes can keep the original's. The owner
+//! may free the incidence between stages (detail::release_vertex_faces();
+//! compare_meshes() does): the next stage derives it again.
 //!
 //! The values are exactly those of the free functions (bounding_box(),
 //! degenerate_face_mask(), vertex_faces(), validate()): the same code, run
