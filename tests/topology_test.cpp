@@ -505,8 +505,17 @@ TEST(Topology, EdgeMapPartsAreTheFullMapsParts)
     Mesh odd;
     odd.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(2, 0, 0), Vec3(1, 1, 0)};
     odd.faces = {{0, 1, 2}, {0, 1, 3}, {2, 1, 0}, {1, 4, 2}, {1, 1, 4}, {3, 4, 3}, {4, 2, 0}, {0, 2, 4}};
+    // A book: 300 pages on the edge (0, 1), some turned the other way (the
+    // incidence would read all pages for each of their 600 half-edges: the
+    // sorted half-edges are used instead, the same values).
+    Mesh book;
+    book.points = {Vec3(0, 0, 0), Vec3(0, 0, 1)};
+    for (int k = 0; k < 300; ++k) {
+        book.points.emplace_back(std::cos(0.02 * k), std::sin(0.02 * k), 0.5);
+        book.faces.push_back(k % 3 ? Face{0, 1, k + 2} : Face{1, 0, k + 2});
+    }
     for (const Mesh& m : {read_mesh(data("torus_R1_r025.ply")).mesh, read_mesh(data("bunny_res4_ascii.ply")).mesh,
-                          read_mesh(data("teapot.obj")).mesh, odd}) {
+                          read_mesh(data("teapot.obj")).mesh, odd, book}) {
         const MeshData md(m);
         const EdgeMap all = edge_map(m);
         ASSERT_FALSE(all.opposite.empty());

@@ -161,9 +161,9 @@ struct SortedHalfEdges
 
 // The opposite half-edges and the three counts from the incidence alone,
 // without sorting the half-edges (nor holding them: 8 bytes each). The
-// half-edges of the edge {a, b} lie in the faces of both a's and b's rows
-// (merged, each face once); a half-edge counts its edge when it is the lowest
-// of them. The same values as the sorted half-edges give.
+// half-edges of the edge {a, b} lie in the faces of a's row, and of b's: the
+// shorter is read (each face once); a half-edge counts its edge when it is
+// the lowest of them. The same values as the sorted half-edges give.
 EdgeMap opposite_from_incidence(const Mesh& mesh, const Adjacency& vertex_faces)
 {
     const std::size_t nf = mesh.n_faces();
@@ -182,31 +182,25 @@ EdgeMap opposite_from_incidence(const Mesh& mesh, const Adjacency& vertex_faces)
             const std::uint32_t h = 3 * f + k;
             std::uint32_t count = 0, lowest = h, other = EdgeMap::kNone;
             bool same = false;  // another half-edge a -> b
-            const std::uint32_t *x = vertex_faces.begin(a), *xe = vertex_faces.end(a);
-            const std::uint32_t *y = vertex_faces.begin(b), *ye = vertex_faces.end(b);
-            while (x != xe && y != ye) {
-                if (*x < *y) {
-                    ++x;
-                } else if (*y < *x) {
-                    ++y;
-                } else {
-                    const std::uint32_t g = *x;
-                    const Face& u = mesh.faces[g];
-                    for (std::uint32_t j = 0; j < 3; ++j) {
-                        const auto p = std::uint32_t(u[j]), q = std::uint32_t(u[(j + 1) % 3]);
-                        const bool forward = p == a && q == b, backward = p == b && q == a;
-                        if (!forward && !backward) continue;
-                        const std::uint32_t h2 = 3 * g + j;
-                        ++count;
-                        lowest = std::min(lowest, h2);
-                        if (h2 == h) continue;
-                        other = h2;
-                        same = same || forward;
-                    }
-                    // The next face of each row (a row lists a face at each
-                    // corner its vertex holds).
-                    while (x != xe && *x == g) ++x;
-                    while (y != ye && *y == g) ++y;
+            // The faces of the end with fewer: O(min degree) a half-edge, so
+            // that a hub's many half-edges do not each walk its whole row.
+            const std::uint32_t x = vertex_faces.degree(a) <= vertex_faces.degree(b) ? a : b;
+            std::uint32_t previous = EdgeMap::kNone;
+            for (const std::uint32_t* it = vertex_faces.begin(x); it != vertex_faces.end(x); ++it) {
+                const std::uint32_t g = *it;
+                if (g == previous) continue;  // a row lists a face at each corner its vertex holds
+                previous = g;
+                const Face& u = mesh.faces[g];
+                for (std::uint32_t j = 0; j < 3; ++j) {
+                    const auto p = std::uint32_t(u[j]), q = std::uint32_t(u[(j + 1) % 3]);
+                    const bool forward = p == a && q == b, backward = p == b && q == a;
+                    if (!forward && !backward) continue;
+                    const std::uint32_t h2 = 3 * g + j;
+                    ++count;
+                    lowest = std::min(lowest, h2);
+                    if (h2 == h) continue;
+                    other = h2;
+                    same = same || forward;
                 }
             }
             if (count == 2 && !same) m.opposite[h] = other;
@@ -223,11 +217,29 @@ EdgeMap opposite_from_incidence(const Mesh& mesh, const Adjacency& vertex_faces)
     return m;
 }
 
+// Whether opposite_from_incidence() reads at most 64 faces a half-edge on
+// average (the smaller degree of its ends): not so where many faces share
+// an edge between two vertices of high degree (a "book" of pages), whose
+// half-edges would each read all the pages; the sorted half-edges then.
+bool incidence_work_is_linear(const Mesh& mesh, const Adjacency& vertex_faces)
+{
+    if (vertex_faces.size() != mesh.n_vertices()) return false;
+    const auto nf = std::ptrdiff_t(mesh.n_faces());
+    std::uint64_t work = 0;
+#pragma omp parallel for schedule(static, 4096) reduction(+ : work)
+    for (std::ptrdiff_t i = 0; i < nf; ++i) {
+        const Face& t = mesh.faces[std::size_t(i)];
+        for (std::size_t k = 0; k < 3; ++k)
+            work += std::min(vertex_faces.degree(std::size_t(t[k])), vertex_faces.degree(std::size_t(t[(k + 1) % 3])));
+    }
+    return work <= 64 * 3 * std::uint64_t(nf);
+}
+
 }  // namespace
 
 EdgeMap detail::build_edge_map(const Mesh& mesh, EdgeMapParts parts, const Adjacency* vertex_faces)
 {
-    if (parts == EdgeMapParts::Opposite && vertex_faces) {
+    if (parts == EdgeMapParts::Opposite && vertex_faces && incidence_work_is_linear(mesh, *vertex_faces)) {
         check_half_edges(mesh);
         return opposite_from_incidence(mesh, *vertex_faces);
     }
