@@ -4,6 +4,7 @@
 #include "meshdiff/io/io.h"
 #include "meshdiff/studies/shapes.h"
 
+#include "geometry/bvh_build.h"
 #include "geometry/simd.h"
 
 #include <gtest/gtest.h>
@@ -79,6 +80,19 @@ void expect_index_matches_brute_force(const Mesh& m, std::size_t n_queries)
         EXPECT_NEAR(on_face.distance, ix.distance, 1e-12 * ix.distance);
         EXPECT_NEAR((p - ix.point).norm(), ix.distance, 1e-12 * ix.distance);
     }
+}
+
+// \p n slivers around vertex 0, a wavy rim.
+Mesh fan(int n)
+{
+    Mesh m;
+    m.points.emplace_back(0.0, 0.0, 0.1);
+    for (int i = 0; i < n; ++i) {
+        const double a = 2.0 * M_PI * i / n;
+        m.points.emplace_back(std::cos(a), std::sin(a), 0.01 * std::sin(7.0 * a));
+    }
+    for (int i = 0; i < n; ++i) m.faces.push_back({0, 1 + i, 1 + (i + 1) % n});
+    return m;
 }
 
 }  // namespace
@@ -205,14 +219,8 @@ TEST(ClosestPoint, IndexEqualsBruteForceExactlyOnAFan)
     // surface (along the hub's edges and inside the slivers, where the nearest
     // triangles tie at distance 0 or nearly), off it, and the hub itself: the
     // index's distance and face equal the brute force's (lowest face on ties).
-    Mesh m;
     const int n = 4000;
-    m.points.emplace_back(0.0, 0.0, 0.1);
-    for (int i = 0; i < n; ++i) {
-        const double a = 2.0 * M_PI * i / n;
-        m.points.emplace_back(std::cos(a), std::sin(a), 0.01 * std::sin(7.0 * a));
-    }
-    for (int i = 0; i < n; ++i) m.faces.push_back({0, 1 + i, 1 + (i + 1) % n});
+    const Mesh m = fan(n);
     const ClosestPointIndex index(m);
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -338,6 +346,104 @@ TEST(ClosestPoint, TreeIsTheSameForAnyThreadCount)
         const std::uint64_t two = hash_of_first_bounds(m, ClosestPointIndex(m));
         EXPECT_EQ(one, two) << name;
         EXPECT_EQ(one, pinned) << name << std::hex << " 0x" << one;
+    }
+    omp_set_num_threads(saved);
+}
+
+namespace {
+
+// The index's tables, field by field (a WideNode's padding is not set).
+void expect_same_tables(const detail::Bvh& x, const detail::Bvh& y, const std::string& name)
+{
+    ASSERT_EQ(x.nodes.size(), y.nodes.size()) << name;
+    for (std::size_t w = 0; w < x.nodes.size(); ++w) {
+        const detail::WideNode &a = x.nodes[w], &b = y.nodes[w];
+        ASSERT_TRUE(a.lo == b.lo && a.hi == b.hi && a.child == b.child && a.count == b.count &&
+                    a.obb_first == b.obb_first && a.obb_mask == b.obb_mask && a.slots == b.slots && a.split == b.split)
+            << name << " wide node " << w;
+    }
+    EXPECT_EQ(x.parent_of, y.parent_of) << name;
+    EXPECT_EQ(x.leaf_of, y.leaf_of) << name;
+    EXPECT_EQ(x.position_of, y.position_of) << name;
+    EXPECT_EQ(x.exact_box, y.exact_box) << name;
+    ASSERT_EQ(x.obbs.size(), y.obbs.size()) << name;
+    for (std::size_t i = 0; i < x.obbs.size(); ++i)
+        EXPECT_TRUE(x.obbs[i].centre == y.obbs[i].centre && x.obbs[i].axis == y.obbs[i].axis &&
+                    x.obbs[i].half == y.obbs[i].half)
+            << name << " box " << i;
+    EXPECT_TRUE(x.root_lo == y.root_lo && x.root_hi == y.root_hi && x.root_obb == y.root_obb &&
+                x.root_count == y.root_count)
+        << name;
+    ASSERT_EQ(x.tris.size(), y.tris.size()) << name;
+    for (std::size_t i = 0; i < x.tris.size(); ++i)
+        ASSERT_TRUE(x.tris.corners[i].v == y.tris.corners[i].v &&
+                    x.tris.corners[i].face_thin == y.tris.corners[i].face_thin)
+            << name << " triangle " << i;
+    EXPECT_EQ(x.tris.points, y.tris.points) << name;
+}
+
+// The 4-wide tree numbered depth first, as one walk from the root numbers
+// it: each node's inner slots hold the next node and then the ends of their
+// subtrees, the oriented boxes follow in that order, the parent and leaf
+// tables point back, and every triangle is in one leaf. Returns the end of
+// the subtree of node w, and its boxes' end in \p obb.
+std::uint32_t expect_depth_first(const detail::Bvh& t, std::uint32_t w, std::size_t& obb)
+{
+    const detail::WideNode& node = t.nodes[w];
+    EXPECT_EQ(node.obb_first, obb) << "wide node " << w;
+    obb += std::size_t(__builtin_popcount(node.obb_mask));
+    std::uint32_t next = w + 1;
+    for (std::uint32_t s = 0; s < node.slots; ++s) {
+        if (node.count[s] > 0) {
+            for (std::uint32_t i = 0; i < node.count[s]; ++i) EXPECT_EQ(t.leaf_of[node.child[s] + i], 4 * w + s);
+            continue;
+        }
+        EXPECT_EQ(node.child[s], next) << "wide node " << w << " slot " << s;
+        EXPECT_EQ(t.parent_of[node.child[s]], 4 * w + s);
+        next = expect_depth_first(t, node.child[s], obb);
+    }
+    return next;
+}
+
+}  // namespace
+
+// The tables made from the tree (the 4-wide nodes, their oriented boxes,
+// the parent and leaf tables) are written by up to 16 subtrees in parallel,
+// each where a walk from the root numbers it: the same bytes on one thread
+// and two, numbered depth first. The fan's slivers have oriented boxes; the
+// fan and the icosphere are above the 4,096 faces from which the tree grows
+// on two threads.
+TEST(ClosestPoint, TablesAreTheSameForAnyThreadCountAndNumberedDepthFirst)
+{
+    std::vector<std::pair<std::string, Mesh>> meshes;
+    meshes.emplace_back("fandisk", read_mesh(kData + "/fandisk.ply").mesh);
+    meshes.emplace_back("teapot", read_mesh(kData + "/teapot.obj").mesh);
+    meshes.emplace_back("fan", fan(6000));
+    meshes.emplace_back("icosphere", icosphere(6).mesh);
+    meshes.emplace_back("a leaf", plane_grid(2, 2, 1.0).mesh);
+    const int saved = omp_get_max_threads();
+    for (const auto& [name, m] : meshes) {
+        omp_set_num_threads(1);
+        const ClosestPointIndex one(m);
+        omp_set_num_threads(2);
+        const ClosestPointIndex two(m);
+        const detail::Bvh& t = detail::bvh_of(two);
+        expect_same_tables(detail::bvh_of(one), t, name);
+        if (name == "fan") {
+            EXPECT_GT(t.obbs.size(), 10u);
+        }
+        if (t.nodes.empty()) {
+            EXPECT_EQ(t.root_count, m.n_faces()) << name;
+            continue;
+        }
+        std::size_t obb = t.root_obb == 0 ? 1 : 0;
+        EXPECT_EQ(expect_depth_first(t, 0, obb), t.nodes.size()) << name;
+        EXPECT_EQ(obb, t.obbs.size()) << name;
+        std::vector<int> in_leaves(m.n_faces(), 0);
+        for (const detail::WideNode& node : t.nodes)
+            for (std::uint32_t s = 0; s < node.slots; ++s)
+                for (std::uint32_t i = 0; i < node.count[s]; ++i) ++in_leaves[node.child[s] + i];
+        EXPECT_EQ(std::count(in_leaves.begin(), in_leaves.end(), 1), std::ptrdiff_t(m.n_faces())) << name;
     }
     omp_set_num_threads(saved);
 }

@@ -177,7 +177,7 @@ struct Builder
     std::uint32_t split(const Task task, const Box& cbox);
     void process(const Task task, Part& out);
     void grow(Part& part);
-    void grow_subtrees(Part& tree);
+    void grow_subtrees(Part& tree, Part (&sub)[2]);
 };
 
 // The oriented box of the triangles order[begin..end): principal axes of
@@ -353,46 +353,13 @@ void Builder::grow(Part& part)
     }
 }
 
-// The subtrees `sub` of the root of `tree`, each numbered from 0 (its root),
-// appended to `tree` as the serial build numbers them (see grow_subtrees()).
-void append_subtrees(Part& tree, const Part (&sub)[2])
-{
-    // The nodes at their final count (the estimate reserved for the serial
-    // build would grow by doubling: 2M triangles, 1.2M nodes).
-    {
-        const Node root = tree.nodes[0];
-        detail::release(tree.nodes);
-        tree.nodes.reserve(1 + sub[0].nodes.size() + sub[1].nodes.size());
-        tree.nodes.push_back(root);
-    }
-    tree.nodes.resize(3);
-    const std::uint32_t offset[2] = {2, std::uint32_t(sub[0].nodes.size()) + 1};  // for local ids >= 1
-    for (std::uint32_t k = 0; k < 2; ++k) {
-        auto global = [&](std::uint32_t local) { return local == 0 ? 1 + k : local + offset[k]; };
-        for (std::size_t i = 0; i < sub[k].nodes.size(); ++i) {
-            Node node = sub[k].nodes[i];
-            if (node.triangles() == 0) node.first = global(node.first);
-            if (i == 0)
-                tree.nodes[1 + k] = node;
-            else
-                tree.nodes.push_back(node);
-        }
-        const auto slot0 = std::uint32_t(tree.obbs.size());
-        tree.obbs.insert(tree.obbs.end(), sub[k].obbs.begin(), sub[k].obbs.end());
-        for (const auto& [node, slot] : sub[k].obb_of) tree.obb_of.push_back({global(node), slot0 + slot});
-    }
-}
-
 // The root's two subtrees (the two tasks on the stack of `tree`, whose root
-// is processed) on two threads, each numbered from 0 (its root), then
-// appended as the serial build numbers them: the left subtree's root is node
-// 1, its other nodes follow from 3 in their order; the right one's root is
-// node 2, its other nodes follow those. Their triangle ranges are disjoint.
-// The same tree, node for node, as the serial build.
-void Builder::grow_subtrees(Part& tree)
+// is processed) on two threads, into `sub`, each numbered from 0 (its root).
+// Their triangle ranges are disjoint. The same nodes as the serial build
+// grows, numbered per part (Grown reads the three parts as one tree).
+void Builder::grow_subtrees(Part& tree, Part (&sub)[2])
 {
     std::vector<Node>(tree.nodes).swap(tree.nodes);  // the serial build's reserve is not needed
-    Part sub[2];
     for (int k = 0; k < 2; ++k) {
         const Task t = tree.stack[std::size_t(1 - k)];  // left on top
         sub[k].nodes.reserve(node_estimate(t.end - t.begin));
@@ -402,7 +369,6 @@ void Builder::grow_subtrees(Part& tree)
     auto right = std::async(std::launch::async, [&] { grow(sub[1]); });
     grow(sub[0]);
     right.get();
-    append_subtrees(tree, sub);
 }
 
 // x rounded to a float downwards, and upwards.
@@ -417,55 +383,120 @@ float float_above(double x)
     return double(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-// The 4-wide tree of `out` from the binary tree `bin` (whose oriented boxes
-// are `obbs`, node k's at bin_obb[k] or kNoSlot): wide nodes in depth-first
-// order, the root first, each slot's and inner half's oriented box copied
-// into out.obbs in the order of obb_mask's bits.
-struct Collapse
+// A node of the grown binary tree: its part (Grown) and its number there.
+struct NodeRef
 {
-    static constexpr std::uint32_t kNoSlot = std::numeric_limits<std::uint32_t>::max();
-    const std::vector<Node>& bin;
-    const std::vector<Obb>& obbs;
-    const std::vector<std::uint32_t>& bin_obb;
-    Bvh& out;
+    std::uint32_t part, id;
+};
 
-    std::uint32_t obb_of(std::uint32_t k) const { return bin[k].count & kHasObb ? bin_obb[k] : kNoSlot; }
+// The grown binary tree, read in place: one part (the serial build), or the
+// root's part and its two subtrees' (grow_subtrees(), whose roots stand for
+// the root part's nodes 1 and 2), not copied into one numbering (a 2M-face
+// mesh: 1.2M nodes, 68 MB and 0.12 s on one thread). The 4-wide tree made
+// from it depends on its shape only, not on how its nodes are numbered.
+class Grown
+{
+public:
+    explicit Grown(Part& whole) : parts_{&whole, nullptr, nullptr}, split_(false) { mark(); }
+    Grown(Part& root, Part (&sub)[2]) : parts_{&root, &sub[0], &sub[1]}, split_(true) { mark(); }
 
-    // The number of wide nodes made from the inner binary node k.
-    std::size_t count(std::uint32_t k) const
+    const Node& node(NodeRef k) const { return parts_[k.part]->nodes[k.id]; }
+    // Child h of the inner node k.
+    NodeRef child(NodeRef k, std::uint32_t h) const
     {
-        std::size_t n = 1;
-        for (std::uint32_t h = 0; h < 2; ++h) {
-            const std::uint32_t c = bin[k].first + h;
-            if (bin[c].triangles() > 0) continue;
-            for (std::uint32_t g = 0; g < 2; ++g)
-                if (bin[bin[c].first + g].triangles() == 0) n += count(bin[c].first + g);
-        }
-        return n;
+        if (split_ && k.part == 0) return {1 + h, 0};
+        return {k.part, node(k).first + h};
+    }
+    // Node k's oriented box, or none.
+    const Obb* obb(NodeRef k) const
+    {
+        if (!(node(k).count & kHasObb)) return nullptr;
+        const Part& p = *parts_[k.part];
+        const auto it = std::lower_bound(p.obb_of.begin(), p.obb_of.end(), std::make_pair(k.id, std::uint32_t(0)));
+        return &p.obbs[it->second];
     }
 
-    // The wide node of the inner binary node k, slot `up` % 4 of wide node
-    // `up` / 4.
-    std::uint32_t wide(std::uint32_t k, std::uint32_t up)
+private:
+    // The nodes with an oriented box flagged (kHasObb), their (node, slot)
+    // pairs sorted by node for obb().
+    void mark()
     {
-        const auto w = std::uint32_t(out.nodes.size());
-        out.nodes.push_back({});
-        out.parent_of.push_back(up);
-        out.exact_box.push_back({bin[k].lo[0], bin[k].lo[1], bin[k].lo[2], bin[k].hi[0], bin[k].hi[1], bin[k].hi[2]});
-        std::array<std::uint32_t, 4> slot{};  // binary node of each slot
-        std::array<std::uint32_t, 2> half_obb{kNoSlot, kNoSlot};
-        std::uint8_t n = 0, split = 0;
-        for (std::uint32_t h = 0; h < 2; ++h) {
-            const std::uint32_t c = bin[k].first + h;
-            if (bin[c].triangles() > 0) {
-                slot[n++] = c;
-            } else {
-                slot[n++] = bin[c].first;
-                slot[n++] = bin[c].first + 1;
-                half_obb[h] = obb_of(c);
-            }
-            if (h == 0) split = n;
+        for (Part* p : parts_) {
+            if (!p) continue;
+            std::sort(p->obb_of.begin(), p->obb_of.end());
+            for (const auto& [node, slot] : p->obb_of) p->nodes[node].count |= kHasObb;
         }
+    }
+    std::array<Part*, 3> parts_;
+    bool split_;
+};
+
+// The 4-wide tree of `out` from the binary tree `bin`: wide nodes in
+// depth-first order, the root first, each slot's and inner half's oriented
+// box copied into out.obbs in the order of obb_mask's bits. The top levels
+// on the calling thread, the subtrees below them in parallel, each written
+// at the place the depth-first order gives it (its size counted first): the
+// same tables as one depth-first walk.
+struct Collapse
+{
+    const Grown& bin;
+    Bvh& out;
+
+    // The slots of an inner node: its children, or theirs where those are
+    // inner; the first `split` the left child's. The inner halves' boxes.
+    struct Slots
+    {
+        std::array<NodeRef, 4> slot{};
+        std::array<const Obb*, 2> half{nullptr, nullptr};
+        std::uint8_t n = 0, split = 0;
+    };
+    Slots slots_of(NodeRef k) const
+    {
+        Slots s;
+        for (std::uint32_t h = 0; h < 2; ++h) {
+            const NodeRef c = bin.child(k, h);
+            if (bin.node(c).triangles() > 0) {
+                s.slot[s.n++] = c;
+            } else {
+                s.slot[s.n++] = bin.child(c, 0);
+                s.slot[s.n++] = bin.child(c, 1);
+                s.half[h] = bin.obb(c);
+            }
+            if (h == 0) s.split = s.n;
+        }
+        return s;
+    }
+    bool inner(NodeRef k) const { return bin.node(k).triangles() == 0; }
+
+    // The wide nodes and oriented boxes made from the inner node k.
+    struct Size
+    {
+        std::size_t nodes = 0, obbs = 0;
+    };
+    Size size(NodeRef k) const
+    {
+        const Slots s = slots_of(k);
+        Size z{1, 0};
+        for (std::uint32_t i = 0; i < s.n; ++i) {
+            z.obbs += bin.obb(s.slot[i]) ? 1 : 0;
+            if (inner(s.slot[i])) {
+                const Size c = size(s.slot[i]);
+                z.nodes += c.nodes;
+                z.obbs += c.obbs;
+            }
+        }
+        for (const Obb* h : s.half) z.obbs += h ? 1 : 0;
+        return z;
+    }
+
+    // The wide node of the inner node k (slots s) at w, slot `up` % 4 of wide
+    // node `up` / 4, its oriented boxes from o in out.obbs; its inner slots'
+    // children are left to the caller. Returns the number of boxes.
+    std::size_t write(NodeRef k, const Slots& s, std::uint32_t up, std::uint32_t w, std::size_t o)
+    {
+        const Node& b = bin.node(k);
+        out.parent_of[w] = up;
+        out.exact_box[w] = {b.lo[0], b.lo[1], b.lo[2], b.hi[0], b.hi[1], b.hi[2]};
         WideNode node;
         for (std::size_t a = 0; a < 3; ++a) {
             node.lo[a].fill(std::numeric_limits<float>::infinity());
@@ -473,79 +504,126 @@ struct Collapse
         }
         node.child.fill(0);
         node.count.fill(0);
-        node.slots = n;
-        node.split = split;
+        node.slots = s.n;
+        node.split = s.split;
         node.obb_mask = 0;
-        node.obb_first = std::uint32_t(out.obbs.size());
-        for (std::uint32_t s = 0; s < n; ++s) {
-            const Node& b = bin[slot[s]];
+        node.obb_first = std::uint32_t(o);
+        std::size_t boxes = 0;
+        for (std::uint32_t i = 0; i < s.n; ++i) {
+            const Node& c = bin.node(s.slot[i]);
             for (std::size_t a = 0; a < 3; ++a) {
-                node.lo[a][s] = float_below(b.lo[a]);
-                node.hi[a][s] = float_above(b.hi[a]);
+                node.lo[a][i] = float_below(c.lo[a]);
+                node.hi[a][i] = float_above(c.hi[a]);
             }
-            if (obb_of(slot[s]) != kNoSlot) {
-                node.obb_mask = std::uint8_t(node.obb_mask | (1u << s));
-                out.obbs.push_back(obbs[obb_of(slot[s])]);
+            if (const Obb* box = bin.obb(s.slot[i])) {
+                node.obb_mask = std::uint8_t(node.obb_mask | (1u << i));
+                out.obbs[o + boxes++] = *box;
             }
         }
         for (std::uint32_t h = 0; h < 2; ++h) {
-            if (half_obb[h] != kNoSlot) {
+            if (s.half[h]) {
                 node.obb_mask = std::uint8_t(node.obb_mask | (1u << (4 + h)));
-                out.obbs.push_back(obbs[half_obb[h]]);
+                out.obbs[o + boxes++] = *s.half[h];
             }
         }
-        for (std::uint32_t s = 0; s < n; ++s) {
-            const Node& b = bin[slot[s]];
-            if (b.triangles() > 0) {
-                node.child[s] = b.first;
-                node.count[s] = std::uint8_t(b.triangles());
-                for (std::uint32_t i = 0; i < b.triangles(); ++i) out.leaf_of[b.first + i] = 4 * w + s;
+        for (std::uint32_t i = 0; i < s.n; ++i) {
+            const Node& c = bin.node(s.slot[i]);
+            if (c.triangles() > 0) {
+                node.child[i] = c.first;
+                node.count[i] = std::uint8_t(c.triangles());
+                for (std::uint32_t t = 0; t < c.triangles(); ++t) out.leaf_of[c.first + t] = 4 * w + i;
             }
         }
         out.nodes[w] = node;
-        for (std::uint32_t s = 0; s < n; ++s) {
-            if (bin[slot[s]].triangles() == 0) {
-                const std::uint32_t child = wide(slot[s], 4 * w + s);
-                out.nodes[w].child[s] = child;
-            }
+        return boxes;
+    }
+
+    // The wide subtree of the inner node k, depth first from wide node w and
+    // box o (both advanced past it).
+    void subtree(NodeRef k, std::uint32_t up, std::uint32_t& w, std::size_t& o)
+    {
+        const Slots s = slots_of(k);
+        const std::uint32_t me = w++;
+        o += write(k, s, up, me, o);
+        for (std::uint32_t i = 0; i < s.n; ++i) {
+            if (!inner(s.slot[i])) continue;
+            out.nodes[me].child[i] = w;
+            subtree(s.slot[i], 4 * me + i, w, o);
         }
-        return w;
+    }
+
+    // A subtree left to a thread: its inner node, parent slot and places.
+    struct Job
+    {
+        NodeRef k;
+        std::uint32_t up, w;
+        std::size_t o;
+    };
+    // The wide nodes of the top `depth` levels under k, at w and o; the
+    // subtrees below them into `jobs`, at the places they take.
+    void top(NodeRef k, std::uint32_t up, std::uint32_t w, std::size_t o, int depth, std::vector<Job>& jobs)
+    {
+        if (depth == 0) {
+            jobs.push_back({k, up, w, o});
+            return;
+        }
+        const Slots s = slots_of(k);
+        o += write(k, s, up, w, o);
+        std::uint32_t next = w + 1;
+        for (std::uint32_t i = 0; i < s.n; ++i) {
+            if (!inner(s.slot[i])) continue;
+            out.nodes[w].child[i] = next;
+            top(s.slot[i], 4 * w + i, next, o, depth - 1, jobs);
+            const Size z = size(s.slot[i]);
+            next += std::uint32_t(z.nodes);
+            o += z.obbs;
+        }
     }
 };
 
 // The tables of `out` from the grown tree (its triangles already in leaf
 // order): the 4-wide tree with its oriented boxes, and the parent and leaf
 // tables.
-void make_tables(Part& tree, Bvh& out)
+void make_tables(const Grown& bin, Bvh& out)
 {
     const std::size_t n = out.tris.size();
-    const std::vector<Node>& bin = tree.nodes;
-    std::vector<std::uint32_t> bin_obb(tree.obbs.empty() ? 0 : bin.size(), 0);
-    for (const auto& [node, slot] : tree.obb_of) {
-        tree.nodes[node].count |= kHasObb;
-        bin_obb[node] = slot;
-    }
     out.leaf_of.assign(n, 0);
-    const Node& root = bin[0];
+    const NodeRef root_ref{0, 0};
+    const Node& root = bin.node(root_ref);
     for (std::size_t a = 0; a < 3; ++a) {
         out.root_lo[a] = root.lo[a];
         out.root_hi[a] = root.hi[a];
     }
-    Collapse collapse{bin, tree.obbs, bin_obb, out};
-    if (root.count & kHasObb) {
-        out.root_obb = std::uint32_t(out.obbs.size());
-        out.obbs.push_back(tree.obbs[bin_obb[0]]);
-    }
+    const Obb* root_obb = bin.obb(root_ref);
     if (root.triangles() > 0 || n == 0) {
         out.root_count = root.triangles();
-    } else {
-        const std::size_t n_wide = collapse.count(0);
-        out.nodes.reserve(n_wide);
-        out.parent_of.reserve(n_wide);
-        out.exact_box.reserve(n_wide);
-        collapse.wide(0, 0);
+        if (root_obb) {
+            out.root_obb = 0;
+            out.obbs.assign(1, *root_obb);
+        }
+        return;
     }
-    out.obbs.shrink_to_fit();
+    Collapse collapse{bin, out};
+    const Collapse::Size total = collapse.size(root_ref);
+    // Every entry is written once below (WideNode is not zeroed).
+    out.nodes.resize(total.nodes);
+    out.parent_of.resize(total.nodes);
+    out.exact_box.resize(total.nodes);
+    out.obbs.resize((root_obb ? 1 : 0) + total.obbs);
+    if (root_obb) {
+        out.root_obb = 0;
+        out.obbs[0] = *root_obb;
+    }
+    // Two levels: up to 16 subtrees shared out between the threads.
+    std::vector<Collapse::Job> jobs;
+    collapse.top(root_ref, 0, 0, root_obb ? 1 : 0, 2, jobs);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t j = 0; j < std::ptrdiff_t(jobs.size()); ++j) {
+        const Collapse::Job& job = jobs[std::size_t(j)];
+        std::uint32_t w = job.w;
+        std::size_t o = job.o;
+        collapse.subtree(job.k, job.up, w, o);
+    }
 }
 
 }  // namespace
@@ -565,13 +643,14 @@ void build_bvh(const Mesh& mesh, Bvh& out)
     std::iota(order.begin(), order.end(), 0u);
     Builder builder{mesh, facts, order, stage};
 
-    Part tree;
+    Part tree, sub[2];
     tree.nodes.reserve(node_estimate(n));
     tree.nodes.push_back({});
     stage.check();
     builder.process({0, 0, std::uint32_t(n), 0}, tree);
-    if (tree.stack.size() == 2 && n >= kParallelBuild && omp_get_max_threads() > 1) {
-        builder.grow_subtrees(tree);
+    const bool split = tree.stack.size() == 2 && n >= kParallelBuild && omp_get_max_threads() > 1;
+    if (split) {
+        builder.grow_subtrees(tree, sub);
     } else {
         builder.grow(tree);
     }
@@ -581,7 +660,7 @@ void build_bvh(const Mesh& mesh, Bvh& out)
     detail::release(facts);
     set_up_triangles(mesh, order, out);
     detail::release(order);
-    make_tables(tree, out);
+    make_tables(split ? Grown(tree, sub) : Grown(tree), out);
     stage.finish();
 }
 

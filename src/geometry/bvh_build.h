@@ -95,6 +95,7 @@ struct Obb
 //! -inf). Two cache lines.
 struct alignas(64) WideNode
 {
+    WideNode() {}                                // not zeroed: the build writes every field of every node
     std::array<std::array<float, 4>, 3> lo, hi;  // [axis][slot]
     std::array<std::uint32_t, 4> child;          // wide node, or a leaf's first triangle
     std::array<std::uint8_t, 4> count;           // leaf: number of triangles (> 0); wide node: 0
@@ -124,8 +125,10 @@ struct Bvh
 //! or the tree deep), at most 4 triangles per leaf, oriented boxes for the
 //! nodes whose axis-aligned box is far larger than their triangles; the
 //! root's two subtrees on two threads for a large mesh, the same tree, node
-//! for node, as the serial build; then made 4-wide (WideNode). Reports the
-//! stage "index" to the calling thread's Progress.
+//! for node, as the serial build; then made 4-wide (WideNode), its subtrees
+//! below the top two levels in parallel, each where one depth-first walk
+//! numbers it (the same tables at any thread count). Reports the stage
+//! "index" to the calling thread's Progress.
 //! \throw Cancelled if the run is cancelled.
 void build_bvh(const Mesh& mesh, Bvh& out);
 
