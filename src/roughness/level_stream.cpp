@@ -102,6 +102,9 @@ LevelSums LevelStream::sums(std::size_t li) const
         s.wtotal.add(p.wtotal.c);
         s.used += p.used;
     }
+    std::size_t candidates = 0;
+    for (const auto& worker : heads_) candidates += worker[li].items.size();
+    s.head.reserve(candidates);  // not grown by doubling (a fresh block and a copy each time)
     for (const auto& worker : heads_)
         for (const Candidate& x : worker[li].items) s.head.push_back({x.a, x.id, weights_ ? (*weights_)[x.id] : 1.0});
     rank_first(s.head, capacity_);
