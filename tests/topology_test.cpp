@@ -501,7 +501,8 @@ TEST(Topology, EdgeMapPartsAreTheFullMapsParts)
     // The parts build_edge_map() fills are the full map's, bit for bit, and
     // the others are left empty: on a closed mesh, on meshes with boundaries,
     // non-manifold edges, duplicate faces and collapsed corners, with and
-    // without the incidence.
+    // without the incidence. The edge list from the incidence alone
+    // (unique_edges() of a MeshData) is the full map's too.
     Mesh odd;
     odd.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(2, 0, 0), Vec3(1, 1, 0)};
     odd.faces = {{0, 1, 2}, {0, 1, 3}, {2, 1, 0}, {1, 4, 2}, {1, 1, 4}, {3, 4, 3}, {4, 2, 0}, {0, 2, 4}};
@@ -524,6 +525,13 @@ TEST(Topology, EdgeMapPartsAreTheFullMapsParts)
             EXPECT_EQ(o.opposite, all.opposite);
             EXPECT_TRUE(o.edges.empty() && o.offset.empty() && o.half_edge.empty() && o.edge_of.empty());
             const EdgeMap e = detail::build_edge_map(m, detail::EdgeMapParts::Edges, vf);
+            if (vf) {  // the edge list alone, from the incidence
+                const std::vector<Edge> u = unique_edges(md);
+                ASSERT_EQ(u.size(), all.edges.size());
+                for (std::size_t i = 0; i < u.size(); ++i)
+                    EXPECT_TRUE(u[i].a == all.edges[i].a && u[i].b == all.edges[i].b && u[i].face == all.edges[i].face)
+                        << i;
+            }
             EXPECT_TRUE(e.opposite.empty() && e.edge_of.empty());
             EXPECT_EQ(e.offset, all.offset);
             EXPECT_EQ(e.half_edge, all.half_edge);

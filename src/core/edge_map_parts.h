@@ -9,7 +9,7 @@ namespace meshdiff::detail {
 //! What build_edge_map() fills besides the three counts.
 enum class EdgeMapParts
 {
-    Edges,     //!< edges, offset, half_edge (unique_edges(), the boundary mask)
+    Edges,     //!< edges, offset, half_edge (unique_edges(mesh), the boundary mask)
     All,       //!< those, edge_of and opposite (edge_map())
     Opposite,  //!< opposite only (the sign check: 3 x 4 bytes a face, not 3 x 16 + 12 an edge)
 };

@@ -444,10 +444,59 @@ std::vector<Edge> unique_edges(const Mesh& mesh)
     return std::move(m.edges);
 }
 
+namespace {
+
+// The edges of vertex v to higher ends, each once with its lowest face, in
+// \p out ascending: from the faces of v's row (in a triangle every two
+// corners that differ share an edge).
+void edges_up_from(std::size_t v, const Mesh& mesh, const Adjacency& vertex_faces,
+                   std::vector<std::pair<std::uint32_t, std::uint32_t>>& out)
+{
+    out.clear();
+    for (const std::uint32_t* f = vertex_faces.begin(v); f != vertex_faces.end(v); ++f)
+        for (auto w : mesh.faces[*f])
+            if (std::size_t(w) > v) out.push_back({std::uint32_t(w), *f});
+    std::sort(out.begin(), out.end());  // by end, then face: an end's first pair has its lowest face
+    out.erase(std::unique(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.first == y.first; }),
+              out.end());
+}
+
+}  // namespace
+
 std::vector<Edge> unique_edges(const MeshData& data)
 {
-    EdgeMap m = detail::build_edge_map(data.mesh(), detail::EdgeMapParts::Edges, &data.vertex_faces());
-    return std::move(m.edges);
+    // From the incidence, one vertex at a time in parallel (a count, then
+    // the edges): no sorted half-edges (8 bytes each) nor the edge map's
+    // half-edge tables, which the edge list does not need. The same list as
+    // unique_edges(mesh): sorted by (a, b), each edge's face the lowest of
+    // its half-edges'.
+    const Mesh& mesh = data.mesh();
+    const Adjacency& vf = data.vertex_faces();
+    check_half_edges(mesh);
+    const std::size_t n = mesh.n_vertices();
+    std::vector<std::uint32_t> first(n + 1, 0);
+#pragma omp parallel
+    {
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> row;
+#pragma omp for schedule(static, 4096)
+        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+            edges_up_from(std::size_t(v), mesh, vf, row);
+            first[std::size_t(v) + 1] = std::uint32_t(row.size());
+        }
+    }
+    for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+    std::vector<Edge> edges(first[n]);
+#pragma omp parallel
+    {
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> row;
+#pragma omp for schedule(static, 4096)
+        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+            edges_up_from(std::size_t(v), mesh, vf, row);
+            Edge* e = edges.data() + first[std::size_t(v)];
+            for (const auto& [w, f] : row) *e++ = {std::uint32_t(v), w, f};
+        }
+    }
+    return edges;
 }
 
 std::vector<char> boundary_vertex_mask(const Mesh& mesh)

@@ -60,7 +60,8 @@ std::vector<Edge> unique_edges(const Mesh& mesh);
 class MeshData;
 
 //! The same from \p data's mesh, with its vertex-face incidence (derived there
-//! if not yet): the half-edges are grouped one vertex at a time, in parallel.
+//! if not yet): each vertex's edges to higher ends found in its row, one
+//! vertex at a time, in parallel.
 std::vector<Edge> unique_edges(const MeshData& data);
 
 //! The half-edges of a mesh grouped by undirected edge: the one edge table of
@@ -103,7 +104,8 @@ struct EdgeMap
 EdgeMap edge_map(const Mesh& mesh);
 
 //! The same from \p data's mesh, with its vertex-face incidence (derived there
-//! if not yet): the half-edges are grouped one vertex at a time, in parallel.
+//! if not yet): each vertex's edges to higher ends found in its row, one
+//! vertex at a time, in parallel.
 EdgeMap edge_map(const MeshData& data);
 
 //! Mean length over the edges of \p adj (vertex_adjacency() of \p mesh), each
