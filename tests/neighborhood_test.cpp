@@ -8,8 +8,10 @@
 #include "meshdiff/io/io.h"
 #include "meshdiff/studies/shapes.h"
 
+#include "core/parallel_sort.h"
 #include "geometry/simd.h"
 #include "roughness/level_stream.h"
+#include "roughness/morton.h"
 
 #include <omp.h>
 
@@ -565,4 +567,45 @@ TEST(DiskMeans, SecondValuesShareTheSearchBitForBit)
             }
         }
     }
+}
+
+// The sort of distinct elements on the threads (pieces sorted, then merged)
+// gives std::sort's order at any thread count, above and below the size from
+// which it splits; the Morton order of the ring search's batches, made with
+// it, is the sorted (code, id) pairs of a serial loop.
+TEST(ParallelSort, DistinctElementsComeOutAsStdSortsAtAnyThreadCount)
+{
+    std::mt19937_64 rng(11);
+    const int saved = omp_get_max_threads();
+    for (const std::size_t n : {std::size_t(0), std::size_t(1000), std::size_t(300001)}) {
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> v(n);
+        for (std::size_t i = 0; i < n; ++i) v[i] = {rng() % 5000, std::uint32_t(i)};  // many equal codes, ids apart
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> expected = v;
+        std::sort(expected.begin(), expected.end());
+        for (const int threads : {1, 2, 3, 5}) {
+            omp_set_num_threads(threads);
+            auto got = v;
+            detail::sort_distinct(got);
+            EXPECT_TRUE(got == expected) << n << " elements, " << threads << " threads";
+        }
+    }
+    const Mesh m = icosphere(7).mesh;  // 163,842 vertices
+    const BoundingBox box = bounding_box(m);
+    const Vec3 ext = (box.max - box.min).cwiseMax(Vec3::Constant(1e-300));
+    const double cells = double((1u << 21) - 1);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys;
+    for (std::size_t i = 0; i < m.n_vertices(); ++i) {
+        const Vec3 q = (m.points[i] - box.min).cwiseQuotient(ext) * cells;
+        keys.push_back({detail::spread_bits(std::uint64_t(q.x())) | detail::spread_bits(std::uint64_t(q.y())) << 1 |
+                            detail::spread_bits(std::uint64_t(q.z())) << 2,
+                        std::uint32_t(i)});
+    }
+    std::sort(keys.begin(), keys.end());
+    for (const int threads : {1, 2, 3}) {
+        omp_set_num_threads(threads);
+        const std::vector<std::uint32_t> order = detail::morton_order(m, box);
+        ASSERT_EQ(order.size(), keys.size());
+        for (std::size_t i = 0; i < order.size(); ++i) ASSERT_EQ(order[i], keys[i].second) << i << ", " << threads;
+    }
+    omp_set_num_threads(saved);
 }

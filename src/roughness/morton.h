@@ -8,6 +8,8 @@
 #include "meshdiff/core/mesh.h"
 #include "meshdiff/core/topology.h"
 
+#include "core/parallel_sort.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -30,21 +32,25 @@ inline std::uint64_t spread_bits(std::uint64_t x)
 
 //! The vertex ids of \p mesh sorted along a Morton curve of their positions
 //! (21 bits per axis over \p box, the bounding box of the positions; ties by
-//! id).
+//! id), the codes made and sorted on the OpenMP threads (the same order).
 inline std::vector<std::uint32_t> morton_order(const Mesh& mesh, const BoundingBox& box)
 {
     const Vec3 ext = (box.max - box.min).cwiseMax(Vec3::Constant(1e-300));
     const double cells = double((1u << 21) - 1);
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(mesh.n_vertices());
-    for (std::size_t i = 0; i < mesh.n_vertices(); ++i) {
+    const auto n = std::ptrdiff_t(keys.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t j = 0; j < n; ++j) {
+        const auto i = std::size_t(j);
         const Vec3 q = (mesh.points[i] - box.min).cwiseQuotient(ext) * cells;
         keys[i] = {spread_bits(std::uint64_t(q.x())) | spread_bits(std::uint64_t(q.y())) << 1 |
                        spread_bits(std::uint64_t(q.z())) << 2,
                    std::uint32_t(i)};
     }
-    std::sort(keys.begin(), keys.end());
+    sort_distinct(keys);  // distinct: the ids differ
     std::vector<std::uint32_t> order(keys.size());
-    for (std::size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].second;
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t j = 0; j < n; ++j) order[std::size_t(j)] = keys[std::size_t(j)].second;
     return order;
 }
 
