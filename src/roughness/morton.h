@@ -47,10 +47,9 @@ inline std::vector<std::uint32_t> morton_order(const Mesh& mesh, const BoundingB
                        spread_bits(std::uint64_t(q.z())) << 2,
                    std::uint32_t(i)};
     }
-    sort_distinct(keys);  // distinct: the ids differ
-    std::vector<std::uint32_t> order(keys.size());
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t j = 0; j < n; ++j) order[std::size_t(j)] = keys[std::size_t(j)].second;
+    std::vector<std::uint32_t> order;
+    order.reserve(keys.size());
+    for_each_sorted_distinct(keys, [&](const auto& key) { order.push_back(key.second); });  // distinct: the ids differ
     return order;
 }
 
