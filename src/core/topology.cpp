@@ -372,6 +372,39 @@ void neighbours_of(std::size_t v, const Mesh& mesh, const Adjacency& vertex_face
     out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
+// A table of one row per vertex made on the threads, in two passes over the
+// vertices: row(v, buffer) fills a thread's buffer with v's row, first to
+// count (the offsets returned, n + 1 of them), then, once allocate(total)
+// has made room, to write it through put(v, buffer, its first entry). No
+// table of every half-edge (8 bytes each) on the way; the same table as
+// one serial walk.
+template <class Buffer, class Row, class Allocate, class Put>
+std::vector<std::uint32_t> rows_by_vertex(std::size_t n, Row&& row, Allocate&& allocate, Put&& put)
+{
+    std::vector<std::uint32_t> offset(n + 1, 0);
+#pragma omp parallel
+    {
+        Buffer buffer;
+#pragma omp for schedule(static, 4096)
+        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+            row(std::size_t(v), buffer);
+            offset[std::size_t(v) + 1] = std::uint32_t(buffer.size());
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
+    allocate(std::size_t(offset[n]));
+#pragma omp parallel
+    {
+        Buffer buffer;
+#pragma omp for schedule(static, 4096)
+        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
+            row(std::size_t(v), buffer);
+            put(std::size_t(v), buffer, offset[std::size_t(v)]);
+        }
+    }
+    return offset;
+}
+
 }  // namespace
 
 Adjacency vertex_adjacency(const Mesh& mesh)
@@ -381,33 +414,18 @@ Adjacency vertex_adjacency(const Mesh& mesh)
 
 Adjacency vertex_adjacency(const Mesh& mesh, const Adjacency& vertex_faces)
 {
-    // Two passes over the vertices, in parallel: the row lengths, then the
-    // rows; no table of every half-edge (48 MB for 2M faces).
+    // The rows in parallel (rows_by_vertex()): no table of every half-edge
+    // (48 MB for 2M faces).
     const std::size_t n = mesh.n_vertices();
     if (vertex_faces.size() != n)
         throw InvalidArgumentError("vertex_adjacency: the vertex-face incidence is not this mesh's");
     Adjacency adj;
-    adj.offset.assign(n + 1, 0);
-#pragma omp parallel
-    {
-        std::vector<std::uint32_t> row;
-#pragma omp for schedule(static, 4096)
-        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
-            neighbours_of(std::size_t(v), mesh, vertex_faces, row);
-            adj.offset[std::size_t(v) + 1] = std::uint32_t(row.size());
-        }
-    }
-    for (std::size_t i = 0; i < n; ++i) adj.offset[i + 1] += adj.offset[i];
-    adj.index.resize(adj.offset[n]);
-#pragma omp parallel
-    {
-        std::vector<std::uint32_t> row;
-#pragma omp for schedule(static, 4096)
-        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
-            neighbours_of(std::size_t(v), mesh, vertex_faces, row);
-            std::copy(row.begin(), row.end(), adj.index.begin() + adj.offset[std::size_t(v)]);
-        }
-    }
+    adj.offset = rows_by_vertex<std::vector<std::uint32_t>>(
+        n, [&](std::size_t v, std::vector<std::uint32_t>& row) { neighbours_of(v, mesh, vertex_faces, row); },
+        [&](std::size_t total) { adj.index.resize(total); },
+        [&](std::size_t, const std::vector<std::uint32_t>& row, std::uint32_t at) {
+            std::copy(row.begin(), row.end(), adj.index.begin() + at);
+        });
     return adj;
 }
 
@@ -473,29 +491,14 @@ std::vector<Edge> unique_edges(const MeshData& data)
     const Mesh& mesh = data.mesh();
     const Adjacency& vf = data.vertex_faces();
     check_half_edges(mesh);
-    const std::size_t n = mesh.n_vertices();
-    std::vector<std::uint32_t> first(n + 1, 0);
-#pragma omp parallel
-    {
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> row;
-#pragma omp for schedule(static, 4096)
-        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
-            edges_up_from(std::size_t(v), mesh, vf, row);
-            first[std::size_t(v) + 1] = std::uint32_t(row.size());
-        }
-    }
-    for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-    std::vector<Edge> edges(first[n]);
-#pragma omp parallel
-    {
-        std::vector<std::pair<std::uint32_t, std::uint32_t>> row;
-#pragma omp for schedule(static, 4096)
-        for (std::ptrdiff_t v = 0; v < std::ptrdiff_t(n); ++v) {
-            edges_up_from(std::size_t(v), mesh, vf, row);
-            Edge* e = edges.data() + first[std::size_t(v)];
-            for (const auto& [w, f] : row) *e++ = {std::uint32_t(v), w, f};
-        }
-    }
+    using Row = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+    std::vector<Edge> edges;
+    rows_by_vertex<Row>(
+        mesh.n_vertices(), [&](std::size_t v, Row& row) { edges_up_from(v, mesh, vf, row); },
+        [&](std::size_t total) { edges.resize(total); },
+        [&](std::size_t v, const Row& row, std::uint32_t at) {
+            for (const auto& [w, f] : row) edges[at++] = {std::uint32_t(v), w, f};
+        });
     return edges;
 }
 
