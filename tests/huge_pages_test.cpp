@@ -20,6 +20,7 @@
 #define MESHDIFF_SANITIZED 1
 #endif
 
+#if !defined(MESHDIFF_SANITIZED) && defined(__linux__)
 namespace {
 
 // The VmFlags line of the mapping of /proc/self/smaps that holds \p p, or "".
@@ -48,6 +49,7 @@ struct alignas(64) Wide
 };
 
 }  // namespace
+#endif
 
 TEST(HugePages, LargeBlocksAreAdvisedInThePlainAndTheOverAlignedForm)
 {
