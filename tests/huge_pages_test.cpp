@@ -11,14 +11,7 @@
 #include <string>
 #include <vector>
 
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || __has_feature(thread_sanitizer)
-#define MESHDIFF_SANITIZED 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define MESHDIFF_SANITIZED 1
-#endif
+#include "sanitized.h"  // tools/
 
 #if !defined(MESHDIFF_SANITIZED) && defined(__linux__)
 namespace {

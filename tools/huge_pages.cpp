@@ -19,14 +19,7 @@
 #include <cstdlib>
 #include <new>
 
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || __has_feature(thread_sanitizer)
-#define MESHDIFF_SANITIZED 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-#define MESHDIFF_SANITIZED 1
-#endif
+#include "sanitized.h"
 
 #if defined(__linux__) && !defined(MESHDIFF_SANITIZED)
 #include <sys/mman.h>
