@@ -575,3 +575,26 @@ TEST(Hausdorff, TwoTriangulationsOfOneSurfaceAreCertifiedWithinTheBudget)
         EXPECT_LE(h.upper - h.lower, 1e-4 * h.lower);
     }
 }
+
+// Each thread remembers the bisecting planes of the target's edges it made
+// last (hausdorff_bounds.cpp), by half-edge: a second target with the same
+// faces over other points has the same half-edges and other planes. The
+// pair certified before and after it gives the same interval, the same cuts.
+TEST(Hausdorff, PlanesOfAnotherTargetWithTheSameFacesAreNotReused)
+{
+    const Mesh a = torus_irregular(3000, 1.0, 0.3, 1).mesh;
+    const Mesh b = torus_irregular(3000, 1.0, 0.3, 2).mesh;
+    Mesh stretched = b;  // the same faces; not a similar shape, so not the same planes
+    for (Vec3& p : stretched.points) p = Vec3(1.3 * p.x(), p.y(), 0.8 * p.z());
+    const int threads = omp_get_max_threads();
+    for (const int n : {1, 2}) {
+        omp_set_num_threads(n);
+        const CertifiedHausdorff before = certified_hausdorff(a, b, {});
+        const CertifiedHausdorff other = certified_hausdorff(a, stretched, {});
+        expect_certified(other);
+        const CertifiedHausdorff after = certified_hausdorff(a, b, {});
+        expect_certified(after);
+        expect_same_result(before, after);
+    }
+    omp_set_num_threads(threads);
+}

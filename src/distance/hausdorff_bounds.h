@@ -98,8 +98,11 @@ void descend_point(const Vec3& p, const Triangles& b, const Neighbours& nbr, std
 //! Mesh B as the bounds use it.
 struct BoundsTarget
 {
-    BoundsTarget(const Mesh& m, const ClosestPointIndex& i) : mesh(m), index(i) {}
+    BoundsTarget(const Mesh& m, const ClosestPointIndex& i);
 
+    //! Distinct for every target made in the process (the threads' caches of
+    //! B's bisecting planes are keyed by it: hausdorff_bounds.cpp).
+    const std::uint64_t id;
     const Mesh& mesh;
     const ClosestPointIndex& index;
     std::vector<double> diameter;  //!< longest edge per face
