@@ -6,7 +6,21 @@ namespace meshdiff::detail {
 
 namespace {
 std::atomic<bool> allowed{true};
+
+// The variants this CPU has.
+unsigned cpu_variants()
+{
+#if MESHDIFF_HAVE_AVX512_KERNELS
+    __builtin_cpu_init();  // needed where this runs before main()
+    return (__builtin_cpu_supports("avx2") ? kUseAvx2 : 0u) |
+           (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") ? kUseAvx512 : 0u);
+#else
+    return 0u;
+#endif
+}
 }  // namespace
+
+std::atomic<unsigned> vector_variants{cpu_variants()};
 
 bool cpu_has_avx512()
 {
@@ -16,11 +30,6 @@ bool cpu_has_avx512()
 #else
     return false;
 #endif
-}
-
-bool use_avx512()
-{
-    return cpu_has_avx512() && allowed.load(std::memory_order_relaxed);
 }
 
 bool cpu_has_avx2()
@@ -33,14 +42,11 @@ bool cpu_has_avx2()
 #endif
 }
 
-bool use_avx2()
-{
-    return cpu_has_avx2() && allowed.load(std::memory_order_relaxed);
-}
-
 bool allow_vector_kernels(bool allow)
 {
-    return allowed.exchange(allow);
+    const bool before = allowed.exchange(allow);
+    vector_variants.store(allow ? cpu_variants() : 0u, std::memory_order_relaxed);
+    return before;
 }
 
 }  // namespace meshdiff::detail
