@@ -156,7 +156,7 @@ TEST(PointTriangleX4, LanesAreTheScalarClosestPointsBitForBit)
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::uniform_int_distribution<int> kind(0, 9);
     auto vec = [&] { return Vec3(u(rng), u(rng), u(rng)); };
-    std::size_t compared = 0;
+    std::size_t compared = 0, shared_compared = 0;
     std::array<std::size_t, 7> regions{};
     for (int round = 0; round < 200000; ++round) {
         Vec3 a[4], b[4], c[4], p[4];
@@ -204,6 +204,18 @@ TEST(PointTriangleX4, LanesAreTheScalarClosestPointsBitForBit)
         }
         double d2[4], qx[4], qy[4], qz[4];
         const unsigned masks = detail::closest_points_x4(in, d2, qx, qy, qz);
+        // What the lanes share, read once: the same results to the last bit.
+        for (const auto shared : {detail::SharedX4::kPoint, detail::SharedX4::kTriangle}) {
+            if (shared == detail::SharedX4::kPoint ? !one_point : round % 3 != 0) continue;
+            double e2[4], ex[4], ey[4], ez[4];
+            const unsigned shared_masks = detail::closest_points_x4(in, e2, ex, ey, ez, shared);
+            ASSERT_EQ(shared_masks, masks) << round;
+            ASSERT_EQ(std::memcmp(e2, d2, sizeof d2), 0) << round;
+            ASSERT_EQ(std::memcmp(ex, qx, sizeof qx), 0) << round;
+            ASSERT_EQ(std::memcmp(ey, qy, sizeof qy), 0) << round;
+            ASSERT_EQ(std::memcmp(ez, qz, sizeof qz), 0) << round;
+            ++shared_compared;
+        }
         for (int k = 0; k < 4; ++k) {
             if (detail::is_thin_triangle(a[k], b[k], c[k])) continue;  // never given to the kernel
             const Vec3 q = detail::triangle_point(p[k], a[k], b[k], c[k]);
@@ -227,5 +239,6 @@ TEST(PointTriangleX4, LanesAreTheScalarClosestPointsBitForBit)
         }
     }
     EXPECT_GT(compared, 600000u);
+    EXPECT_GT(shared_compared, 50000u);
     for (unsigned r = detail::kRegionA; r <= detail::kRegionInterior; ++r) EXPECT_GT(regions[r], 1000u) << r;
 }

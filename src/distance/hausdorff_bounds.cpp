@@ -41,7 +41,7 @@ void squared_distances(const Vec3* pts, int n, const Triangle& t, double* d2)
     double qx[4], qy[4], qz[4];
     for (int i0 = 0; i0 < n; i0 += 4) {
         for (int k = 0; k < 4; ++k) in.p[k] = pts[std::min(i0 + k, n - 1)].data();
-        closest_points_x4(in, d2 + i0, qx, qy, qz);
+        closest_points_x4(in, d2 + i0, qx, qy, qz, SharedX4::kTriangle);
     }
 }
 

@@ -227,7 +227,7 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
             in.c[k] = t.c.data();
         }
         double d2[4], qx[4], qy[4], qz[4];
-        const unsigned masks = detail::closest_points_x4(in, d2, qx, qy, qz);
+        const unsigned masks = detail::closest_points_x4(in, d2, qx, qy, qz, detail::SharedX4::kPoint);
         for (std::uint32_t i = 0; i < count; ++i) {
             if (tris[first + i].thin) {
                 consider(first + i);

@@ -15,6 +15,10 @@ MESHDIFF_AVX2 inline V lanes(const double* const* s, int k)
 {
     return _mm256_setr_pd(s[0][k], s[1][k], s[2][k], s[3][k]);
 }
+MESHDIFF_AVX2 inline V all(const double* s, int k)
+{
+    return _mm256_broadcast_sd(s + k);
+}
 MESHDIFF_AVX2 inline V sub(V x, V y)
 {
     return _mm256_sub_pd(x, y);
@@ -76,14 +80,13 @@ MESHDIFF_AVX2 inline V dot(const V3& u, const V3& v)
 }
 }  // namespace
 
+namespace {
 // detail::triangle_point(), lane by lane: the same expressions, the region
 // tests in the same order (a lane takes the first region whose test holds).
-MESHDIFF_AVX2 unsigned closest_points_x4(const PairsX4& in, double d2[4], double qx[4], double qy[4], double qz[4])
+MESHDIFF_AVX2 inline __attribute__((always_inline)) unsigned kernel(const V3& p, const V3& a, const V3& b, const V3& c,
+                                                                    double d2[4], double qx[4], double qy[4],
+                                                                    double qz[4])
 {
-    const V3 p{lanes(in.p, 0), lanes(in.p, 1), lanes(in.p, 2)};
-    const V3 a{lanes(in.a, 0), lanes(in.a, 1), lanes(in.a, 2)};
-    const V3 b{lanes(in.b, 0), lanes(in.b, 1), lanes(in.b, 2)};
-    const V3 c{lanes(in.c, 0), lanes(in.c, 1), lanes(in.c, 2)};
     const V zero = _mm256_setzero_pd();
 
     const V3 ab = minus(b, a), ac = minus(c, a), ap = minus(p, a);
@@ -132,11 +135,35 @@ MESHDIFF_AVX2 unsigned closest_points_x4(const PairsX4& in, double d2[4], double
            unsigned(_mm256_movemask_pd(in_bc)) << (4 * kRegionBC);
 }
 
+MESHDIFF_AVX2 inline V3 gathered(const double* const* s)
+{
+    return {lanes(s, 0), lanes(s, 1), lanes(s, 2)};
+}
+MESHDIFF_AVX2 inline V3 broadcast(const double* s)
+{
+    return {all(s, 0), all(s, 1), all(s, 2)};
+}
+}  // namespace
+
+MESHDIFF_AVX2 unsigned closest_points_x4(const PairsX4& in, double d2[4], double qx[4], double qy[4], double qz[4],
+                                         SharedX4 shared)
+{
+    switch (shared) {
+        case SharedX4::kPoint:
+            return kernel(broadcast(in.p[0]), gathered(in.a), gathered(in.b), gathered(in.c), d2, qx, qy, qz);
+        case SharedX4::kTriangle:
+            return kernel(gathered(in.p), broadcast(in.a[0]), broadcast(in.b[0]), broadcast(in.c[0]), d2, qx, qy, qz);
+        case SharedX4::kNothing:
+            break;
+    }
+    return kernel(gathered(in.p), gathered(in.a), gathered(in.b), gathered(in.c), d2, qx, qy, qz);
+}
+
 }  // namespace meshdiff::detail
 
 #else
 namespace meshdiff::detail {
-unsigned closest_points_x4(const PairsX4&, double*, double*, double*, double*)
+unsigned closest_points_x4(const PairsX4&, double*, double*, double*, double*, SharedX4)
 {
     return 0;
 }

@@ -42,7 +42,20 @@ enum : unsigned
 //! from kRegionA to kRegionBC (bit 4 r + k: lane k lies in region r; a lane in
 //! none lies in the interior); see lane_region(). Only where use_avx2()
 //! (compiled on x86-64 with GCC or Clang; elsewhere never called).
-unsigned closest_points_x4(const PairsX4& in, double d2[4], double qx[4], double qy[4], double qz[4]);
+//!
+//! \p shared: what the four lanes share, read once and broadcast rather than
+//! gathered lane by lane (the same values, so the same results): nothing, the
+//! point in.p[0] (a query against a leaf's triangles), or the triangle
+//! in.a[0], in.b[0], in.c[0] (corners of a cell against one triangle); the
+//! other lanes' pointers of what is shared are not read.
+enum class SharedX4
+{
+    kNothing,
+    kPoint,
+    kTriangle
+};
+unsigned closest_points_x4(const PairsX4& in, double d2[4], double qx[4], double qy[4], double qz[4],
+                           SharedX4 shared = SharedX4::kNothing);
 
 //! Lane \p lane's region (kRegionA .. kRegionInterior) from the masks
 //! closest_points_x4() returned.
