@@ -24,22 +24,14 @@ std::atomic<unsigned> vector_variants{cpu_variants()};
 
 bool cpu_has_avx512()
 {
-#if MESHDIFF_HAVE_AVX512_KERNELS
-    static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw");
+    static const bool has = (cpu_variants() & kUseAvx512) != 0;
     return has;
-#else
-    return false;
-#endif
 }
 
 bool cpu_has_avx2()
 {
-#if MESHDIFF_HAVE_AVX512_KERNELS
-    static const bool has = __builtin_cpu_supports("avx2");
+    static const bool has = (cpu_variants() & kUseAvx2) != 0;
     return has;
-#else
-    return false;
-#endif
 }
 
 bool allow_vector_kernels(bool allow)
