@@ -245,15 +245,16 @@ double piece_bound(const Piece& q, std::uint32_t t, int depth, double goal, cons
     // (then only that is used): the largest of all otherwise, in the order
     // of one pass.
     std::array<double, kMaxPiece> d2;
-    double v2 = 0.0;
+    double v2 = 0.0, v = 0.0;
     bool above = false;
     for (int i0 = 0; i0 < q.n && !above; i0 += 4) {
         const int k = std::min(4, q.n - i0);
         squared_distances(q.p.data() + i0, k, tris[t], d2.data() + i0);
         for (int i = i0; i < i0 + k; ++i) v2 = std::max(v2, d2[std::size_t(i)]);
-        above = !(std::sqrt(v2) <= goal);
+        v = std::sqrt(v2);
+        above = !(v <= goal);
     }
-    if (!above) return std::sqrt(v2);
+    if (!above) return v;
     if (depth == 0) return kInf;
     for (std::size_t k = 0; k < 3; ++k) {
         const std::uint32_t t2 = nbr[t][k];
