@@ -669,3 +669,44 @@ TEST(PseudoNormals, MadeWithoutFaceNormalsTheyAreTheSame)
     EXPECT_EQ(r1, r2);
     EXPECT_FALSE(r1.empty());
 }
+
+// The sign of a point over a face's interior without the normal's
+// normalisation is that of the normalised product in every case: points far
+// from the plane, points a few units in the last place from it (where the
+// unnormalised product is not certain and the normalised one decides),
+// points on it, and meshes at extreme scales. The reference is the
+// normalised product itself (unit_face_normal()).
+TEST(SignedDistance, InteriorSignIsTheNormalisedProductsSign)
+{
+    const auto reference = [](bool flipped, const Vec3& d, const Vec3& a, const Vec3& b, const Vec3& c) {
+        const double s = d.dot(unit_face_normal(flipped, a, b, c));
+        return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
+    };
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::size_t near = 0, zeros = 0, checked = 0;
+    for (const double scale : {1e-160, 1e-80, 1e-3, 1.0, 1e3, 1e80, 1e160}) {
+        for (int i = 0; i < 20000; ++i) {
+            const Vec3 a(u(rng), u(rng), u(rng)), b(u(rng), u(rng), u(rng)), c(u(rng), u(rng), u(rng));
+            const Vec3 n = (b - a).cross(c - a);
+            if (!(n.norm() > 1e-3)) continue;
+            // In-plane part plus an offset along the normal from 1 down to a
+            // few units in the last place of the in-plane part (and zero).
+            const Vec3 inplane = u(rng) * (b - a) + u(rng) * (c - a);
+            const int k = i % 20;
+            const double off = k == 19 ? 0.0 : std::ldexp(u(rng), -3 * k);
+            const Vec3 d = scale * (inplane + off * n.normalized());
+            for (const bool flipped : {false, true}) {
+                const int want = reference(flipped, d, scale * a, scale * b, scale * c);
+                ASSERT_EQ(detail::interior_sign(flipped, d, scale * a, scale * b, scale * c), want)
+                    << "scale " << scale << " offset " << off << " flipped " << flipped;
+                ++checked;
+                zeros += want == 0;
+            }
+            near += k >= 14;
+        }
+    }
+    EXPECT_GT(checked, std::size_t(200000));
+    EXPECT_GT(near, std::size_t(1000));  // the uncertain band was visited
+    EXPECT_GT(zeros, std::size_t(0));
+}

@@ -344,6 +344,9 @@ int sign_at(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p, std::
     double s = 0.0;
     if (c.kind == FeatureKind::Vertex) {
         s = d.dot(normals.vertex[std::size_t(mesh.faces[face][c.index])]);
+    } else if (c.kind == FeatureKind::Interior && normals.face.empty()) {
+        const auto [a, b, cc] = corners(face);
+        return detail::interior_sign(normals.flipped, d, a, b, cc);
     } else {
         const Vec3 nf = normal(face);
         s = c.kind == FeatureKind::Interior ? d.dot(nf)
