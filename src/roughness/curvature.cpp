@@ -293,24 +293,24 @@ void gather_jet_neighbourhood(std::size_t v, const Mesh& mesh, const Adjacency& 
     }
 }
 
-// The jet fit (curvature.h). Returns Cubic, or Quadric when the cubic jet was
-// rank-deficient and the degree-2 jet gave H.
+// The jet fit's system of v (curvature.h) into s.M and s.rhs: its row count
+// and 1 / h, or false where h is not > 0 (the fit fails).
 template <class Buffers>
-FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::vector<std::uint32_t>& nbrs, Buffers& s,
-                   double& H, bool& steep)
+bool jet_system(std::size_t v, const Mesh& mesh, const Vec3& N, const std::vector<std::uint32_t>& nbrs, Buffers& s,
+                Eigen::Index& rows, double& inv_h)
 {
     const Vec3& p = mesh.points[v];
     const std::pair<Vec3, Vec3> frame = tangent_frame(N);
-    const Vec3 &u = frame.first, &w = frame.second;  // named: lambdas capture them (C++17)
+    const Vec3 &u = frame.first, &w = frame.second;
     const double h = mean_distance(mesh, p, nbrs);
-    if (!(h > 0.0)) return FitResult::Failed;
-    const double inv_h = 1.0 / h;
+    if (!(h > 0.0)) return false;
+    inv_h = 1.0 / h;
     s.M.resize(Eigen::Index(nbrs.size()), kJetColumns);
     s.rhs.resize(Eigen::Index(nbrs.size()));
     // One row per neighbour, scaled by 1 / |d|^4 (d in units of h); the jet
     // passes through the vertex (no constant term). A neighbour on the vertex
     // itself (a duplicated point) says nothing and is left out.
-    Eigen::Index rows = 0;
+    rows = 0;
     for (auto q : nbrs) {
         const Vec3 d = (mesh.points[q] - p) * inv_h;
         const double d2 = d.squaredNorm();
@@ -320,6 +320,18 @@ FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::ve
         s.M.row(rows) *= wt;
         s.rhs(rows++) = wt * d.dot(N);
     }
+    return true;
+}
+
+// The jet fit's result from its system (jet_system()): the cubic jet of the
+// normal equations' solution J where it was solved and gives a finite H,
+// else the QR's (the cubic jet, then the degree-2 jet on its first 5
+// columns). Returns Cubic, or Quadric when the cubic jet was rank-deficient
+// and the degree-2 jet gave H.
+template <class Buffers>
+FitResult jet_result(Buffers& s, Eigen::Index rows, double inv_h, const std::array<double, kJetColumns>* J, double& H,
+                     bool& steep)
+{
     // H and the steep flag from the jet's first 5 coefficients; false if H is not finite.
     auto mean_curvature_of = [&](double fx, double fy, double fxx_2, double fxy, double fyy_2) {
         const double fxx = 2.0 * fxx_2, fyy = 2.0 * fyy_2;
@@ -331,26 +343,33 @@ FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::ve
         steep = fx * fx + fy * fy > kJetSteepSlope * kJetSteepSlope;
         return true;
     };
-    // Well conditioned (nearly every fit): the cubic jet by normal equations;
-    // else, or if H is not finite, the QR decides as before.
-    if (rows >= kJetColumns) {
-        std::array<double, kJetColumns> J;
-        if (detail::solve_by_normal_equations<kJetColumns>(s.M.topRows(rows), s.rhs.head(rows), kJetRankThreshold, J) &&
-            mean_curvature_of(J[0], J[1], J[2], J[3], J[4]))
-            return FitResult::Cubic;
-    }
-    // The cubic jet, then the degree-2 jet on its first 5 columns.
+    if (J && mean_curvature_of((*J)[0], (*J)[1], (*J)[2], (*J)[3], (*J)[4])) return FitResult::Cubic;
     for (const Eigen::Index cols : {Eigen::Index(kJetColumns), Eigen::Index(5)}) {
         if (rows < cols) continue;
         auto& qr = s.qr;
         qr.setThreshold(kJetRankThreshold);
         qr.compute(s.M.topLeftCorner(rows, cols));
         if (qr.rank() < cols) continue;
-        const Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kJetColumns, 1> J = qr.solve(s.rhs.head(rows));
-        if (!mean_curvature_of(J(0), J(1), J(2), J(3), J(4))) continue;
+        const Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, kJetColumns, 1> X = qr.solve(s.rhs.head(rows));
+        if (!mean_curvature_of(X(0), X(1), X(2), X(3), X(4))) continue;
         return cols == kJetColumns ? FitResult::Cubic : FitResult::Quadric;
     }
     return FitResult::Failed;
+}
+
+// The jet fit (curvature.h): its system, solved by normal equations where
+// well conditioned (nearly every fit), else (or if H is not finite) by the QR.
+template <class Buffers>
+FitResult jet_with(std::size_t v, const Mesh& mesh, const Vec3& N, const std::vector<std::uint32_t>& nbrs, Buffers& s,
+                   double& H, bool& steep)
+{
+    Eigen::Index rows = 0;
+    double inv_h = 0.0;
+    if (!jet_system(v, mesh, N, nbrs, s, rows, inv_h)) return FitResult::Failed;
+    std::array<double, kJetColumns> J;
+    const bool solved = rows >= kJetColumns && detail::solve_by_normal_equations<kJetColumns>(
+                                                   s.M.topRows(rows), s.rhs.head(rows), kJetRankThreshold, J);
+    return jet_result(s, rows, inv_h, solved ? &J : nullptr, H, steep);
 }
 
 FitResult fit_vertex(std::size_t v, const Mesh& mesh, const std::vector<Vec3>& normals, const CurvatureOptions& opt,
@@ -383,32 +402,98 @@ CurvatureField fitted_curvature(const Mesh& mesh, const Adjacency& adj, const st
             hubs.trees.emplace_back(mesh.points, adj.begin(v), adj.end(v));
         }
     detail::StageProgress stage("curvature", n);
+    // A fit's outcome into the field.
+    auto record = [&](std::size_t v, FitResult r, double H, bool widened, bool capped, bool dropped, bool steep) {
+        if (r == FitResult::Failed) return;
+        field.H[v] = H;
+        how[v] = static_cast<unsigned char>((widened ? 1 : 0) | (cubic && r == FitResult::Quadric ? 2 : 0) |
+                                            (capped ? 8 : 0) | (dropped ? 16 : 0) | (steep ? 32 : 0));
+    };
+    // With AVX2, the jet fits' normal equations four vertices at a time (the
+    // lanes of solve_by_normal_equations_x4(): the factorisation and the
+    // triangular solves are chains of dependent steps, which four fits run
+    // side by side); every H the same to the last bit as one at a time.
+#if defined(__x86_64__)
+    const bool x4 = jet && detail::use_avx2();
+#else
+    const bool x4 = false;
+#endif
 #pragma omp parallel
     {
         FitScratch s;
         s.stamp.assign(n, 0u);
-#pragma omp for schedule(dynamic, 1024)
-        for (std::ptrdiff_t iv = 0; iv < std::ptrdiff_t(n); ++iv) {
-            const auto v = std::size_t(iv);
-            if (!stage.tick()) continue;
-            if (normals[v].squaredNorm() == 0.0) {
-                how[v] = 4;
-                continue;
+        // The pending fits of a group: their systems (one buffer each), rows and 1 / h.
+        struct Pending
+        {
+            std::size_t v;
+            Eigen::Index rows;
+            double inv_h;
+            bool widened, capped;
+        };
+        std::array<Pending, 4> pending{};
+        std::array<std::unique_ptr<JetBuffers<int(kMaxFitNeighbors)>>, 4> lanes;
+        if (x4)
+            for (auto& b : lanes) b = std::make_unique<JetBuffers<int(kMaxFitNeighbors)>>();
+        constexpr std::ptrdiff_t kGroup = 4;
+        const std::ptrdiff_t groups = (std::ptrdiff_t(n) + kGroup - 1) / kGroup;
+#pragma omp for schedule(dynamic, 256)
+        for (std::ptrdiff_t ig = 0; ig < groups; ++ig) {
+            int waiting = 0;
+            for (std::ptrdiff_t iv = ig * kGroup; iv < std::min(std::ptrdiff_t(n), (ig + 1) * kGroup); ++iv) {
+                const auto v = std::size_t(iv);
+                if (!stage.tick()) continue;
+                if (normals[v].squaredNorm() == 0.0) {
+                    how[v] = 4;
+                    continue;
+                }
+                bool widened = false, capped = false;
+                if (jet)
+                    gather_jet_neighbourhood(v, mesh, adj, hubs, s, widened, capped);
+                else
+                    gather_neighbourhood(v, mesh, adj, hubs, opt.min_neighbors, s, widened, capped);
+                if (capped) how[v] = 8;
+                if (s.nbrs.size() < 3) continue;
+                double H = kNaN;
+                bool dropped = false, steep = false;
+                if (x4 && s.nbrs.size() <= kMaxFitNeighbors) {
+                    Pending& f = pending[std::size_t(waiting)];
+                    auto& b = *lanes[std::size_t(waiting)];
+                    f = {v, 0, 0.0, widened, capped};
+                    if (!jet_system(v, mesh, normals[v], s.nbrs, b, f.rows, f.inv_h)) continue;
+                    if (f.rows >= kJetColumns) {
+                        ++waiting;
+                        continue;
+                    }
+                    record(v, jet_result(b, f.rows, f.inv_h, nullptr, H, steep), H, widened, capped, false, steep);
+                    continue;
+                }
+                const FitResult r = fit_vertex(v, mesh, normals, opt, cubic, s, H, dropped, steep);
+                record(v, r, H, widened, capped, dropped, steep);
             }
-            bool widened = false, capped = false;
-            if (jet)
-                gather_jet_neighbourhood(v, mesh, adj, hubs, s, widened, capped);
-            else
-                gather_neighbourhood(v, mesh, adj, hubs, opt.min_neighbors, s, widened, capped);
-            if (capped) how[v] = 8;
-            if (s.nbrs.size() < 3) continue;
-            double H = kNaN;
-            bool dropped = false, steep = false;
-            const FitResult r = fit_vertex(v, mesh, normals, opt, cubic, s, H, dropped, steep);
-            if (r == FitResult::Failed) continue;
-            field.H[v] = H;
-            how[v] = static_cast<unsigned char>((widened ? 1 : 0) | (cubic && r == FitResult::Quadric ? 2 : 0) |
-                                                (capped ? 8 : 0) | (dropped ? 16 : 0) | (steep ? 32 : 0));
+#if defined(__x86_64__)
+            if (waiting == 0) continue;
+            using Rows = decltype(lanes[0]->M.topRows(1));
+            using Rhs = decltype(lanes[0]->rhs.head(1));
+            // The systems waiting; an idle lane (not read) repeats the first.
+            const auto at = [&](int l) { return std::size_t(l < waiting ? l : 0); };
+            auto rows_of = [&](int l) { return lanes[at(l)]->M.topRows(pending[at(l)].rows); };
+            auto rhs_of = [&](int l) { return lanes[at(l)]->rhs.head(pending[at(l)].rows); };
+            std::array<Rows, 4> M{rows_of(0), rows_of(1), rows_of(2), rows_of(3)};
+            std::array<Rhs, 4> b{rhs_of(0), rhs_of(1), rhs_of(2), rhs_of(3)};
+            const Rows* Mp[4] = {&M[0], &M[1], &M[2], &M[3]};
+            const Rhs* bp[4] = {&b[0], &b[1], &b[2], &b[3]};
+            std::array<std::array<double, kJetColumns>, 4> J;
+            const unsigned solved =
+                detail::solve_by_normal_equations_x4<kJetColumns>(Mp, bp, waiting, kJetRankThreshold, J.data());
+            for (int l = 0; l < waiting; ++l) {
+                const Pending& f = pending[std::size_t(l)];
+                double H = kNaN;
+                bool steep = false;
+                const FitResult r = jet_result(*lanes[std::size_t(l)], f.rows, f.inv_h,
+                                               solved >> l & 1u ? &J[std::size_t(l)] : nullptr, H, steep);
+                record(f.v, r, H, f.widened, f.capped, false, steep);
+            }
+#endif
         }
     }
     stage.finish();

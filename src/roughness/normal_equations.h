@@ -44,6 +44,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace meshdiff::detail {
@@ -80,6 +81,53 @@ __attribute__((target("avx2"))) void gram_avx2(const MatrixType& M, const Vector
 }
 #endif
 
+//! The lower triangle of M^T M into G and M^T b into c (both zero on entry),
+//! row by row in row order: with AVX2 by gram_avx2(), else by plain loops,
+//! the same sums to the last bit.
+template <int C, class MatrixType, class VectorType>
+void gram(const MatrixType& M, const VectorType& b, std::array<std::array<double, C>, C>& G, std::array<double, C>& c)
+{
+#if defined(__x86_64__)
+    if (use_avx2()) {
+        gram_avx2<C>(M, b, G, c);
+        return;
+    }
+#endif
+    for (Eigen::Index i = 0; i < M.rows(); ++i) {
+        std::array<double, C> m;
+        for (int j = 0; j < C; ++j) m[j] = M(i, j);
+        const double bi = b(i);
+        for (int j = 0; j < C; ++j) {
+            c[j] += m[j] * bi;
+            for (int k = 0; k <= j; ++k) G[j][k] += m[j] * m[k];
+        }
+    }
+}
+
+//! The right-hand side of the refinement step, M^T (b - M x), into rc (zero
+//! on entry): the residual from M (the rows independent of each other, so
+//! first all of them), then M^T residual in row order.
+template <int C, class MatrixType, class VectorType>
+void refinement_rhs(const MatrixType& M, const VectorType& b, const std::array<double, C>& x, std::array<double, C>& rc)
+{
+    const Eigen::Index rows = M.rows();
+    constexpr Eigen::Index kRowsOnStack = 256;
+    std::array<double, kRowsOnStack> residual_on_stack;
+    std::vector<double> residual_on_heap;
+    double* res = residual_on_stack.data();
+    if (rows > kRowsOnStack) {
+        residual_on_heap.resize(std::size_t(rows));
+        res = residual_on_heap.data();
+    }
+    for (Eigen::Index i = 0; i < rows; ++i) {
+        double r = b(i);
+        for (int j = 0; j < C; ++j) r -= M(i, j) * x[j];
+        res[i] = r;
+    }
+    for (Eigen::Index i = 0; i < rows; ++i)
+        for (int j = 0; j < C; ++j) rc[j] += M(i, j) * res[i];
+}
+
 //! Solves min |M x - b| (M: rows x C, rows >= C) into x, or returns false when
 //! the system is not certainly well conditioned (see the file comment).
 template <int C, class MatrixType, class VectorType>
@@ -91,20 +139,7 @@ bool solve_by_normal_equations(const Eigen::MatrixBase<MatrixType>& M, const Eig
     // Lower triangle of M^T M and M^T b.
     std::array<std::array<double, C>, C> G{};
     std::array<double, C> c{};
-#if defined(__x86_64__)
-    if (use_avx2())
-        gram_avx2<C>(M, b, G, c);
-    else
-#endif
-        for (Eigen::Index i = 0; i < rows; ++i) {
-            std::array<double, C> m;
-            for (int j = 0; j < C; ++j) m[j] = M(i, j);
-            const double bi = b(i);
-            for (int j = 0; j < C; ++j) {
-                c[j] += m[j] * bi;
-                for (int k = 0; k <= j; ++k) G[j][k] += m[j] * m[k];
-            }
-        }
+    gram<C>(M, b, G, c);
     // Equilibration: column norms d_j, scale s_j = 1 / d_j.
     std::array<double, C> s;
     double d_min = 0.0, d_max = 0.0;
@@ -168,28 +203,158 @@ bool solve_by_normal_equations(const Eigen::MatrixBase<MatrixType>& M, const Eig
         for (int i = 0; i < C; ++i) out[i] = y[i] * s[i];
     };
     solve(c, x);
-    // One refinement step: the residual from M (the rows independent of
-    // each other, so first all of them), then M^T residual in row order.
-    constexpr Eigen::Index kRowsOnStack = 256;
-    std::array<double, kRowsOnStack> residual_on_stack;
-    std::vector<double> residual_on_heap;
-    double* res = residual_on_stack.data();
-    if (rows > kRowsOnStack) {
-        residual_on_heap.resize(std::size_t(rows));
-        res = residual_on_heap.data();
-    }
-    for (Eigen::Index i = 0; i < rows; ++i) {
-        double r = b(i);
-        for (int j = 0; j < C; ++j) r -= M(i, j) * x[j];
-        res[i] = r;
-    }
+    // One refinement step.
     std::array<double, C> rc{};
-    for (Eigen::Index i = 0; i < rows; ++i)
-        for (int j = 0; j < C; ++j) rc[j] += M(i, j) * res[i];
+    refinement_rhs<C>(M, b, x, rc);
     std::array<double, C> dx;
     solve(rc, dx);
     for (int j = 0; j < C; ++j) x[j] += dx[j];
     return true;
 }
+
+#if defined(__x86_64__)
+//! Four systems' factors for solve_by_normal_equations_x4(), lane l of each
+//! entry being system l's.
+template <int C>
+struct NormalEquationsX4
+{
+    alignas(32) double G[C][C][4];  //!< in: the Gram matrices' lower triangles (gram())
+    alignas(32) double c[C][4];     //!< in: M^T b
+    alignas(32) double s[C][4];
+    alignas(32) double L[C][C][4];
+    alignas(32) double rd[C][4];
+    alignas(32) double x[C][4];  //!< out: the first solution
+};
+
+//! out = S (L L^T)^-1 S rhs on the four lanes of f's factors, as the scalar
+//! solve does it.
+template <int C>
+__attribute__((target("avx2"))) void solve_x4(const NormalEquationsX4<C>& f, const double (&rhs)[C][4],
+                                              double (&out)[C][4])
+{
+    using V = __m256d;
+    V y[C];
+    for (int i = 0; i < C; ++i) {
+        V v = _mm256_mul_pd(_mm256_load_pd(rhs[i]), _mm256_load_pd(f.s[i]));
+        for (int k = 0; k < i; ++k) v = _mm256_sub_pd(v, _mm256_mul_pd(_mm256_load_pd(f.L[i][k]), y[k]));
+        y[i] = _mm256_mul_pd(v, _mm256_load_pd(f.rd[i]));
+    }
+    for (int i = C - 1; i >= 0; --i) {
+        V v = y[i];
+        for (int k = i + 1; k < C; ++k) v = _mm256_sub_pd(v, _mm256_mul_pd(_mm256_load_pd(f.L[k][i]), y[k]));
+        y[i] = _mm256_mul_pd(v, _mm256_load_pd(f.rd[i]));
+    }
+    for (int i = 0; i < C; ++i) _mm256_store_pd(out[i], _mm256_mul_pd(y[i], _mm256_load_pd(f.s[i])));
+}
+
+//! The steps of solve_by_normal_equations() after the Gram matrix, for four
+//! systems at once, one in each lane of the AVX2 registers: the same
+//! operations in the same order on each lane as the scalar code makes
+//! (multiplications, additions, subtractions, divisions and square roots, no
+//! fused ones: the same bits), the declines as a lane mask instead of
+//! returns. Returns the lanes whose systems are well conditioned; their
+//! first solution is in f.x.
+template <int C>
+__attribute__((target("avx2"))) unsigned factor_and_solve_x4(NormalEquationsX4<C>& f, double rank_threshold)
+{
+    using V = __m256d;
+    const V one = _mm256_set1_pd(1.0), zero = _mm256_setzero_pd();
+    V ok = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+    // Equilibration.
+    V d_min = zero, d_max = zero;
+    for (int j = 0; j < C; ++j) {
+        const V g = _mm256_load_pd(f.G[j][j]);
+        ok = _mm256_and_pd(
+            ok, _mm256_and_pd(_mm256_cmp_pd(g, zero, _CMP_GT_OQ),
+                              _mm256_cmp_pd(g, _mm256_set1_pd(std::numeric_limits<double>::infinity()), _CMP_LT_OQ)));
+        const V d = _mm256_sqrt_pd(g);
+        _mm256_store_pd(f.s[j], _mm256_div_pd(one, d));
+        // std::min(d_min, d) and std::max(d_max, d): d < d_min ? d : d_min, d_max < d ? d : d_max.
+        d_min = j == 0 ? d : _mm256_min_pd(d, d_min);
+        d_max = _mm256_max_pd(d, d_max);
+    }
+    // Cholesky.
+    for (int j = 0; j < C; ++j) {
+        V djj = one;
+        for (int k = 0; k < j; ++k)
+            djj = _mm256_sub_pd(djj, _mm256_mul_pd(_mm256_load_pd(f.L[j][k]), _mm256_load_pd(f.L[j][k])));
+        ok = _mm256_and_pd(ok, _mm256_cmp_pd(djj, zero, _CMP_GT_OQ));
+        const V ljj = _mm256_sqrt_pd(djj);
+        _mm256_store_pd(f.L[j][j], ljj);
+        const V rdj = _mm256_div_pd(one, ljj);
+        _mm256_store_pd(f.rd[j], rdj);
+        for (int i = j + 1; i < C; ++i) {
+            V v =
+                _mm256_mul_pd(_mm256_mul_pd(_mm256_load_pd(f.G[i][j]), _mm256_load_pd(f.s[i])), _mm256_load_pd(f.s[j]));
+            for (int k = 0; k < j; ++k)
+                v = _mm256_sub_pd(v, _mm256_mul_pd(_mm256_load_pd(f.L[i][k]), _mm256_load_pd(f.L[j][k])));
+            _mm256_store_pd(f.L[i][j], _mm256_mul_pd(v, rdj));
+        }
+    }
+    // |L^-1|_F^2.
+    alignas(32) double inv[C][C][4];
+    for (int j = 0; j < C; ++j) _mm256_store_pd(inv[j][j], _mm256_load_pd(f.rd[j]));
+    for (int i = 1; i < C; ++i)
+        for (int j = 0; j < i; ++j) {
+            V v = zero;
+            for (int k = j; k < i; ++k)
+                v = _mm256_sub_pd(v, _mm256_mul_pd(_mm256_load_pd(f.L[i][k]), _mm256_load_pd(inv[j][k])));
+            _mm256_store_pd(inv[j][i], _mm256_mul_pd(v, _mm256_load_pd(f.rd[i])));
+        }
+    V inv_norm2 = zero;
+    for (int j = 0; j < C; ++j)
+        for (int i = j; i < C; ++i)
+            inv_norm2 = _mm256_add_pd(inv_norm2, _mm256_mul_pd(_mm256_load_pd(inv[j][i]), _mm256_load_pd(inv[j][i])));
+    ok = _mm256_and_pd(
+        ok, _mm256_cmp_pd(_mm256_mul_pd(_mm256_set1_pd(double(C)), inv_norm2),
+                          _mm256_set1_pd(kNormalEquationsMaxCondition * kNormalEquationsMaxCondition), _CMP_LE_OQ));
+    const V rank_bound =
+        _mm256_div_pd(_mm256_mul_pd(_mm256_set1_pd(kNormalEquationsRankMargin / rank_threshold), d_min), d_max);
+    ok = _mm256_and_pd(ok, _mm256_cmp_pd(inv_norm2, _mm256_mul_pd(rank_bound, rank_bound), _CMP_LE_OQ));
+    solve_x4(f, f.c, f.x);
+    return unsigned(_mm256_movemask_pd(ok));
+}
+
+//! solve_by_normal_equations() of up to four systems (M[l], b[l]: l < n,
+//! each rows >= C) at once, the latency-bound steps (the factorisation, the
+//! inverse's norm, the triangular solves) on the lanes of AVX2 registers:
+//! bit l of the result set, and x[l] written, exactly where the scalar
+//! solve would return true, with the same x to the last bit. Needs AVX2
+//! (use_avx2()).
+template <int C, class MatrixType, class VectorType>
+unsigned solve_by_normal_equations_x4(const MatrixType* const* M, const VectorType* const* b, int n,
+                                      double rank_threshold, std::array<double, C>* x)
+{
+    NormalEquationsX4<C> f;
+    for (int l = 0; l < 4; ++l) {
+        std::array<std::array<double, C>, C> G{};
+        std::array<double, C> c{};
+        if (l < n) {
+            gram<C>(*M[l], *b[l], G, c);
+        } else {
+            for (int j = 0; j < C; ++j) G[j][j] = 1.0;  // an idle lane: the identity
+        }
+        for (int j = 0; j < C; ++j) {
+            f.c[j][l] = c[j];
+            for (int k = 0; k < C; ++k) f.G[j][k][l] = k <= j ? G[j][k] : 0.0;
+        }
+    }
+    const unsigned ok = factor_and_solve_x4<C>(f, rank_threshold) & ((1u << n) - 1u);
+    alignas(32) double rc[C][4] = {};
+    for (int l = 0; l < n; ++l) {
+        if (!(ok >> l & 1u)) continue;
+        for (int j = 0; j < C; ++j) x[l][std::size_t(j)] = f.x[j][l];
+        std::array<double, C> r{};
+        refinement_rhs<C>(*M[l], *b[l], x[l], r);
+        for (int j = 0; j < C; ++j) rc[j][l] = r[std::size_t(j)];
+    }
+    alignas(32) double dx[C][4];
+    solve_x4(f, rc, dx);
+    for (int l = 0; l < n; ++l)
+        if (ok >> l & 1u)
+            for (int j = 0; j < C; ++j) x[l][std::size_t(j)] += dx[j][l];
+    return ok;
+}
+#endif
 
 }  // namespace meshdiff::detail
