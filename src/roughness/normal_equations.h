@@ -61,17 +61,20 @@ __attribute__((target("avx2"))) void gram_avx2(const MatrixType& M, const Vector
     constexpr int P = (C + 3) / 4 * 4;
     alignas(32) double g[C][P] = {};
     alignas(32) double cc[P] = {};
-    alignas(32) double m[P] = {};
     for (Eigen::Index i = 0; i < M.rows(); ++i) {
-        for (int j = 0; j < C; ++j) m[j] = M(i, j);
+        // The row in registers, made from its entries (not stored and loaded
+        // back: a load of four separate stores waits for them), zero beyond C.
+        __m256d m[P / 4];
+        for (int q = 0; q < P; q += 4)
+            m[q / 4] = _mm256_set_pd(q + 3 < C ? M(i, q + 3) : 0.0, q + 2 < C ? M(i, q + 2) : 0.0,
+                                     q + 1 < C ? M(i, q + 1) : 0.0, M(i, q));
         const __m256d bi = _mm256_set1_pd(b(i));
         for (int q = 0; q < P; q += 4)
-            _mm256_store_pd(cc + q, _mm256_add_pd(_mm256_load_pd(cc + q), _mm256_mul_pd(_mm256_load_pd(m + q), bi)));
+            _mm256_store_pd(cc + q, _mm256_add_pd(_mm256_load_pd(cc + q), _mm256_mul_pd(m[q / 4], bi)));
         for (int j = 0; j < C; ++j) {
-            const __m256d mj = _mm256_set1_pd(m[j]);
+            const __m256d mj = _mm256_set1_pd(M(i, j));
             for (int q = 0; q <= j; q += 4)
-                _mm256_store_pd(g[j] + q,
-                                _mm256_add_pd(_mm256_load_pd(g[j] + q), _mm256_mul_pd(mj, _mm256_load_pd(m + q))));
+                _mm256_store_pd(g[j] + q, _mm256_add_pd(_mm256_load_pd(g[j] + q), _mm256_mul_pd(mj, m[q / 4])));
         }
     }
     for (int j = 0; j < C; ++j) {
