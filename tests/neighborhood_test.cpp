@@ -611,3 +611,76 @@ TEST(ParallelSort, DistinctElementsComeOutAsStdSortsAtAnyThreadCount)
     }
     omp_set_num_threads(saved);
 }
+
+// A level's streamed statistics are those of a loop over that level's
+// centres in batch order, to the last bit: each level's compensated sums take
+// the batch's centres in their order (the levels of a centre are folded
+// together, their sums interleaved), its head the same vertices; weighted and
+// unweighted, with undefined means at some levels.
+TEST(LevelStream, EachLevelsSumsAreThoseOfItsOwnLoopBitForBit)
+{
+    constexpr std::size_t kLevels = 5, kStride = 128, kBatches = 3, n = kBatches * 100;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<double> values(n), weights(n);
+    for (std::size_t v = 0; v < n; ++v) {
+        values[v] = u(rng);
+        weights[v] = 0.5 + u(rng) * u(rng);
+    }
+    // Batch b: centres 100 b .. 100 b + 99 in a shuffled order, means per level.
+    std::vector<std::vector<std::uint32_t>> centres(kBatches);
+    std::vector<std::vector<double>> means(kBatches, std::vector<double>(kLevels * kStride));
+    for (std::size_t b = 0; b < kBatches; ++b) {
+        for (std::uint32_t k = 0; k < 100; ++k) centres[b].push_back(std::uint32_t(100 * b + k));
+        std::shuffle(centres[b].begin(), centres[b].end(), rng);
+        for (std::size_t li = 0; li < kLevels; ++li)
+            for (std::size_t k = 0; k < 100; ++k)
+                means[b][li * kStride + k] =
+                    (k + li) % 13 == 0 ? std::numeric_limits<double>::quiet_NaN() : u(rng) * 0.1 * double(li + 1);
+    }
+    for (const bool weighted : {false, true}) {
+        detail::LevelStream stream(kLevels, kBatches, 10, values, weighted ? &weights : nullptr);
+        for (std::size_t b = 0; b < kBatches; ++b) {
+            detail::DiskMeansBatch batch;
+            batch.index = b;
+            batch.worker = 0;
+            batch.centres = centres[b].data();
+            batch.count = 100;
+            batch.mean = means[b].data();
+            batch.stride = kStride;
+            stream.add(batch);
+        }
+        for (std::size_t li = 0; li < kLevels; ++li) {
+            // The reference: per batch, the level's centres in order; the batches' sums then in batch order.
+            detail::CompensatedSum total, wtotal;
+            std::size_t used = 0;
+            std::vector<std::pair<double, std::uint32_t>> all;
+            for (std::size_t b = 0; b < kBatches; ++b) {
+                detail::CompensatedSum t, w;
+                for (std::size_t k = 0; k < 100; ++k) {
+                    const std::uint32_t c = centres[b][k];
+                    const double d = values[c] - means[b][li * kStride + k];
+                    if (std::isnan(d)) continue;
+                    const double wc = weighted ? weights[c] : 1.0;
+                    t.add(wc * d * d);
+                    w.add(wc);
+                    ++used;
+                    all.push_back({std::abs(d), c});
+                }
+                total.add(t.s);
+                total.add(t.c);
+                wtotal.add(w.s);
+                wtotal.add(w.c);
+            }
+            const detail::LevelSums s = stream.sums(li);
+            EXPECT_EQ(s.used, used) << li;
+            EXPECT_EQ(std::memcmp(&s.total, &total, sizeof total), 0) << "level " << li << " weighted " << weighted;
+            EXPECT_EQ(std::memcmp(&s.wtotal, &wtotal, sizeof wtotal), 0) << "level " << li << " weighted " << weighted;
+            std::sort(all.begin(), all.end(), [](const auto& x, const auto& y) {
+                return x.first != y.first ? x.first > y.first : x.second < y.second;
+            });
+            ASSERT_EQ(s.head.size(), std::size_t(10));
+            for (std::size_t i = 0; i < 10; ++i) EXPECT_EQ(s.head[i].id, all[i].second) << li;
+        }
+    }
+}

@@ -70,21 +70,26 @@ void LevelStream::add(const DiskMeansBatch& batch)
     // and sums() reports it (no throw on a worker thread).
     const double* const means = second_ ? batch.mean2 : batch.mean;
     if (batch.index >= n_batches_ || std::size_t(batch.worker) >= heads_.size() || !means) return;
-    for (std::size_t li = 0; li < n_levels_; ++li) {
-        Part p;
-        Head& head = heads_[std::size_t(batch.worker)][li];
-        for (std::size_t k = 0; k < batch.count; ++k) {
-            const double mean = means[li * batch.stride + k];
-            const std::uint32_t c = batch.centres[k];
-            const double d = values_[c] - mean;
+    // Centre by centre, its levels inside: each level's sums take the
+    // centres in the same order as a loop over one level would (so the same
+    // bits), but the levels' compensated additions, each waiting on the last
+    // of its level, interleave.
+    Part* const parts = &parts_[batch.index * n_levels_];
+    Head* const heads = heads_[std::size_t(batch.worker)].data();
+    std::fill(parts, parts + n_levels_, Part{});
+    for (std::size_t k = 0; k < batch.count; ++k) {
+        const std::uint32_t c = batch.centres[k];
+        const double value = values_[c];
+        const double w = weights_ ? (*weights_)[c] : 1.0;
+        for (std::size_t li = 0; li < n_levels_; ++li) {
+            const double d = value - means[li * batch.stride + k];
             if (std::isnan(d)) continue;
-            const double w = weights_ ? (*weights_)[c] : 1.0;
+            Part& p = parts[li];
             p.total.add(w * d * d);
             p.wtotal.add(w);
             ++p.used;
-            offer(head, std::abs(d), c);
+            offer(heads[li], std::abs(d), c);
         }
-        parts_[batch.index * n_levels_ + li] = p;
     }
     seen_[batch.index] = 1;
 }
