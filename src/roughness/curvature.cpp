@@ -316,8 +316,8 @@ bool jet_system(std::size_t v, const Mesh& mesh, const Vec3& N, const std::vecto
         const double d2 = d.squaredNorm();
         if (!(d2 > kJetCoincident)) continue;
         const double x = d.dot(u), y = d.dot(w), wt = 1.0 / (d2 * d2);
-        s.M.row(rows) << x, y, x * x, x * y, y * y, x * x * x, x * x * y, x * y * y, y * y * y;
-        s.M.row(rows) *= wt;
+        const double mono[kJetColumns] = {x, y, x * x, x * y, y * y, x * x * x, x * x * y, x * y * y, y * y * y};
+        for (int c = 0; c < kJetColumns; ++c) s.M(rows, c) = mono[c] * wt;
         s.rhs(rows++) = wt * d.dot(N);
     }
     return true;
