@@ -352,7 +352,7 @@ int sign_at(const Mesh& mesh, const PseudoNormals& normals, const Vec3& p, std::
         s = c.kind == FeatureKind::Interior ? d.dot(nf)
                                             : d.dot(nf + normal(normals.opposite[3 * std::size_t(face) + c.index] / 3));
     }
-    return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
+    return detail::sign_of(s);
 }
 
 }  // namespace

@@ -20,6 +20,12 @@ namespace meshdiff::detail {
 void signed_query(const Mesh& mesh, const ClosestPointIndex& index, const PseudoNormals& normals, const Vec3* queries,
                   std::size_t n, double* distances, std::int8_t* signs, const std::function<void()>& beside);
 
+//! -1, 0 or 1: the sign of \p s (0 for NaN).
+inline int sign_of(double s)
+{
+    return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
+}
+
 //! The sign of d . unit_face_normal(flipped, a, b, c) as that product rounds
 //! (the sign of a point whose closest point lies inside the face, d being
 //! the point less its closest point), without the normal's square root and
@@ -39,8 +45,7 @@ inline int interior_sign(bool flipped, const Vec3& d, const Vec3& a, const Vec3&
     const double n2 = n.squaredNorm();
     if (n2 >= 1e-150 && n2 <= 1e150 && scale >= 1e-150 && scale <= 1e150 && std::abs(t) > 1e-13 * scale)
         return (t > 0.0) != flipped ? 1 : -1;
-    const double s = d.dot(unit_face_normal(flipped, a, b, c));
-    return s > 0.0 ? 1 : (s < 0.0 ? -1 : 0);
+    return sign_of(d.dot(unit_face_normal(flipped, a, b, c)));
 }
 
 //! pseudo_normals(data, name, reason) with PseudoNormals::face left empty:
