@@ -298,6 +298,58 @@ TEST(ClosestPoint, VectorAndScalarKernelsGiveTheSameAnswersBitForBit)
     }
 }
 
+// Needles (thin: their face-region projection is not used) in the same
+// leaves as ordinary triangles, and points just above them: the vector path,
+// which tests a leaf's triangles four at once and its thin ones alone, gives
+// the scalar loop's and the brute force's answers, bit for bit. (The kernel's
+// projection onto a needle would differ from the thin rule's closest point by
+// about the needle's width, 1e-10: tens of units in the last place of the
+// squared distance.)
+TEST(ClosestPoint, ThinTrianglesBesideOthersInALeafKeepTheThinRule)
+{
+    Mesh m;
+    for (int k = 0; k < 200; ++k) {
+        const double y = 0.01 * k;
+        const auto v = int(m.points.size());
+        m.points.push_back(Vec3(0, y, 0));
+        m.points.push_back(Vec3(1, y, 0));
+        m.points.push_back(Vec3(0.5, y + 1e-10, 0));  // a needle: sine at a corner 2e-10
+        m.points.push_back(Vec3(0.2, y + 0.004, 0.01));
+        m.points.push_back(Vec3(0.8, y + 0.004, 0.01));
+        m.points.push_back(Vec3(0.5, y + 0.006, 0.02));
+        m.faces.push_back({v, v + 1, v + 2});
+        m.faces.push_back({v + 3, v + 4, v + 5});
+    }
+    const ClosestPointIndex index(m);
+    std::size_t thin = 0, ordinary = 0;
+    const detail::Bvh& bvh = detail::bvh_of(index);
+    for (std::size_t i = 0; i < bvh.tris.size(); ++i) (bvh.tris[i].thin ? thin : ordinary) += 1;
+    ASSERT_EQ(thin, 200u);
+    ASSERT_EQ(ordinary, 200u);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<Vec3> queries;
+    for (int k = 0; k < 200; ++k)
+        for (int j = 0; j < 10; ++j)
+            queries.push_back(Vec3(0.1 + 0.8 * u(rng), 0.01 * k + 0.5e-10, 1e-3 * (0.5 + u(rng))));
+    const bool before = detail::allow_vector_kernels(false);
+    const auto scalar = index.closest_points(queries);
+    detail::allow_vector_kernels(true);
+    const auto vector = index.closest_points(queries);
+    detail::allow_vector_kernels(before);
+    std::size_t on_needles = 0;
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+        const ClosestPoint bf = closest_point_brute_force(m, queries[i]);
+        for (const ClosestPoint* r : {&scalar[i], &vector[i]}) {
+            ASSERT_EQ(std::memcmp(&r->distance, &bf.distance, sizeof(double)), 0) << i;
+            ASSERT_EQ(r->face, bf.face) << i;
+            ASSERT_EQ(std::memcmp(r->point.data(), bf.point.data(), 3 * sizeof(double)), 0) << i;
+        }
+        on_needles += bf.face % 2 == 0;
+    }
+    EXPECT_EQ(on_needles, queries.size());  // every query's closest face is a needle
+}
+
 namespace {
 std::uint64_t fnv1a(std::uint64_t h, const void* data, std::size_t n)
 {

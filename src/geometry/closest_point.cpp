@@ -195,8 +195,7 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
     // The best's region: lane best_lane of the kernel's masks best_masks
     // (best_lane 4: not from the kernel).
     unsigned best_masks = 0, best_lane = 4;
-    auto offer = [&](double d2, std::uint32_t pos, const Vec3& q) MESHDIFF_INLINE {
-        const std::uint32_t face = tris[pos].face;
+    auto offer = [&](double d2, std::uint32_t pos, std::uint32_t face, const Vec3& q) MESHDIFF_INLINE {
         if (d2 < best_d2 || (d2 == best_d2 && face < best_face)) {
             best_d2 = d2;
             best_face = face;
@@ -207,8 +206,9 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
         return false;
     };
     auto consider = [&](std::uint32_t pos) MESHDIFF_INLINE {
-        const Vec3 q = tri_point(p, tris[pos]);
-        if (offer((p - q).squaredNorm(), pos, q)) best_lane = 4;
+        const Tri t = tris[pos];
+        const Vec3 q = tri_point(p, t);
+        if (offer((p - q).squaredNorm(), pos, t.face, q)) best_lane = 4;
     };
     // A leaf's triangles: with AVX2, up to four at once (bitwise the same
     // values, geometry/point_triangle_x4.h); thin ones one by one.
@@ -218,20 +218,42 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
             for (std::uint32_t i = 0; i < count; ++i) consider(first + i);
             return;
         }
+        // Lanes past the leaf's last triangle repeat it.
         detail::PairsX4 in;
+        std::uint32_t face[4];
+        unsigned thin = 0;
         for (std::uint32_t k = 0; k < 4; ++k) {
             const Tri t = tris[first + std::min(k, count - 1)];
             in.p[k] = p.data();
             in.a[k] = t.a.data();
             in.b[k] = t.b.data();
             in.c[k] = t.c.data();
+            face[k] = t.face;
+            thin |= unsigned(t.thin) << k;
         }
         double d2[4], qx[4], qy[4], qz[4];
         const unsigned masks = detail::closest_points_x4(in, d2, qx, qy, qz, detail::SharedX4::kPoint);
+        if (thin == 0 && !std::isnan((d2[0] + d2[1]) + (d2[2] + d2[3]))) {
+            // The lanes' lexicographic minimum of (d2, face), without
+            // branches, offered alone: the offers keep the minimum, which
+            // does not depend on their order (no NaN: the order is total).
+            // Ties go to the lower lane, so a repeated lane is never taken.
+            auto below = [&](unsigned i, unsigned j) MESHDIFF_INLINE {
+                return bool((d2[i] < d2[j]) | ((d2[i] == d2[j]) & (face[i] < face[j])));
+            };
+            const unsigned w01 = unsigned(below(1, 0));
+            const unsigned w23 = 2u + unsigned(below(3, 2));
+            const unsigned w = below(w23, w01) ? w23 : w01;
+            if (offer(d2[w], first + w, face[w], Vec3(qx[w], qy[w], qz[w]))) {
+                best_masks = masks;
+                best_lane = w;
+            }
+            return;
+        }
         for (std::uint32_t i = 0; i < count; ++i) {
-            if (tris[first + i].thin) {
+            if (thin & (1u << i)) {
                 consider(first + i);
-            } else if (offer(d2[i], first + i, Vec3(qx[i], qy[i], qz[i]))) {
+            } else if (offer(d2[i], first + i, face[i], Vec3(qx[i], qy[i], qz[i]))) {
                 best_masks = masks;
                 best_lane = i;
             }

@@ -61,9 +61,10 @@ unsigned closest_points_x4(const PairsX4& in, double d2[4], double qx[4], double
 //! closest_points_x4() returned.
 inline unsigned lane_region(unsigned masks, unsigned lane)
 {
-    for (unsigned r = kRegionA; r < kRegionInterior; ++r)
-        if ((masks >> (4 * r + lane)) & 1u) return r;
-    return kRegionInterior;
+    // The lane's bit of each region (a lane lies in one region at most: the
+    // lowest bit is its first).
+    const unsigned m = (masks >> lane) & 0x111111u;
+    return m != 0 ? unsigned(__builtin_ctz(m)) / 4 : kRegionInterior;
 }
 
 }  // namespace meshdiff::detail
