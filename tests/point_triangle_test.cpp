@@ -14,6 +14,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
 
 using namespace meshdiff;
 
@@ -204,16 +205,43 @@ TEST(PointTriangleX4, LanesAreTheScalarClosestPointsBitForBit)
         }
         double d2[4], qx[4], qy[4], qz[4];
         const unsigned masks = detail::closest_points_x4(in, d2, qx, qy, qz);
-        // What the lanes share, read once: the same results to the last bit.
-        for (const auto shared : {detail::SharedX4::kPoint, detail::SharedX4::kTriangle}) {
-            if (shared == detail::SharedX4::kPoint ? !one_point : round % 3 != 0) continue;
+        // The triangle the lanes share, read once: the same results to the
+        // last bit.
+        if (round % 3 == 0) {
             double e2[4], ex[4], ey[4], ez[4];
-            const unsigned shared_masks = detail::closest_points_x4(in, e2, ex, ey, ez, shared);
+            const unsigned shared_masks = detail::closest_points_x4(in, e2, ex, ey, ez, detail::SharedX4::kTriangle);
             ASSERT_EQ(shared_masks, masks) << round;
             ASSERT_EQ(std::memcmp(e2, d2, sizeof d2), 0) << round;
             ASSERT_EQ(std::memcmp(ex, qx, sizeof qx), 0) << round;
             ASSERT_EQ(std::memcmp(ey, qy, sizeof qy), 0) << round;
             ASSERT_EQ(std::memcmp(ez, qz, sizeof qz), 0) << round;
+            ++shared_compared;
+        }
+        // The index's form, one point and the corners by their positions in
+        // an array (1 to 4 triangles, the lanes past the last repeating it):
+        // each lane is the lane of its triangle above.
+        if (one_point) {
+            const unsigned count = 1u + unsigned(round / 2) % 4u;
+            std::vector<Vec3> points;
+            std::uint32_t corners[16];
+            for (std::uint32_t k = 0; k < 4; ++k) {
+                for (const Vec3* v : {&c[k], &a[k], &b[k]}) points.push_back(*v);  // not in corner order
+                corners[4 * k] = 3 * k + 1;
+                corners[4 * k + 1] = 3 * k + 2;
+                corners[4 * k + 2] = 3 * k;
+                corners[4 * k + 3] = 0xFFFFFFFFu;  // the triangle's fourth word, not read
+            }
+            double e2[4], ex[4], ey[4], ez[4];
+            const unsigned indexed_masks =
+                detail::closest_points_indexed_x4(p[0].data(), points.data(), corners, count, e2, ex, ey, ez);
+            for (unsigned k = 0; k < 4; ++k) {
+                const unsigned j = std::min(k, count - 1);
+                ASSERT_EQ(detail::lane_region(indexed_masks, k), detail::lane_region(masks, j)) << round;
+                ASSERT_EQ(std::memcmp(&e2[k], &d2[j], sizeof(double)), 0) << round;
+                ASSERT_EQ(std::memcmp(&ex[k], &qx[j], sizeof(double)), 0) << round;
+                ASSERT_EQ(std::memcmp(&ey[k], &qy[j], sizeof(double)), 0) << round;
+                ASSERT_EQ(std::memcmp(&ez[k], &qz[j], sizeof(double)), 0) << round;
+            }
             ++shared_compared;
         }
         for (int k = 0; k < 4; ++k) {

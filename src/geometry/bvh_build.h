@@ -46,6 +46,9 @@ struct LeafTriangles
     };
     std::vector<Corners> corners;
     std::vector<Vec3> points;
+    // Read by detail::closest_points_indexed_x4() as three positions and a
+    // word per triangle, 4 words apart.
+    static_assert(sizeof(Corners) == 4 * sizeof(std::uint32_t), "a triangle is four words");
 
     Tri operator[](std::size_t i) const
     {

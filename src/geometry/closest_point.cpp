@@ -219,20 +219,17 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
             return;
         }
         // Lanes past the leaf's last triangle repeat it.
-        detail::PairsX4 in;
+        const detail::LeafTriangles::Corners* c = &tris.corners[first];
         std::uint32_t face[4];
         unsigned thin = 0;
         for (std::uint32_t k = 0; k < 4; ++k) {
-            const Tri t = tris[first + std::min(k, count - 1)];
-            in.p[k] = p.data();
-            in.a[k] = t.a.data();
-            in.b[k] = t.b.data();
-            in.c[k] = t.c.data();
-            face[k] = t.face;
-            thin |= unsigned(t.thin) << k;
+            const std::uint32_t word = c[std::min(k, count - 1)].face_thin;
+            face[k] = word & ~detail::LeafTriangles::kThin;
+            thin |= unsigned((word & detail::LeafTriangles::kThin) != 0) << k;
         }
         double d2[4], qx[4], qy[4], qz[4];
-        const unsigned masks = detail::closest_points_x4(in, d2, qx, qy, qz, detail::SharedX4::kPoint);
+        const unsigned masks =
+            detail::closest_points_indexed_x4(p.data(), tris.points.data(), c->v.data(), count, d2, qx, qy, qz);
         if (thin == 0 && !std::isnan((d2[0] + d2[1]) + (d2[2] + d2[3]))) {
             // The lanes' lexicographic minimum of (d2, face), without
             // branches, offered alone: the offers keep the minimum, which

@@ -1,5 +1,8 @@
 #include "geometry/point_triangle_x4.h"
 
+#include <algorithm>
+#include <cstdint>
+
 #if MESHDIFF_HAVE_AVX512_KERNELS
 #include <immintrin.h>
 
@@ -143,14 +146,25 @@ MESHDIFF_AVX2 inline V3 broadcast(const double* s)
 {
     return {all(s, 0), all(s, 1), all(s, 2)};
 }
+// The x, y, z of a point and a zero (the fourth double is not read).
+MESHDIFF_AVX2 inline V point_xyz(const Vec3& v)
+{
+    return _mm256_maskload_pd(v.data(), _mm256_setr_epi64x(-1, -1, -1, 0));
+}
+// Four points (x, y, z, 0) transposed into the lanes of x, y and z.
+MESHDIFF_AVX2 inline V3 transposed(V p0, V p1, V p2, V p3)
+{
+    const V lo01 = _mm256_unpacklo_pd(p0, p1), hi01 = _mm256_unpackhi_pd(p0, p1);  // x0 x1 z0 z1, y0 y1 0 0
+    const V lo23 = _mm256_unpacklo_pd(p2, p3), hi23 = _mm256_unpackhi_pd(p2, p3);
+    return {_mm256_permute2f128_pd(lo01, lo23, 0x20), _mm256_permute2f128_pd(hi01, hi23, 0x20),
+            _mm256_permute2f128_pd(lo01, lo23, 0x31)};
+}
 }  // namespace
 
 MESHDIFF_AVX2 unsigned closest_points_x4(const PairsX4& in, double d2[4], double qx[4], double qy[4], double qz[4],
                                          SharedX4 shared)
 {
     switch (shared) {
-        case SharedX4::kPoint:
-            return kernel(broadcast(in.p[0]), gathered(in.a), gathered(in.b), gathered(in.c), d2, qx, qy, qz);
         case SharedX4::kTriangle:
             return kernel(gathered(in.p), broadcast(in.a[0]), broadcast(in.b[0]), broadcast(in.c[0]), d2, qx, qy, qz);
         case SharedX4::kNothing:
@@ -159,11 +173,28 @@ MESHDIFF_AVX2 unsigned closest_points_x4(const PairsX4& in, double d2[4], double
     return kernel(gathered(in.p), gathered(in.a), gathered(in.b), gathered(in.c), d2, qx, qy, qz);
 }
 
+MESHDIFF_AVX2 unsigned closest_points_indexed_x4(const double* p, const Vec3* points, const std::uint32_t* corners,
+                                                 unsigned count, double d2[4], double qx[4], double qy[4], double qz[4])
+{
+    const std::uint32_t* t[4];
+    for (unsigned k = 0; k < 4; ++k) t[k] = corners + 4 * std::min(k, count - 1);
+    V3 abc[3];
+    for (unsigned i = 0; i < 3; ++i)
+        abc[i] = transposed(point_xyz(points[t[0][i]]), point_xyz(points[t[1][i]]), point_xyz(points[t[2][i]]),
+                            point_xyz(points[t[3][i]]));
+    return kernel(broadcast(p), abc[0], abc[1], abc[2], d2, qx, qy, qz);
+}
+
 }  // namespace meshdiff::detail
 
 #else
 namespace meshdiff::detail {
 unsigned closest_points_x4(const PairsX4&, double*, double*, double*, double*, SharedX4)
+{
+    return 0;
+}
+unsigned closest_points_indexed_x4(const double*, const Vec3*, const std::uint32_t*, unsigned, double*, double*,
+                                   double*, double*)
 {
     return 0;
 }

@@ -44,18 +44,26 @@ enum : unsigned
 //! (compiled on x86-64 with GCC or Clang; elsewhere never called).
 //!
 //! \p shared: what the four lanes share, read once and broadcast rather than
-//! gathered lane by lane (the same values, so the same results): nothing, the
-//! point in.p[0] (a query against a leaf's triangles), or the triangle
-//! in.a[0], in.b[0], in.c[0] (corners of a cell against one triangle); the
-//! other lanes' pointers of what is shared are not read.
+//! gathered lane by lane (the same values, so the same results): nothing, or
+//! the triangle in.a[0], in.b[0], in.c[0] (corners of a cell against one
+//! triangle); the other lanes' pointers of what is shared are not read.
 enum class SharedX4
 {
     kNothing,
-    kPoint,
     kTriangle
 };
 unsigned closest_points_x4(const PairsX4& in, double d2[4], double qx[4], double qy[4], double qz[4],
                            SharedX4 shared = SharedX4::kNothing);
+
+//! closest_points_x4() of the point \p p and up to four triangles given by
+//! the positions of their corners in \p points: lane k's corners are
+//! points[corners[4 j + i]], i = 0, 1, 2, with j = min(k, count - 1) (the lanes
+//! past the last triangle repeat it; count 1 to 4). The corners' coordinates
+//! are loaded three at a time and transposed into the lanes, not gathered
+//! one by one: the same values, so the same results. For the leaves of the
+//! closest-point index, whose triangles are three positions and a fourth word.
+unsigned closest_points_indexed_x4(const double* p, const Vec3* points, const std::uint32_t* corners, unsigned count,
+                                   double d2[4], double qx[4], double qy[4], double qz[4]);
 
 //! Lane \p lane's region (kRegionA .. kRegionInterior) from the masks
 //! closest_points_x4() returned.
