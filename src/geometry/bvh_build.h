@@ -50,10 +50,14 @@ struct LeafTriangles
     // word per triangle, 4 words apart.
     static_assert(sizeof(Corners) == 4 * sizeof(std::uint32_t), "a triangle is four words");
 
+    //! The face and the thin bit of a triangle's Corners::face_thin.
+    static std::uint32_t face_of(std::uint32_t face_thin) { return face_thin & ~kThin; }
+    static bool thin_of(std::uint32_t face_thin) { return (face_thin & kThin) != 0; }
+
     Tri operator[](std::size_t i) const
     {
         const Corners& t = corners[i];
-        return Tri{points[t.v[0]], points[t.v[1]], points[t.v[2]], t.face_thin & ~kThin, (t.face_thin & kThin) != 0};
+        return Tri{points[t.v[0]], points[t.v[1]], points[t.v[2]], face_of(t.face_thin), thin_of(t.face_thin)};
     }
     std::size_t size() const { return corners.size(); }
     bool empty() const { return corners.empty(); }

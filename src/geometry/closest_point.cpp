@@ -224,8 +224,8 @@ inline ClosestPoint ClosestPointIndex::Impl::search(const Vec3& p, std::uint32_t
         unsigned thin = 0;
         for (std::uint32_t k = 0; k < 4; ++k) {
             const std::uint32_t word = c[std::min(k, count - 1)].face_thin;
-            face[k] = word & ~detail::LeafTriangles::kThin;
-            thin |= unsigned((word & detail::LeafTriangles::kThin) != 0) << k;
+            face[k] = detail::LeafTriangles::face_of(word);
+            thin |= unsigned(detail::LeafTriangles::thin_of(word)) << k;
         }
         double d2[4], qx[4], qy[4], qz[4];
         const unsigned masks =
