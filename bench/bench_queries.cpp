@@ -70,6 +70,8 @@ std::pair<double, double> time_queries(const meshdiff::ClosestPointIndex& index,
     return {meshdiff::timing::median(t), *std::min_element(t.begin(), t.end())};
 }
 
+constexpr const char* kUsage = "usage: meshdiff_bench_queries [--runs N] [--threads N] [--morton [--chunk N]] A B\n";
+
 int run(int argc, char** argv)
 {
     int runs = 5;
@@ -89,12 +91,12 @@ int run(int argc, char** argv)
         } else if (!a.empty() && a[0] != '-') {
             files.push_back(a);
         } else {
-            fmt::print(stderr, "usage: meshdiff_bench_queries [--runs N] [--threads N] [--morton [--chunk N]] A B\n");
+            fmt::print(stderr, "{}", kUsage);
             return 2;
         }
     }
     if (files.size() != 2) {
-        fmt::print(stderr, "usage: meshdiff_bench_queries [--runs N] [--threads N] [--morton [--chunk N]] A B\n");
+        fmt::print(stderr, "{}", kUsage);
         return 2;
     }
     const Mesh a = meshdiff::read_mesh(files[0]).mesh, b = meshdiff::read_mesh(files[1]).mesh;
