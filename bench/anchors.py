@@ -18,12 +18,19 @@ build is timed, as meshdiff's index build is.
 
 Ratios: anchor time per sample / meshdiff's, for each binary (issue 30: >= 10x MeshLab, >= 5x Open3D).
 
+With --queries-new (and --queries-old), meshdiff's stages are also timed alone by meshdiff_bench_queries (the
+library's index builds and queries on the same samples, made beforehand and not timed), and the anchors' ratios
+printed against them too: the queries alone, and the index builds with the queries (what Open3D is charged). The
+whole-process ratios above stay the measure of record; these say how much of the gap is the queries'.
+
   bench/anchors.py --new build/meshdiff [--old OLD/meshdiff] [--runs 5] [--meshes ../shared/data/meshes]
                    [--decimated /tmp/meshdiff-targets/igea_dec10.ply]
+                   [--queries-new build/meshdiff_bench_queries [--queries-old OLD/meshdiff_bench_queries]]
 """
 import argparse
 import json
 import os
+import re
 import shutil
 import statistics
 import subprocess
@@ -43,6 +50,16 @@ def time_meshdiff(binary, igea, dec, out):
     with open(out) as f:
         sd = json.load(f)["surface_distance"]
     return wall, sd["forward"]["samples"], sd["backward"]["samples"]
+
+
+def stage_times(bench, igea, dec, runs):
+    """meshdiff_bench_queries' last line: seconds per sample of the queries alone and of the index builds with
+    them, both directions (medians of `runs`)."""
+    out = subprocess.run([bench, "--runs", str(runs), igea, dec], check=True, capture_output=True, text=True).stdout
+    m = re.search(r"queries alone ([0-9.]+) ns, index builds and queries ([0-9.]+) ns", out)
+    if not m:
+        raise SystemExit(f"{bench}: no per-sample line in its output:\n{out}")
+    return {"queries alone": 1e-9 * float(m.group(1)), "index builds and queries": 1e-9 * float(m.group(2))}
 
 
 def meshlab_per_sample(igea, dec, runs, tmp):
@@ -90,6 +107,8 @@ def main():
     ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--meshes", default=os.path.join(HERE, "..", "..", "shared", "data", "meshes"))
     ap.add_argument("--decimated", default="/tmp/meshdiff-targets/igea_dec10.ply")
+    ap.add_argument("--queries-new", help="meshdiff_bench_queries of the new build (stages timed alone)")
+    ap.add_argument("--queries-old", help="meshdiff_bench_queries built against the old library")
     a = ap.parse_args()
     igea = os.path.join(a.meshes, "igea.ply")
     if not os.path.exists(a.decimated):
@@ -103,6 +122,8 @@ def main():
                 wall, nf, nb = time_meshdiff(b, igea, a.decimated, os.path.join(tmp, label + ".json"))
                 walls[label].append(wall)
         per = {label: statistics.median(w) / (nf + nb) for label, w in walls.items()}
+        stages = [(label, stage_times(q, igea, a.decimated, a.runs))
+                  for label, q in (("old", a.queries_old), ("new", a.queries_new)) if q]
         anchors = [("MeshLab Hausdorff filter", *meshlab_per_sample(igea, a.decimated, a.runs, tmp)),
                    ("Open3D closest points", *open3d_per_sample(igea, a.decimated, nf, nb, a.runs))]
     print(f"igea ({igea}) vs its 10 % decimation; {nf} + {nb} samples; medians of {a.runs} runs")
@@ -116,6 +137,9 @@ def main():
         ratios = ", ".join(f"{label} {value / per[label]:.1f}x" for label, _ in bins)
         print(f"{name}: {1e9 * value:.1f} ns per sample ({how}); meshdiff is faster by: {ratios} "
               f"(target >= {target[name]:g}x)")
+        for label, t in stages:
+            parts = ", ".join(f"{stage} ({1e9 * per:.1f} ns) {value / per:.1f}x" for stage, per in t.items())
+            print(f"  against meshdiff {label}'s stages alone: {parts}")
     print(f"{os.cpu_count()} cores; load average {' '.join(f'{x:.2f}' for x in os.getloadavg())}; "
           f"{time.strftime('%Y-%m-%dT%H:%M:%SZ', time.gmtime())}")
 

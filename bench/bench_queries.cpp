@@ -18,12 +18,29 @@
 // consecutive parts of N queries (as the surface distance, which makes and
 // queries its samples a chunk at a time, could sort them).
 //
+// Each run also builds the index it queries, timed apart; the last line sums
+// the directions' medians per sample of both: the queries alone, and the
+// index builds with them (what bench/anchors.py charges Open3D: its scene
+// build and its queries, on points made beforehand).
+//
 //   meshdiff_bench_queries --threads 1 --morton ../shared/data/meshes/igea.ply /tmp/meshdiff-targets/igea_dec10.ply
+//
+// It compiles against the library as it was before the headers moved into
+// folders (edfd398, issue 30's baseline) too, so that both are timed alike:
+//   g++ -O2 -std=c++17 -fopenmp -I bench -I /tmp/edfd398/include -I /tmp/edfd398/build/include
+//       -isystem /usr/include/eigen3 bench/bench_queries.cpp /tmp/edfd398/build/libmeshdiff.a
+//       -lOpenMeshCore -lfmt -o /tmp/edfd398/build/meshdiff_bench_queries   (one line)
 #include "bench_common.h"
 
+#if __has_include("meshdiff/geometry/closest_point.h")
 #include "meshdiff/geometry/closest_point.h"
 #include "meshdiff/geometry/sampling.h"
 #include "meshdiff/io/io.h"
+#else  // the flat headers of edfd398
+#include "meshdiff/closest_point.h"
+#include "meshdiff/io.h"
+#include "meshdiff/sampling.h"
+#endif
 
 #include <fmt/format.h>
 #include <omp.h>
@@ -57,6 +74,11 @@ std::uint64_t morton(const Vec3& p, const Vec3& lo, const Vec3& hi)
     return code;
 }
 
+double seconds_since(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 // Median and minimum seconds of `runs` calls of index.distances(points).
 std::pair<double, double> time_queries(const meshdiff::ClosestPointIndex& index, const std::vector<Vec3>& points,
                                        int runs, std::vector<double>& out)
@@ -65,9 +87,21 @@ std::pair<double, double> time_queries(const meshdiff::ClosestPointIndex& index,
     for (int r = 0; r < runs; ++r) {
         const auto t0 = std::chrono::steady_clock::now();
         out = index.distances(points);
-        t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        t.push_back(seconds_since(t0));
     }
     return {meshdiff::timing::median(t), *std::min_element(t.begin(), t.end())};
+}
+
+// Median seconds of `runs` builds of the index of `mesh`.
+double time_builds(const Mesh& mesh, int runs)
+{
+    std::vector<double> t;
+    for (int r = 0; r < runs; ++r) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const meshdiff::ClosestPointIndex index(mesh);
+        t.push_back(seconds_since(t0));
+    }
+    return meshdiff::timing::median(t);
 }
 
 constexpr const char* kUsage = "usage: meshdiff_bench_queries [--runs N] [--threads N] [--morton [--chunk N]] A B\n";
@@ -102,17 +136,23 @@ int run(int argc, char** argv)
     const Mesh a = meshdiff::read_mesh(files[0]).mesh, b = meshdiff::read_mesh(files[1]).mesh;
     meshdiff::SamplingOptions options;
     options.samples = 10 * std::max(a.n_faces(), b.n_faces());
+    double total_n = 0.0, total_queries = 0.0, total_builds = 0.0;  // medians summed over the directions
     for (int direction = 0; direction < 2; ++direction) {
         const Mesh& from = direction == 0 ? a : b;
         const Mesh& to = direction == 0 ? b : a;
         const meshdiff::SurfaceSamples s = meshdiff::sample_surface(from, options);
+        const double build = time_builds(to, runs);
         const meshdiff::ClosestPointIndex index(to);
         const double n = double(s.size());
         std::vector<double> given;
         const auto [median, best] = time_queries(index, s.points, runs, given);
+        total_n += n;
+        total_queries += median;
+        total_builds += build;
         fmt::print("{} -> {}: {} queries (v {} e {} f {}) against {} faces, threads {}\n", direction == 0 ? "A" : "B",
                    direction == 0 ? "B" : "A", s.size(), s.n_vertex, s.n_edge, s.n_face, to.n_faces(),
                    omp_get_max_threads());
+        fmt::print("  index build: {:.4f} s (median of {})\n", build, runs);
         fmt::print("  order given:  {:.1f} ns per query (median of {}; min {:.1f})\n", 1e9 * median / n, runs,
                    1e9 * best / n);
         if (!sorted) continue;
@@ -141,6 +181,8 @@ int run(int argc, char** argv)
             1e9 * m_best / n, differ);
         if (differ != 0) return 1;
     }
+    fmt::print("both directions, {} samples, per sample: queries alone {:.1f} ns, index builds and queries {:.1f} ns\n",
+               total_n, 1e9 * total_queries / total_n, 1e9 * (total_queries + total_builds) / total_n);
     return 0;
 }
 
