@@ -10,9 +10,11 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <random>
 
 using namespace meshdiff;
@@ -257,6 +259,68 @@ TEST(ClosestPoint, DistancesOfARangeEqualTheWholeBatch)
     index.distances(q.data() + 777, part.size(), part.data());
     for (std::size_t i = 0; i < part.size(); ++i) EXPECT_EQ(part[i], all[777 + i]) << i;
     index.distances(q.data(), 0, nullptr);  // nothing to do
+}
+
+// The order in which a batch's queries run (the surface distance runs a
+// chunk's samples in Morton order of their elements) changes no answer: each
+// query's distance, closest point, face, region and position are the same
+// bits as in the given order, at one thread and two; and every query runs
+// once, under its own index.
+TEST(ClosestPoint, QueryOrderChangesNoAnswer)
+{
+    const Mesh m = icosphere(3).mesh;
+    const ClosestPointIndex index(m);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1.3, 1.3);
+    std::vector<Vec3> q;
+    for (int i = 0; i < 5000; ++i) q.push_back(Vec3(u(rng), u(rng), u(rng)));
+    struct Seen
+    {
+        double distance = -1.0;
+        Vec3 point = Vec3::Zero();
+        std::uint32_t face = 0, position = 0;
+        unsigned region = 0, visits = 0;
+    };
+    std::vector<std::uint32_t> sequence;  // the queries as they ran (one thread)
+    auto run = [&](const std::uint32_t* order, std::vector<double>& out) {
+        std::vector<Seen> seen(q.size());
+        out.assign(q.size(), -1.0);
+        sequence.clear();
+        detail::distances_with_regions(
+            index, q.data(), q.size(), out.data(),
+            [&](std::size_t i, const ClosestPoint& c, unsigned region, std::uint32_t position) {
+                seen[i] = {c.distance, c.point, c.face, position, region, seen[i].visits + 1};
+                if (omp_get_num_threads() == 1) sequence.push_back(std::uint32_t(i));
+            },
+            {}, order);
+        return seen;
+    };
+    std::vector<double> given;
+    const std::vector<Seen> expected = run(nullptr, given);
+    std::vector<std::uint32_t> reversed(q.size()), shuffled(q.size());
+    for (std::size_t i = 0; i < q.size(); ++i) reversed[i] = std::uint32_t(q.size() - 1 - i);
+    std::iota(shuffled.begin(), shuffled.end(), 0u);
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    const int threads = omp_get_max_threads();
+    for (const auto* order : {&reversed, &shuffled})
+        for (const int t : {1, 2}) {
+            omp_set_num_threads(t);
+            std::vector<double> out;
+            const std::vector<Seen> seen = run(order->data(), out);
+            if (t == 1) {
+                EXPECT_TRUE(sequence == *order);  // they ran in that order
+            }
+            for (std::size_t i = 0; i < q.size(); ++i) {
+                ASSERT_EQ(seen[i].visits, 1u) << i;
+                ASSERT_EQ(std::memcmp(&out[i], &given[i], sizeof(double)), 0) << i;
+                ASSERT_EQ(std::memcmp(&seen[i].distance, &expected[i].distance, sizeof(double)), 0) << i;
+                ASSERT_EQ(std::memcmp(seen[i].point.data(), expected[i].point.data(), 3 * sizeof(double)), 0) << i;
+                ASSERT_EQ(seen[i].face, expected[i].face) << i;
+                ASSERT_EQ(seen[i].position, expected[i].position) << i;
+                ASSERT_EQ(seen[i].region, expected[i].region) << i;
+            }
+        }
+    omp_set_num_threads(threads);
 }
 
 // The AVX2 leaf kernel (where the CPU has it) and the scalar loop give the

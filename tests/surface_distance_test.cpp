@@ -6,6 +6,7 @@
 
 #include "distance/surface_distance_chunks.h"
 #include "distance/two_directions.h"
+#include "geometry/morton_code.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <random>
 #include <string>
 
@@ -726,6 +728,130 @@ void expect_every_bit(const SurfaceDistance& x, const SurfaceDistance& y)
 }
 
 }  // namespace
+
+// The order in which a chunk's samples are queried: its runs (one element's
+// consecutive samples) whole and in their own order, sorted by the top 30
+// bits of the Morton code of their first point (ties by position), every
+// sample once; none (the samples' own order) where that order is already as
+// coherent.
+TEST(SurfaceDistance, ChunkQueryOrderSortsWholeRunsAlongTheMortonCurve)
+{
+    const Mesh sphere = icosphere(2).mesh;  // 320 faces
+    SamplingOptions o;
+    o.samples = 20000;
+    const SurfaceSamples s = sample_surface(sphere, o);
+    const BoundingBox box = bounding_box(sphere);
+    const Vec3 ext = detail::morton_extent(box);
+    // The samples' runs in a random order: an incoherent numbering.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;  // [first, end)
+    for (std::uint32_t i = 0; i < s.size(); ++i)
+        if (i == 0 || s.kind[i] != s.kind[i - 1] || s.element[i] != s.element[i - 1]) runs.push_back({i, i});
+    for (std::size_t r = 0; r < runs.size(); ++r)
+        runs[r].second = r + 1 < runs.size() ? runs[r + 1].first : std::uint32_t(s.size());
+    std::mt19937_64 rng(3);
+    std::shuffle(runs.begin(), runs.end(), rng);
+    std::vector<Vec3> p;
+    std::vector<SampleKind> kind;
+    std::vector<std::uint32_t> element;
+    for (const auto& [first, end] : runs)
+        for (std::uint32_t i = first; i < end; ++i) {
+            p.push_back(s.points[i]);
+            kind.push_back(s.kind[i]);
+            element.push_back(s.element[i]);
+        }
+    const std::size_t k = p.size();
+    std::vector<std::uint32_t> order;
+    detail::chunk_query_order(p.data(), kind.data(), element.data(), k, box, order);
+    ASSERT_EQ(order.size(), k);
+    std::vector<char> taken(k, 0);
+    for (const std::uint32_t i : order) {
+        ASSERT_LT(i, k);
+        ASSERT_FALSE(taken[i]) << i;
+        taken[i] = 1;
+    }
+    auto starts_run = [&](std::size_t i) { return i == 0 || kind[i] != kind[i - 1] || element[i] != element[i - 1]; };
+    // The runs as they come in the order: each begins a run of the chunk and
+    // holds all of it, in position order; their keys do not decrease.
+    std::size_t n_runs = 0;
+    std::pair<std::uint64_t, std::uint32_t> last{0, 0};
+    for (std::size_t j = 0; j < k;) {
+        const std::uint32_t first = order[j];
+        ASSERT_TRUE(starts_run(first)) << j;
+        std::size_t len = 1;
+        while (j + len < k && order[j + len] == first + len && !starts_run(first + len)) ++len;
+        ASSERT_TRUE(first + len == k || starts_run(first + len)) << "run at " << first << " cut after " << len;
+        const std::pair<std::uint64_t, std::uint32_t> key{detail::morton_code(p[first], box.min, ext) >> 33, first};
+        EXPECT_TRUE(n_runs == 0 || last < key) << j;
+        last = key;
+        ++n_runs;
+        j += len;
+    }
+    EXPECT_EQ(n_runs, runs.size());
+    // The chunk in that order is coherent: no order again.
+    std::vector<Vec3> p2;
+    std::vector<SampleKind> kind2;
+    std::vector<std::uint32_t> element2;
+    for (const std::uint32_t i : order) {
+        p2.push_back(p[i]);
+        kind2.push_back(kind[i]);
+        element2.push_back(element[i]);
+    }
+    std::vector<std::uint32_t> again;
+    detail::chunk_query_order(p2.data(), kind2.data(), element2.data(), k, box, again);
+    EXPECT_TRUE(again.empty());
+    // Nothing to order: no sample, one run.
+    detail::chunk_query_order(p.data(), kind.data(), element.data(), 0, box, order);
+    EXPECT_TRUE(order.empty());
+    const std::size_t one = runs.front().second - runs.front().first;
+    detail::chunk_query_order(p.data(), kind.data(), element.data(), one, box, order);
+    EXPECT_TRUE(order.empty());
+    // A point in the box keeps its cell; one outside it takes the nearest.
+    EXPECT_EQ(detail::morton_code(box.min, box.min, ext), 0u);
+    EXPECT_EQ(detail::morton_code(box.max, box.min, ext), (std::uint64_t(1) << 63) - 1);
+    EXPECT_EQ(detail::morton_code(box.max + ext, box.min, ext), (std::uint64_t(1) << 63) - 1);
+    EXPECT_EQ(detail::morton_code(box.min - ext, box.min, ext), 0u);
+}
+
+// A mesh numbered at random (its vertices and faces shuffled), whose chunks
+// are queried in Morton order, gives the statistics of its kept samples,
+// which are queried in their own order, bit for bit.
+TEST(SurfaceDistance, ChunksQueriedInMortonOrderGiveTheKeptSamplesStatisticsBitForBit)
+{
+    Mesh a = icosphere(4).mesh;  // 5,120 faces
+    const Mesh b = icosphere(2, 1.02).mesh;
+    std::mt19937_64 rng(11);
+    std::vector<std::uint32_t> to(a.n_vertices());
+    std::iota(to.begin(), to.end(), 0u);
+    std::shuffle(to.begin(), to.end(), rng);
+    std::vector<Vec3> points(a.n_vertices());
+    for (std::size_t v = 0; v < to.size(); ++v) points[to[v]] = a.points[v];
+    a.points = points;
+    for (Face& f : a.faces)
+        for (auto& v : f) v = decltype(f[0])(to[std::size_t(v)]);
+    std::shuffle(a.faces.begin(), a.faces.end(), rng);
+    SamplingOptions o;
+    o.samples = 60000;
+    // The first chunk of A's samples is ordered.
+    const SurfaceSamples s = sample_surface(a, o);
+    std::vector<std::uint32_t> order;
+    const std::size_t k = std::min(s.size(), 4 * detail::kQueryBlock);
+    detail::chunk_query_order(s.points.data(), s.kind.data(), s.element.data(), k, bounding_box(a), order);
+    EXPECT_EQ(order.size(), k);
+    SummaryOptions so;
+    so.fscore_thresholds = {0.001, 0.02};
+    so.histogram_bins = 5;
+    DistanceOptions options = distance_options(o, std::nullopt, so);
+    options.keep_samples = true;
+    const SurfaceDistance kept = detail::surface_distance(a, b, options, detail::kQueryBlock);
+    options.keep_samples = false;
+    const int threads = omp_get_max_threads();
+    for (const std::size_t chunk : {4 * detail::kQueryBlock, detail::kSampleChunk})
+        for (const int t : {1, 2}) {
+            omp_set_num_threads(t);
+            expect_every_bit(kept, detail::surface_distance(a, b, options, chunk));
+        }
+    omp_set_num_threads(threads);
+}
 
 TEST(SurfaceDistance, ChunkedSamplesGiveTheKeptSamplesStatisticsBitForBit)
 {

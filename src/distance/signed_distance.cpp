@@ -386,7 +386,7 @@ void signed_query(const Mesh& mesh, const ClosestPointIndex& index, const Pseudo
 
 void detail::signed_query(const Mesh& mesh, const ClosestPointIndex& index, const PseudoNormals& normals,
                           const Vec3* queries, std::size_t n, double* distances, std::int8_t* signs,
-                          const std::function<void()>& beside)
+                          const std::function<void()>& beside, const std::uint32_t* order)
 {
     // The feature from the index's copy of the triangle, which the query has
     // just read (the same corners, in the same order, and the same thinness
@@ -419,7 +419,7 @@ void detail::signed_query(const Mesh& mesh, const ClosestPointIndex& index, cons
             }
             signs[i] = std::int8_t(sign_at(mesh, normals, p, c.face, f, corners));
         },
-        beside);
+        beside, order);
 }
 
 double winding_number(const Mesh& mesh, const Vec3& p)

@@ -16,9 +16,12 @@ namespace meshdiff::detail {
 
 //! signed_query() with \p beside run once by one thread of the team while the
 //! others query (detail::distances_with_regions()); its exception is rethrown
-//! once the queries are done.
+//! once the queries are done. \p order, if given, is the order of the queries
+//! (a permutation of 0 .. n - 1, as distances_with_regions() takes it): the
+//! same distances and signs.
 void signed_query(const Mesh& mesh, const ClosestPointIndex& index, const PseudoNormals& normals, const Vec3* queries,
-                  std::size_t n, double* distances, std::int8_t* signs, const std::function<void()>& beside);
+                  std::size_t n, double* distances, std::int8_t* signs, const std::function<void()>& beside,
+                  const std::uint32_t* order = nullptr);
 
 //! -1, 0 or 1: the sign of \p s (0 for NaN).
 inline int sign_of(double s)

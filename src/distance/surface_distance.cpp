@@ -13,12 +13,14 @@
 #include "distance/signed_query.h"
 #include "distance/surface_distance_chunks.h"
 #include "distance/two_directions.h"
+#include "geometry/morton_code.h"
 #include "geometry/sample_plan.h"
 
 #include <fmt/format.h>
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <future>
@@ -141,6 +143,56 @@ private:
     std::size_t offset_;
 };
 
+}  // namespace
+
+void detail::chunk_query_order(const Vec3* points, const SampleKind* kind, const std::uint32_t* element, std::size_t k,
+                               const BoundingBox& box, std::vector<std::uint32_t>& order)
+{
+    order.clear();
+    auto starts_run = [&](std::size_t i) { return i == 0 || kind[i] != kind[i - 1] || element[i] != element[i - 1]; };
+    std::vector<std::uint32_t> start;  // the runs' first positions, then k
+    for (std::size_t i = 0; i < k; ++i)
+        if (starts_run(i)) start.push_back(std::uint32_t(i));
+    const std::size_t runs = start.size();
+    start.push_back(std::uint32_t(k));
+    if (runs < 2) return;
+    // Each run's key: the top 30 bits of its first point's Morton code (10
+    // per axis) above its index; sorted by the code alone, stably (three
+    // passes of 10 bits, least significant first), so ties keep position
+    // order.
+    const Vec3 ext = morton_extent(box);
+    std::vector<std::uint64_t> key(runs), sorted(runs);
+    for (std::size_t r = 0; r < runs; ++r) key[r] = (morton_code(points[start[r]], box.min, ext) >> 33) << 32 | r;
+    std::array<std::uint32_t, 1025> at;
+    for (int pass = 0; pass < 3; ++pass) {
+        const int shift = 32 + 10 * pass;
+        at.fill(0);
+        for (const std::uint64_t x : key) ++at[((x >> shift) & 1023u) + 1];
+        for (std::size_t d = 1; d < at.size(); ++d) at[d] += at[d - 1];
+        for (const std::uint64_t x : key) sorted[at[(x >> shift) & 1023u]++] = x;
+        key.swap(sorted);
+    }
+    // Kept only where it shortens the steps between consecutive runs' first
+    // points (their L1 lengths) by kOrderedStepRatio or more: an order
+    // already coherent (a mesh numbered along its scan lines) gains less from
+    // it than the sort costs.
+    auto first = [&](std::uint64_t x) -> const Vec3& { return points[start[x & 0xffffffffu]]; };
+    double given = 0.0, ordered = 0.0;
+    for (std::size_t r = 1; r < runs; ++r) {
+        given += (points[start[r]] - points[start[r - 1]]).lpNorm<1>();
+        ordered += (first(key[r]) - first(key[r - 1])).lpNorm<1>();
+    }
+    if (!(given >= kOrderedStepRatio * ordered)) return;
+    order.resize(k);
+    std::size_t j = 0;
+    for (const std::uint64_t x : key) {
+        const std::size_t r = x & 0xffffffffu;
+        for (std::uint32_t i = start[r]; i < start[r + 1]; ++i) order[j++] = i;
+    }
+}
+
+namespace {
+
 // One direction as sampled_direction(), distance_stats(), the signed
 // statistics and summarize() give it, in bounded memory: the samples are
 // made, queried and folded into the statistics \p chunk at a time (a multiple
@@ -231,7 +283,13 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
         fold_pending();
         pending = {begin, k, &b};
     }
-    // The others queried, as one stage.
+    // The others queried, as one stage, each chunk in its query order
+    // (chunk_query_order()). A mesh's vertices, edges or faces are numbered
+    // coherently or not throughout: once kOrderTrials chunks in a row that
+    // begin with one kind of sample kept their own order, the chunks that
+    // begin with that kind are not tried again.
+    std::vector<std::uint32_t> order;
+    std::array<std::size_t, 4> kept_own{};  // by the SampleKind of a chunk's first sample
     Progress* progress = current_progress();
     detail::StageProgress stage("distances", n - nv);
     for (std::size_t begin = nv; begin < n; begin += chunk) {
@@ -240,15 +298,23 @@ DistanceStats chunked_direction(const MeshData& from_data, const Target& to, con
         maker.make(begin, begin + k, b.points.data(), b.kind.data(), b.element.data());
         plan.discard_made(begin + k);
         distances.resize(begin + k);
+        order.clear();
+        std::size_t& own = kept_own[std::size_t(b.kind[0]) % kept_own.size()];
+        if (own < detail::kOrderTrials) {
+            detail::chunk_query_order(b.points.data(), b.kind.data(), b.element.data(), k, from_data.box(), order);
+            own = order.empty() ? own + 1 : 0;
+        }
+        const std::uint32_t* ordered = order.empty() ? nullptr : order.data();
         {
             PartProgress part(progress, begin - nv);
             const ProgressScope scope(progress ? &part : nullptr);
             const std::function<void()> beside = pending.b ? std::function<void()>(fold_pending) : nullptr;
             if (to.normals)
                 detail::signed_query(to.mesh, to.index, *to.normals, b.points.data(), k, distances.data() + begin,
-                                     b.signs.data(), beside);
+                                     b.signs.data(), beside, ordered);
             else
-                detail::distances_with_regions(to.index, b.points.data(), k, distances.data() + begin, {}, beside);
+                detail::distances_with_regions(to.index, b.points.data(), k, distances.data() + begin, {}, beside,
+                                               ordered);
         }
         fold_pending();  // a no-op: the team ran it (kept so that no chunk can be left unfolded)
         pending = {begin, k, &b};

@@ -485,9 +485,11 @@ namespace {
 // block, each query is seeded with the previous query's triangle. `beside`,
 // if given, is run once by one of the threads before it takes blocks (the
 // others take blocks meanwhile: the team is not oversubscribed); an exception
-// it throws is rethrown once the blocks are done.
+// it throws is rethrown once the blocks are done. `order`, if given (a
+// permutation of 0 .. n - 1), is the order of the queries: block b runs
+// queries order[b * kBlock] ..., so that the blocks follow it.
 template <class F>
-void for_blocks(std::size_t n, F&& f, const std::function<void()>& beside = {})
+void for_blocks(std::size_t n, F&& f, const std::function<void()>& beside = {}, const std::uint32_t* order = nullptr)
 {
     const auto n_blocks = std::int64_t((n + kBlock - 1) / kBlock);
     detail::StageProgress stage("distances", n);
@@ -509,7 +511,10 @@ void for_blocks(std::size_t n, F&& f, const std::function<void()>& beside = {})
             const std::size_t end = std::min(n, std::size_t(b + 1) * kBlock);
             if (!stage.tick(end - std::size_t(b) * kBlock)) continue;
             std::uint32_t hint = kNoFace;
-            for (std::size_t i = std::size_t(b) * kBlock; i < end; ++i) hint = f(i, hint);
+            if (order)
+                for (std::size_t j = std::size_t(b) * kBlock; j < end; ++j) hint = f(std::size_t(order[j]), hint);
+            else
+                for (std::size_t i = std::size_t(b) * kBlock; i < end; ++i) hint = f(i, hint);
         }
     }
     if (failed) std::rethrow_exception(failed);
@@ -567,7 +572,7 @@ void ClosestPointIndex::distances(const Vec3* queries, std::size_t n, double* ou
 void detail::distances_with_regions(
     const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
     const std::function<void(std::size_t, const ClosestPoint&, unsigned, std::uint32_t)>& visit,
-    const std::function<void()>& beside)
+    const std::function<void()>& beside, const std::uint32_t* order)
 {
     const ClosestPointIndex::Impl& impl = *index.impl_;
     if (!visit) {
@@ -578,7 +583,7 @@ void detail::distances_with_regions(
                 out[i] = impl.query(queries[i], hint, &hit).distance;
                 return hit;
             },
-            beside);
+            beside, order);
         return;
     }
     for_blocks(
@@ -591,7 +596,7 @@ void detail::distances_with_regions(
             visit(i, c, region, hit);
             return hit;
         },
-        beside);
+        beside, order);
 }
 
 double ClosestPointIndex::hull_distance_bound(const std::array<Vec3, 3>& corners, double good_enough,

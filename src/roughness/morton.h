@@ -9,6 +9,7 @@
 #include "meshdiff/core/topology.h"
 
 #include "core/parallel_sort.h"
+#include "geometry/morton_code.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,34 +19,18 @@
 
 namespace meshdiff::detail {
 
-//! The lowest 21 bits of \p x spread to every third bit.
-inline std::uint64_t spread_bits(std::uint64_t x)
-{
-    x &= 0x1fffff;
-    x = (x | x << 32) & 0x1f00000000ffffULL;
-    x = (x | x << 16) & 0x1f0000ff0000ffULL;
-    x = (x | x << 8) & 0x100f00f00f00f00fULL;
-    x = (x | x << 4) & 0x10c30c30c30c30c3ULL;
-    x = (x | x << 2) & 0x1249249249249249ULL;
-    return x;
-}
-
 //! The vertex ids of \p mesh sorted along a Morton curve of their positions
 //! (21 bits per axis over \p box, the bounding box of the positions; ties by
 //! id), the codes made and sorted on the OpenMP threads (the same order).
 inline std::vector<std::uint32_t> morton_order(const Mesh& mesh, const BoundingBox& box)
 {
-    const Vec3 ext = (box.max - box.min).cwiseMax(Vec3::Constant(1e-300));
-    const double cells = double((1u << 21) - 1);
+    const Vec3 ext = morton_extent(box);
     std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(mesh.n_vertices());
     const auto n = std::ptrdiff_t(keys.size());
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t j = 0; j < n; ++j) {
         const auto i = std::size_t(j);
-        const Vec3 q = (mesh.points[i] - box.min).cwiseQuotient(ext) * cells;
-        keys[i] = {spread_bits(std::uint64_t(q.x())) | spread_bits(std::uint64_t(q.y())) << 1 |
-                       spread_bits(std::uint64_t(q.z())) << 2,
-                   std::uint32_t(i)};
+        keys[i] = {morton_code(mesh.points[i], box.min, ext), std::uint32_t(i)};
     }
     std::vector<std::uint32_t> order;
     order.reserve(keys.size());

@@ -59,9 +59,13 @@ const Bvh& bvh_of(const ClosestPointIndex& index);
 //! Without \p visit, the distances only. \p beside, if given, is run once by
 //! one thread of the team while the others query (the surface distance folds
 //! the previous chunk of samples so); its exception is rethrown at the end.
+//! \p order, if given (a permutation of 0 .. n - 1), is the order in which
+//! the queries run (each still writes out[i] and visits i): consecutive
+//! queries close in space share the index's cache lines and start near
+//! their answer. The answers do not depend on it, only their cost.
 void distances_with_regions(const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
                             const std::function<void(std::size_t, const ClosestPoint&, unsigned, std::uint32_t)>& visit,
-                            const std::function<void()>& beside = {});
+                            const std::function<void()>& beside = {}, const std::uint32_t* order = nullptr);
 }  // namespace detail
 
 class ClosestPointIndex
@@ -129,7 +133,7 @@ private:
     friend void detail::distances_with_regions(
         const ClosestPointIndex& index, const Vec3* queries, std::size_t n, double* out,
         const std::function<void(std::size_t, const ClosestPoint&, unsigned, std::uint32_t)>& visit,
-        const std::function<void()>& beside);
+        const std::function<void()>& beside, const std::uint32_t* order);
 };
 
 }  // namespace meshdiff
